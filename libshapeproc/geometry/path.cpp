@@ -1,0 +1,169 @@
+#include "libshapeproc/geometry/path.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shapeproc::geometry {
+
+Vec2 Segment2::point_at(double t) const {
+  const double u = 1.0 - t;
+  return u * u * u * start + 3.0 * u * u * t * control1 + 3.0 * u * t * t * control2 +
+         t * t * t * end;
+}
+
+namespace {
+
+// Roots in (0, 1) of the derivative of one coordinate of a cubic Bézier.
+void derivative_roots(double p0, double p1, double p2, double p3, std::vector<double>& roots) {
+  // B'(t)/3 = a t^2 + b t + c
+  const double a = -p0 + 3.0 * p1 - 3.0 * p2 + p3;
+  const double b = 2.0 * (p0 - 2.0 * p1 + p2);
+  const double c = p1 - p0;
+  const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
+  if (scale == 0.0) return;
+  auto keep = [&](double t) {
+    if (t > 0.0 && t < 1.0) roots.push_back(t);
+  };
+  if (std::abs(a) <= 1e-12 * scale) {
+    if (b != 0.0) keep(-c / b);
+    return;
+  }
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return;
+  const double sq = std::sqrt(disc);
+  // Numerically stable pair of roots.
+  const double q = -0.5 * (b + std::copysign(sq, b));
+  keep(q / a);
+  if (q != 0.0) keep(c / q);
+}
+
+}  // namespace
+
+Box2 bounding_box(const Segment2& segment) {
+  Box2 box(segment.start);
+  box.extend(segment.end);
+  if (!segment.cubic) return box;
+  std::vector<double> roots;
+  for (int axis = 0; axis < 2; ++axis) {
+    derivative_roots(segment.start[axis], segment.control1[axis], segment.control2[axis],
+                     segment.end[axis], roots);
+  }
+  for (double t : roots) box.extend(segment.point_at(t));
+  return box;
+}
+
+Box2 bounding_box(const Path2& path) {
+  Box2 box;
+  for (const Segment2& segment : path.segments) box.extend(bounding_box(segment));
+  return box;
+}
+
+void transform(Path2& path, const Affine2& map) {
+  for (Segment2& s : path.segments) {
+    s.start = map * s.start;
+    s.control1 = map * s.control1;
+    s.control2 = map * s.control2;
+    s.end = map * s.end;
+  }
+}
+
+void translate(Path2& path, const Vec2& offset) {
+  for (Segment2& s : path.segments) {
+    s.start += offset;
+    s.control1 += offset;
+    s.control2 += offset;
+    s.end += offset;
+  }
+}
+
+std::vector<Vec2> flatten(const Path2& path, double tolerance) {
+  std::vector<Vec2> points;
+  if (path.segments.empty()) return points;
+  points.push_back(path.start_point());
+  for (const Segment2& s : path.segments) {
+    if (s.cubic) {
+      // Uniform subdivision into n pieces keeps the chord error below
+      // (3/4) max(|P0 - 2P1 + P2|, |P1 - 2P2 + P3|) / n^2.
+      const double second = std::max((s.start - 2.0 * s.control1 + s.control2).norm(),
+                                      (s.control1 - 2.0 * s.control2 + s.end).norm());
+      const double needed = std::sqrt(0.75 * second / std::max(tolerance, 1e-300));
+      const int n = std::clamp(static_cast<int>(std::ceil(needed)), 1, 1024);
+      for (int i = 1; i < n; ++i) points.push_back(s.point_at(static_cast<double>(i) / n));
+    }
+    points.push_back(s.end);
+  }
+  if (path.closed && points.size() > 1 && points.back() == points.front()) points.pop_back();
+  return points;
+}
+
+double signed_area(const std::vector<Vec2>& polygon) {
+  double twice = 0.0;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& p = polygon[i];
+    const Vec2& q = polygon[(i + 1) % n];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * twice;
+}
+
+int winding_number(const std::vector<Vec2>& polygon, const Vec2& point) {
+  int winding = 0;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[(i + 1) % n];
+    const double cross = (b.x() - a.x()) * (point.y() - a.y()) - (point.x() - a.x()) * (b.y() - a.y());
+    if (a.y() <= point.y()) {
+      if (b.y() > point.y() && cross > 0.0) ++winding;
+    } else if (b.y() <= point.y() && cross < 0.0) {
+      --winding;
+    }
+  }
+  return winding;
+}
+
+namespace {
+
+double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+         std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+}
+
+bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = orient(c, d, a);
+  const double d2 = orient(c, d, b);
+  const double d3 = orient(a, b, c);
+  const double d4 = orient(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+    return true;
+  }
+  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) ||
+         (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
+}
+
+}  // namespace
+
+bool polylines_intersect(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
+                         bool b_closed) {
+  const std::size_t na = a.size() < 2 ? 0 : (a_closed ? a.size() : a.size() - 1);
+  const std::size_t nb = b.size() < 2 ? 0 : (b_closed ? b.size() : b.size() - 1);
+  for (std::size_t i = 0; i < na; ++i) {
+    const Vec2& p = a[i];
+    const Vec2& q = a[(i + 1) % a.size()];
+    const Box2 box_pq = Box2(p).extend(q);
+    for (std::size_t j = 0; j < nb; ++j) {
+      const Vec2& r = b[j];
+      const Vec2& s = b[(j + 1) % b.size()];
+      if (!box_pq.intersects(Box2(r).extend(s))) continue;
+      if (segments_intersect(p, q, r, s)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace shapeproc::geometry

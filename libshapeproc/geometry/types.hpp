@@ -1,0 +1,23 @@
+// Basic vector and box types shared by every module.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace shapeproc::geometry {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+// Axis-aligned boxes; an empty box has min > max (Eigen's convention).
+using Box2 = Eigen::AlignedBox2d;
+using Box3 = Eigen::AlignedBox3d;
+// 2D affine map (SVG's `matrix(a b c d e f)` is [a c e; b d f]).
+using Affine2 = Eigen::Affine2d;
+
+// Lifts a 2D box to 3D with z = [0, 0].
+inline Box3 lift(const Box2& box) {
+  if (box.isEmpty()) return Box3();
+  return Box3(Vec3(box.min().x(), box.min().y(), 0.0), Vec3(box.max().x(), box.max().y(), 0.0));
+}
+
+}  // namespace shapeproc::geometry

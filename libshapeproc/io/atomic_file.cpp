@@ -1,0 +1,38 @@
+#include "libshapeproc/io/atomic_file.hpp"
+
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+#include "libshapeproc/io/error.hpp"
+
+namespace shapeproc::io {
+
+namespace fs = std::filesystem;
+
+void write_file_atomically(const fs::path& target, const std::function<void(std::ostream&)>& write) {
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  if (fs::is_directory(target, ec)) {
+    throw UsageError(target.string() + ": output is a directory, not a file");
+  }
+  // A name unique enough for concurrent writers of the same target.
+  std::random_device entropy;
+  const fs::path temporary =
+      fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+  try {
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out) throw UsageError(target.string() + ": cannot create the output file");
+      write(out);
+      out.flush();
+      if (!out) throw std::runtime_error(target.string() + ": write failed");
+    }
+    fs::rename(temporary, target);
+  } catch (...) {
+    fs::remove(temporary, ec);
+    throw;
+  }
+}
+
+}  // namespace shapeproc::io

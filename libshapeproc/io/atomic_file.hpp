@@ -1,0 +1,16 @@
+// Writing outputs so that nothing half-written is ever left behind.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+
+namespace shapeproc::io {
+
+// Calls `write` with a stream on a temporary file beside `target`, then renames it to `target`.
+// If `write` throws or the stream fails, the temporary file is removed, `target` is left as it
+// was and the exception propagates. Missing parent directories are created.
+void write_file_atomically(const std::filesystem::path& target,
+                           const std::function<void(std::ostream&)>& write);
+
+}  // namespace shapeproc::io

@@ -1,0 +1,222 @@
+#include "libshapeproc/io/mesh_reader.hpp"
+
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/io/text.hpp"
+
+namespace shapeproc::io {
+
+namespace {
+
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+};
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+
+// Routes OpenMesh's error stream into a string while alive (OpenMesh reports rejected faces there).
+class CaptureOpenMeshErrors {
+ public:
+  CaptureOpenMeshErrors() {
+    ::omerr().disconnect(std::cerr);
+    ::omerr().connect(buffer_);
+    ::omlog().disable();
+    ::omout().disable();
+  }
+  ~CaptureOpenMeshErrors() {
+    ::omerr().flush();
+    ::omerr().disconnect(buffer_);
+    ::omerr().connect(std::cerr);
+  }
+  std::string first_line() {
+    ::omerr().flush();
+    const std::string text = buffer_.str();
+    return std::string(trim(text.substr(0, text.find('\n'))));
+  }
+
+ private:
+  std::ostringstream buffer_;
+};
+
+// The OBJ group (from `o`/`g` lines) of each triangle, in file order, polygons fanned.
+struct ObjGroups {
+  std::vector<std::string> names;
+  std::vector<int> of_triangle;
+};
+
+ObjGroups scan_obj_groups(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  ObjGroups groups;
+  int current = -1;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "o" || keyword == "g") {
+      std::string name, word;
+      while (tokens >> word) name += (name.empty() ? "" : " ") + word;
+      if (name.empty()) name = "unnamed";
+      const auto found = std::find(groups.names.begin(), groups.names.end(), name);
+      current = static_cast<int>(found - groups.names.begin());
+      if (found == groups.names.end()) groups.names.push_back(name);
+    } else if (keyword == "f") {
+      int corners = 0;
+      std::string word;
+      while (tokens >> word) ++corners;
+      if (current < 0) {
+        groups.names.push_back("default");
+        current = static_cast<int>(groups.names.size() - 1);
+      }
+      for (int i = 2; i < corners; ++i) groups.of_triangle.push_back(current);
+    }
+  }
+  return groups;
+}
+
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderOptions& options) {
+  const std::string name = file.string();
+  const std::string ext = extension_of(file);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, 0, "no such file");
+  if (std::filesystem::file_size(file, ec) == 0) throw InputError(name, 0, "the file is empty");
+  if (!std::ifstream(file)) throw InputError(name, 0, "cannot open the file for reading");
+  if (options.mesh_split == MeshSplit::groups && ext != "obj") {
+    throw UsageError("--split groups needs an OBJ file, got " + name);
+  }
+
+  OmMesh mesh;
+  std::string complaint;
+  bool read = false;
+  {
+    CaptureOpenMeshErrors capture;
+    OpenMesh::IO::Options io_options;
+    read = OpenMesh::IO::read_mesh(mesh, name, io_options);
+    complaint = capture.first_line();
+  }
+  if (!read) {
+    throw InputError(name, 0, "cannot read as " + to_lower(ext) + " mesh" +
+                                  (complaint.empty() ? "" : " (" + complaint + ")"));
+  }
+  if (complaint.find("complex") != std::string::npos) {
+    throw InputError(name, 0, "non-manifold or inconsistently oriented faces (" + complaint + ")");
+  }
+  if (!complaint.empty()) throw InputError(name, 0, "invalid mesh (" + complaint + ")");
+  if (mesh.n_faces() == 0) throw InputError(name, 0, "no triangles");
+
+  // Geometry checks on the triangles as read.
+  std::vector<geometry::Vec3> points(mesh.n_vertices());
+  geometry::Box3 box;
+  for (const auto vh : mesh.vertices()) {
+    const auto& p = mesh.point(vh);
+    points[vh.idx()] = geometry::Vec3(p[0], p[1], p[2]);
+    if (!points[vh.idx()].allFinite()) {
+      throw InputError(name, 0, "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
+    }
+  }
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(mesh.n_faces());
+  for (const auto fh : mesh.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (const auto vh : mesh.fv_range(fh)) {
+      t[k++] = vh.idx();
+      box.extend(points[vh.idx()]);
+    }
+    triangles.push_back(t);
+  }
+  const double scale = box.diagonal().squaredNorm();
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const auto& t = triangles[f];
+    const double twice_area =
+        (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+    if (!(twice_area > 1e-14 * scale)) {
+      throw InputError(name, 0, "degenerate triangle (zero area): face " + std::to_string(f));
+    }
+  }
+
+  // Elements: connected components or OBJ groups.
+  std::vector<int> element_of_triangle(triangles.size());
+  std::vector<std::string> element_names;
+  if (options.mesh_split == MeshSplit::groups) {
+    const ObjGroups groups = scan_obj_groups(file);
+    if (groups.of_triangle.size() != triangles.size()) {
+      throw InputError(name, 0, "the faces read do not match the `f` lines (" +
+                                    std::to_string(triangles.size()) + " vs " +
+                                    std::to_string(groups.of_triangle.size()) + ")");
+    }
+    element_of_triangle = groups.of_triangle;
+    element_names = groups.names;
+  } else {
+    std::vector<std::size_t> parent(points.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const auto& t : triangles) {
+      for (int k = 1; k < 3; ++k) {
+        const std::size_t a = find_root(parent, t[0]), b = find_root(parent, t[k]);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+    std::map<std::size_t, int> component;
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      const std::size_t root = find_root(parent, triangles[f][0]);
+      const auto inserted = component.emplace(root, static_cast<int>(component.size()));
+      if (inserted.second) element_names.push_back("component " + std::to_string(inserted.first->second));
+      element_of_triangle[f] = inserted.first->second;
+    }
+  }
+
+  geometry::Scene scene;
+  scene.dimension = 3;
+  scene.units = "1";
+  const int category = scene.category_index("default");
+  std::vector<geometry::TriangleMesh> pieces(element_names.size());
+  std::vector<std::vector<int>> local(element_names.size());
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const int e = element_of_triangle[f];
+    geometry::TriangleMesh& piece = pieces[e];
+    std::vector<int>& map = local[e];
+    if (map.empty()) map.assign(points.size(), -1);
+    std::array<int, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      const int v = triangles[f][k];
+      if (map[v] < 0) {
+        map[v] = static_cast<int>(piece.vertices.size());
+        piece.vertices.push_back(points[v]);
+      }
+      t[k] = map[v];
+    }
+    piece.triangles.push_back(t);
+  }
+  for (std::size_t e = 0; e < pieces.size(); ++e) {
+    if (pieces[e].triangles.empty()) continue;
+    geometry::add_element(scene, geometry::Shape{geometry::MeshShape{std::move(pieces[e])}, element_names[e]},
+                          category);
+  }
+
+  if (options.window) {
+    if (options.window->dimension != 3) throw UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+    scene.window = options.window->box;
+  } else {
+    scene.window = box;
+  }
+  const geometry::Vec3 sizes = scene.window.sizes();
+  if (!(sizes.minCoeff() > 0.0)) {
+    throw InputError(name, 0, "the window has zero size (a flat scene): give --window");
+  }
+  return scene;
+}
+
+}  // namespace shapeproc::io

@@ -1,0 +1,21 @@
+// Reading and writing scenes by file extension: the entry point the command line uses.
+#pragma once
+
+#include <filesystem>
+
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/io/reader_options.hpp"
+#include "libshapeproc/io/scene_writers.hpp"
+
+namespace shapeproc::io {
+
+// .svg (2D), .obj/.ply/.off/.stl (3D meshes), .csv (point patterns). Throws InputError.
+geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOptions& options);
+
+// .svg, .obj, .ply or .csv after the extension of `file`, written atomically (temporary file
+// renamed into place). A CSV gets its provenance in a sidecar `FILE.json`. Throws UsageError for
+// an unknown extension or a format that cannot hold the scene's dimension.
+void write_scene(const geometry::Scene& scene, const std::filesystem::path& file,
+                 const Provenance& provenance);
+
+}  // namespace shapeproc::io

@@ -1,0 +1,600 @@
+#include "libshapeproc/io/svg_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+#include <unordered_map>
+
+#include <pugixml.hpp>
+
+#include "libshapeproc/geometry/arc.hpp"
+#include "libshapeproc/geometry/subpath_components.hpp"
+#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/io/svg_grammar.hpp"
+#include "libshapeproc/io/text.hpp"
+
+namespace shapeproc::io {
+
+namespace {
+
+using geometry::Affine2;
+using geometry::Box2;
+using geometry::Drawable2;
+using geometry::FillRule;
+using geometry::Path2;
+using geometry::Scene;
+using geometry::Segment2;
+using geometry::Style;
+using geometry::Vec2;
+
+const std::set<std::string, std::less<>> kInheritedProperties = {
+    "fill",          "fill-opacity",    "fill-rule",         "stroke",
+    "stroke-width",  "stroke-opacity",  "stroke-linecap",    "stroke-linejoin",
+    "stroke-miterlimit", "stroke-dasharray", "stroke-dashoffset", "color",
+    "visibility"};
+const std::set<std::string, std::less<>> kOwnProperties = {"opacity", "display"};
+
+const std::set<std::string, std::less<>> kNeverDrawn = {
+    "defs",   "symbol", "clipPath", "mask",     "pattern",      "marker", "linearGradient",
+    "radialGradient",   "filter",   "style",    "title",        "desc",   "metadata",
+    "script", "text",   "image",    "foreignObject", "font", "font-face", "view", "cursor"};
+const std::set<std::string, std::less<>> kGroups = {"g", "a", "switch"};
+const std::set<std::string, std::less<>> kDrawables = {"path",     "rect",    "circle",
+                                                       "ellipse",  "line",    "polyline",
+                                                       "polygon"};
+
+// Element name without an `svg:` prefix; names with other prefixes keep theirs (and are ignored).
+std::string local_name(pugi::xml_node node) {
+  std::string name = node.name();
+  if (name.rfind("svg:", 0) == 0) name.erase(0, 4);
+  return name;
+}
+
+// Attribute by its local name, whatever the prefix (`xlink:href` and `href`, `inkscape:label`).
+pugi::xml_attribute attribute_by_local_name(pugi::xml_node node, std::string_view local) {
+  for (pugi::xml_attribute a : node.attributes()) {
+    std::string_view name = a.name();
+    const std::size_t colon = name.find(':');
+    if (colon != std::string_view::npos) name.remove_prefix(colon + 1);
+    if (name == local) return a;
+  }
+  return {};
+}
+
+using Declarations = std::vector<std::pair<std::string, std::string>>;
+
+Declarations parse_declarations(std::string_view text) {
+  Declarations result;
+  for (const std::string& item : split(text, ';')) {
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos) continue;
+    std::string name = to_lower(trim(std::string_view(item).substr(0, colon)));
+    std::string value(trim(std::string_view(item).substr(colon + 1)));
+    if (const std::size_t bang = value.find("!important"); bang != std::string::npos) {
+      value = std::string(trim(std::string_view(value).substr(0, bang)));
+    }
+    if (!name.empty()) result.emplace_back(std::move(name), std::move(value));
+  }
+  return result;
+}
+
+// A rule of an embedded style sheet with a simple selector: `tag`, `.class`, `tag.class`, `#id`.
+struct CssRule {
+  std::string tag, class_name, id;
+  int specificity = 0;
+  int order = 0;
+  Declarations declarations;
+};
+
+std::vector<CssRule> parse_style_sheet(std::string text, int& order) {
+  // Strip comments.
+  for (std::size_t start; (start = text.find("/*")) != std::string::npos;) {
+    const std::size_t end = text.find("*/", start + 2);
+    text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
+  }
+  std::vector<CssRule> rules;
+  std::size_t pos = 0;
+  while (true) {
+    const std::size_t open = text.find('{', pos);
+    if (open == std::string::npos) break;
+    const std::size_t close = text.find('}', open);
+    if (close == std::string::npos) break;
+    const Declarations declarations =
+        parse_declarations(std::string_view(text).substr(open + 1, close - open - 1));
+    for (const std::string& raw : split(std::string_view(text).substr(pos, open - pos), ',')) {
+      const std::string selector(trim(raw));
+      if (selector.empty() || selector.front() == '@' ||
+          selector.find_first_of(" >+~:[*") != std::string::npos) {
+        continue;  // only simple selectors are supported
+      }
+      CssRule rule;
+      if (selector.front() == '#') {
+        rule.id = selector.substr(1);
+        rule.specificity = 100;
+      } else {
+        const std::size_t dot = selector.find('.');
+        rule.tag = selector.substr(0, dot);
+        if (dot != std::string::npos) rule.class_name = selector.substr(dot + 1);
+        rule.specificity = (rule.tag.empty() ? 0 : 1) + (rule.class_name.empty() ? 0 : 10);
+      }
+      rule.order = order++;
+      rule.declarations = declarations;
+      rules.push_back(std::move(rule));
+    }
+    pos = close + 1;
+  }
+  return rules;
+}
+
+bool has_class(pugi::xml_node node, const std::string& name) {
+  for (const std::string& c : split(node.attribute("class").value(), ' ')) {
+    if (c == name) return true;
+  }
+  return false;
+}
+
+// What a node inherits and carries down the tree.
+struct State {
+  Affine2 transform = Affine2::Identity();
+  Style style;           // resolved inherited properties
+  double opacity = 1.0;  // product of the group opacities above
+  std::string layer;     // label of the enclosing layer
+};
+
+class SvgReader {
+ public:
+  SvgReader(std::string_view text, std::string file, const ReaderOptions& options)
+      : text_(text), file_(std::move(file)), options_(options) {}
+
+  Scene read();
+
+ private:
+  [[noreturn]] void fail(pugi::xml_node node, const std::string& message) const {
+    throw InputError(file_, line_of(node), message);
+  }
+  int line_at(std::ptrdiff_t offset) const {
+    if (offset < 0) return 0;
+    const auto end = text_.begin() + std::min<std::ptrdiff_t>(offset, text_.size());
+    return 1 + static_cast<int>(std::count(text_.begin(), end, '\n'));
+  }
+  int line_of(pugi::xml_node node) const { return node ? line_at(node.offset_debug()) : 0; }
+
+  double length(pugi::xml_node node, const char* name, double fallback) const;
+  std::optional<State> enter(pugi::xml_node node, const State& parent) const;
+  void walk_container(pugi::xml_node node, const State& state);
+  void make_element(pugi::xml_node node, const State& state);
+  void collect(pugi::xml_node node, const State& state, std::vector<Drawable2>& parts,
+               int use_depth) const;
+  std::vector<Path2> drawable_paths(pugi::xml_node node, const std::string& name) const;
+  Drawable2 styled(std::vector<Path2> paths, const State& state) const;
+  std::string category_of(pugi::xml_node node, const State& state,
+                          const std::vector<Drawable2>& parts) const;
+  bool is_layer(pugi::xml_node node) const {
+    return std::string_view(attribute_by_local_name(node, "groupmode").value()) == "layer";
+  }
+  bool is_window(pugi::xml_node node) const {
+    return local_name(node) == "rect" && std::string_view(node.attribute("id").value()) == "window";
+  }
+  void set_window_from_root(pugi::xml_node root);
+
+  std::string_view text_;
+  std::string file_;
+  const ReaderOptions& options_;
+  pugi::xml_document document_;
+  std::unordered_map<std::string, pugi::xml_node> ids_;
+  std::vector<CssRule> css_;
+  std::optional<Box2> window_rect_;
+  pugi::xml_node window_node_;
+  Scene scene_;
+};
+
+double SvgReader::length(pugi::xml_node node, const char* name, double fallback) const {
+  const pugi::xml_attribute a = node.attribute(name);
+  if (!a) return fallback;
+  std::string_view text = trim(a.value());
+  static const std::pair<const char*, double> kUnits[] = {
+      {"px", 1.0}, {"pt", 96.0 / 72.0}, {"pc", 16.0}, {"mm", 96.0 / 25.4},
+      {"cm", 96.0 / 2.54}, {"in", 96.0}};
+  double scale = 1.0;
+  for (const auto& [unit, factor] : kUnits) {
+    const std::string_view u(unit);
+    if (text.size() > u.size() && text.substr(text.size() - u.size()) == u) {
+      text.remove_suffix(u.size());
+      scale = factor;
+      break;
+    }
+  }
+  const auto value = parse_number(text);
+  if (!value) {
+    fail(node, "<" + local_name(node) + "> attribute " + name + ": expected a finite length, got '" +
+                   a.value() + "'");
+  }
+  return *value * scale;
+}
+
+std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) const {
+  State state = parent;
+  Declarations declarations;
+  auto accept = [](const std::string& property) {
+    return kInheritedProperties.count(property) > 0 || kOwnProperties.count(property) > 0;
+  };
+  for (pugi::xml_attribute a : node.attributes()) {
+    if (accept(a.name())) declarations.emplace_back(a.name(), std::string(trim(a.value())));
+  }
+  // Style sheet rules by specificity, then document order.
+  std::vector<const CssRule*> matching;
+  const std::string tag = local_name(node);
+  const std::string id = node.attribute("id").value();
+  for (const CssRule& rule : css_) {
+    if (!rule.id.empty() ? rule.id == id
+                         : (rule.tag.empty() || rule.tag == tag) &&
+                               (rule.class_name.empty() || has_class(node, rule.class_name))) {
+      matching.push_back(&rule);
+    }
+  }
+  std::stable_sort(matching.begin(), matching.end(), [](const CssRule* a, const CssRule* b) {
+    return std::tie(a->specificity, a->order) < std::tie(b->specificity, b->order);
+  });
+  for (const CssRule* rule : matching) {
+    for (const auto& d : rule->declarations) {
+      if (accept(d.first)) declarations.push_back(d);
+    }
+  }
+  for (const auto& d : parse_declarations(node.attribute("style").value())) {
+    if (accept(d.first)) declarations.push_back(d);
+  }
+
+  for (const auto& [name, value] : declarations) {
+    if (value == "inherit") continue;
+    if (name == "display") {
+      if (value == "none") return std::nullopt;
+      continue;
+    }
+    if (name == "opacity") {
+      const auto alpha = parse_number(value);
+      if (!alpha) fail(node, "opacity: expected a number, got '" + value + "'");
+      state.opacity *= std::clamp(*alpha, 0.0, 1.0);
+      continue;
+    }
+    state.style[name] = value;
+  }
+  if (const pugi::xml_attribute t = node.attribute("transform")) {
+    try {
+      state.transform = state.transform * svg::parse_transform(t.value());
+    } catch (const svg::GrammarError& e) {
+      fail(node, "<" + tag + "> transform: " + e.what() + " '" + t.value() + "'");
+    }
+  }
+  return state;
+}
+
+Scene SvgReader::read() {
+  if (trim(text_).empty()) throw InputError(file_, 0, "the file is empty");
+  const pugi::xml_parse_result parsed = document_.load_buffer(
+      text_.data(), text_.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
+  if (!parsed) {
+    throw InputError(file_, line_at(parsed.offset),
+                     std::string("malformed XML: ") + parsed.description());
+  }
+  const pugi::xml_node root = document_.document_element();
+  if (local_name(root) != "svg") {
+    fail(root, "the root element is <" + std::string(root.name()) + ">, not <svg>");
+  }
+  int order = 0;
+  // Index ids and style sheets.
+  struct Indexer : pugi::xml_tree_walker {
+    SvgReader* reader;
+    int* order;
+    bool for_each(pugi::xml_node& node) override {
+      if (node.type() != pugi::node_element) return true;
+      if (const char* id = node.attribute("id").value(); *id) reader->ids_.emplace(id, node);
+      if (local_name(node) == "style") {
+        auto rules = parse_style_sheet(node.child_value(), *order);
+        reader->css_.insert(reader->css_.end(), rules.begin(), rules.end());
+      }
+      if (reader->is_window(node) && !reader->window_node_) reader->window_node_ = node;
+      return true;
+    }
+  } indexer;
+  indexer.reader = this;
+  indexer.order = &order;
+  document_.traverse(indexer);
+
+  const std::optional<State> root_state = enter(root, State());
+  scene_.dimension = 2;
+  if (root_state) walk_container(root, *root_state);
+  set_window_from_root(root);
+  if (scene_.elements.empty()) {
+    throw InputError(file_, 0, "no elements found (nothing drawable outside <defs> and hidden parts)");
+  }
+  return std::move(scene_);
+}
+
+void SvgReader::set_window_from_root(pugi::xml_node root) {
+  std::string_view width_text = trim(root.attribute("width").value());
+  if (window_node_) {
+    if (!window_rect_) {
+      fail(window_node_, "<rect id=\"window\"> is hidden or has no size");
+    }
+    scene_.window = geometry::lift(*window_rect_);
+  } else if (const pugi::xml_attribute view_box = root.attribute("viewBox")) {
+    const auto values = parse_number_list(view_box.value());
+    if (!values || values->size() != 4) {
+      fail(root, std::string("viewBox: expected four numbers, got '") + view_box.value() + "'");
+    }
+    const auto& v = *values;
+    scene_.window = geometry::Box3(geometry::Vec3(v[0], v[1], 0), geometry::Vec3(v[0] + v[2], v[1] + v[3], 0));
+    // Units follow the width when it maps one unit of the viewBox to one unit of length.
+    for (const char* unit : {"mm", "cm", "in", "pt", "pc"}) {
+      const std::string_view u(unit);
+      if (width_text.size() > u.size() && width_text.substr(width_text.size() - u.size()) == u) {
+        const auto w = parse_number(width_text.substr(0, width_text.size() - u.size()));
+        if (w && *w == v[2]) scene_.units = unit;
+      }
+    }
+  } else if (root.attribute("width") && root.attribute("height")) {
+    scene_.window = geometry::Box3(geometry::Vec3::Zero(),
+                                   geometry::Vec3(length(root, "width", 0), length(root, "height", 0), 0));
+  } else {
+    fail(root, "no window: give the root a viewBox or width and height, or add <rect id=\"window\">");
+  }
+  const geometry::Vec3 sizes = scene_.window.sizes();
+  if (!(sizes.x() > 0.0 && sizes.y() > 0.0)) {
+    fail(window_node_ ? window_node_ : root, "the window has zero size");
+  }
+}
+
+void SvgReader::walk_container(pugi::xml_node node, const State& state) {
+  for (pugi::xml_node child : node.children()) {
+    if (child.type() != pugi::node_element) continue;
+    const std::string name = local_name(child);
+    if (kNeverDrawn.count(name) || name.find(':') != std::string::npos) continue;
+    const std::optional<State> child_state = enter(child, state);
+    if (!child_state) continue;
+    if (is_window(child)) {
+      if (child == window_node_) {
+        const double x = length(child, "x", 0), y = length(child, "y", 0);
+        const double w = length(child, "width", 0), h = length(child, "height", 0);
+        Box2 box;
+        for (const Vec2& corner : {Vec2(x, y), Vec2(x + w, y), Vec2(x, y + h), Vec2(x + w, y + h)}) {
+          box.extend(child_state->transform * corner);
+        }
+        window_rect_ = box;
+      }
+      continue;
+    }
+    if (kGroups.count(name)) {
+      if (is_layer(child) || options_.groups == GroupMode::container) {
+        State inside = *child_state;
+        if (is_layer(child)) {
+          const pugi::xml_attribute label = attribute_by_local_name(child, "label");
+          inside.layer = label ? label.value() : child.attribute("id").value();
+        }
+        walk_container(child, inside);
+      } else {
+        make_element(child, *child_state);
+      }
+    } else if (name == "svg") {
+      State inside = *child_state;
+      inside.transform = inside.transform * Eigen::Translation2d(length(child, "x", 0), length(child, "y", 0));
+      walk_container(child, inside);
+    } else if (kDrawables.count(name) || name == "use") {
+      make_element(child, *child_state);
+    }
+  }
+}
+
+void SvgReader::make_element(pugi::xml_node node, const State& state) {
+  std::vector<Drawable2> parts;
+  collect(node, state, parts, 0);
+  if (parts.empty()) return;
+  const int category = scene_.category_index(category_of(node, state, parts));
+  const std::string id = node.attribute("id").value();
+  if (options_.split_subpaths && kDrawables.count(local_name(node))) {
+    for (const Drawable2& part : parts) {
+      for (Drawable2& piece : geometry::split_disjoint_subpaths(part)) {
+        geometry::Shape shape{geometry::PlanarShape{{std::move(piece)}}, id};
+        geometry::add_element(scene_, std::move(shape), category);
+      }
+    }
+    return;
+  }
+  geometry::Shape shape{geometry::PlanarShape{std::move(parts)}, id};
+  geometry::add_element(scene_, std::move(shape), category);
+}
+
+void SvgReader::collect(pugi::xml_node node, const State& state, std::vector<Drawable2>& parts,
+                        int use_depth) const {
+  const std::string name = local_name(node);
+  if (kGroups.count(name) || name == "svg" || name == "symbol") {
+    for (pugi::xml_node child : node.children()) {
+      if (child.type() != pugi::node_element) continue;
+      const std::string child_name = local_name(child);
+      if (kNeverDrawn.count(child_name) || child_name.find(':') != std::string::npos) continue;
+      if (const std::optional<State> child_state = enter(child, state)) {
+        collect(child, *child_state, parts, use_depth);
+      }
+    }
+  } else if (name == "use") {
+    const pugi::xml_attribute href = attribute_by_local_name(node, "href");
+    const std::string_view target_ref = trim(href.value());
+    if (target_ref.size() < 2 || target_ref.front() != '#') {
+      fail(node, "<use> needs href=\"#id\" pointing into this file");
+    }
+    const auto target = ids_.find(std::string(target_ref.substr(1)));
+    if (target == ids_.end()) fail(node, "<use> refers to unknown id '" + std::string(target_ref) + "'");
+    if (use_depth >= 32) fail(node, "<use> references nest too deep (a cycle?)");
+    State placed = state;
+    placed.transform = placed.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
+    if (const std::optional<State> target_state = enter(target->second, placed)) {
+      collect(target->second, *target_state, parts, use_depth + 1);
+    }
+  } else if (kDrawables.count(name)) {
+    const auto visibility = state.style.find("visibility");
+    if (visibility != state.style.end() && visibility->second != "visible" &&
+        visibility->second != "inherit") {
+      return;
+    }
+    std::vector<Path2> paths = drawable_paths(node, name);
+    if (!paths.empty()) parts.push_back(styled(std::move(paths), state));
+  }
+}
+
+std::vector<Path2> SvgReader::drawable_paths(pugi::xml_node node, const std::string& name) const {
+  std::vector<Path2> paths;
+  auto positive = [&](const char* attribute, double value) {
+    if (value < 0) fail(node, "<" + name + "> " + attribute + " must not be negative");
+    return value > 0;
+  };
+  if (name == "path") {
+    const char* data = node.attribute("d").value();
+    try {
+      paths = svg::parse_path_data(data);
+    } catch (const svg::GrammarError& e) {
+      std::string shown = data;
+      if (shown.size() > 60) shown = shown.substr(0, 57) + "...";
+      fail(node, std::string("<path> d: ") + e.what() + " in '" + shown + "'");
+    }
+  } else if (name == "rect") {
+    const double x = length(node, "x", 0), y = length(node, "y", 0);
+    const double w = length(node, "width", 0), h = length(node, "height", 0);
+    if (!positive("width", w) || !positive("height", h)) return paths;
+    double rx = length(node, "rx", -1), ry = length(node, "ry", -1);
+    if (rx < 0 && ry < 0) rx = ry = 0;
+    if (rx < 0) rx = ry;
+    if (ry < 0) ry = rx;
+    rx = std::min(rx, w / 2);
+    ry = std::min(ry, h / 2);
+    Path2 path;
+    path.closed = true;
+    if (rx == 0 || ry == 0) {
+      const Vec2 corners[4] = {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
+      for (int i = 0; i < 4; ++i) path.segments.push_back(Segment2::line(corners[i], corners[(i + 1) % 4]));
+    } else {
+      auto line = [&](Vec2 a, Vec2 b) {
+        if (a != b) path.segments.push_back(Segment2::line(a, b));
+      };
+      auto arc = [&](Vec2 a, Vec2 b) { geometry::append_elliptical_arc(path, a, rx, ry, 0, false, true, b); };
+      line({x + rx, y}, {x + w - rx, y});
+      arc({x + w - rx, y}, {x + w, y + ry});
+      line({x + w, y + ry}, {x + w, y + h - ry});
+      arc({x + w, y + h - ry}, {x + w - rx, y + h});
+      line({x + w - rx, y + h}, {x + rx, y + h});
+      arc({x + rx, y + h}, {x, y + h - ry});
+      line({x, y + h - ry}, {x, y + ry});
+      arc({x, y + ry}, {x + rx, y});
+    }
+    paths.push_back(std::move(path));
+  } else if (name == "circle" || name == "ellipse") {
+    const Vec2 centre(length(node, "cx", 0), length(node, "cy", 0));
+    double rx, ry;
+    if (name == "circle") {
+      rx = ry = length(node, "r", 0);
+      if (!positive("r", rx)) return paths;
+    } else {
+      rx = length(node, "rx", 0);
+      ry = length(node, "ry", 0);
+      if (!positive("rx", rx) || !positive("ry", ry)) return paths;
+    }
+    paths.push_back(geometry::ellipse_path(centre, rx, ry));
+  } else if (name == "line") {
+    const Vec2 a(length(node, "x1", 0), length(node, "y1", 0));
+    const Vec2 b(length(node, "x2", 0), length(node, "y2", 0));
+    Path2 path;
+    path.segments.push_back(Segment2::line(a, b));
+    paths.push_back(std::move(path));
+  } else if (name == "polyline" || name == "polygon") {
+    const char* text = node.attribute("points").value();
+    const auto values = parse_number_list(text);
+    if (!values) fail(node, "<" + name + "> points: expected finite numbers, got '" + text + "'");
+    if (values->size() % 2 != 0) fail(node, "<" + name + "> points: odd number of coordinates");
+    Path2 path;
+    for (std::size_t i = 2; i + 1 < values->size(); i += 2) {
+      path.segments.push_back(Segment2::line({(*values)[i - 2], (*values)[i - 1]},
+                                             {(*values)[i], (*values)[i + 1]}));
+    }
+    if (path.segments.empty()) return paths;
+    if (name == "polygon") {
+      if (path.segments.back().end != path.segments.front().start) {
+        path.segments.push_back(Segment2::line(path.segments.back().end, path.segments.front().start));
+      }
+      path.closed = true;
+    }
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+Drawable2 SvgReader::styled(std::vector<Path2> paths, const State& state) const {
+  Drawable2 drawable;
+  const Affine2& map = state.transform;
+  if (!map.matrix().isIdentity(0.0)) {
+    for (Path2& path : paths) geometry::transform(path, map);
+  }
+  drawable.paths = std::move(paths);
+  Style style = state.style;
+  const auto rule = style.find("fill-rule");
+  if (rule != style.end()) {
+    drawable.fill_rule = rule->second == "evenodd" ? FillRule::evenodd : FillRule::nonzero;
+    style.erase(rule);
+  }
+  const std::string color = style.count("color") ? style.at("color") : "black";
+  for (const char* paint : {"fill", "stroke"}) {
+    auto it = style.find(paint);
+    if (it != style.end() && to_lower(it->second) == "currentcolor") it->second = color;
+  }
+  style.erase("color");
+  style.erase("visibility");
+  if (auto width = style.find("stroke-width"); width != style.end()) {
+    const double scale = std::sqrt(std::abs(map.linear().determinant()));
+    if (const auto w = parse_number(width->second); w && scale != 1.0) {
+      width->second = format_number(*w * scale);
+    }
+  }
+  if (state.opacity != 1.0) style["opacity"] = format_number(state.opacity);
+  drawable.style = std::move(style);
+  return drawable;
+}
+
+std::string SvgReader::category_of(pugi::xml_node node, const State& state,
+                                   const std::vector<Drawable2>& parts) const {
+  using Kind = CategoryRule::Kind;
+  const CategoryRule& rule = options_.category_by;
+  auto paint = [&](const char* property, const char* fallback) {
+    const Style& style = parts.front().style;
+    const auto it = style.find(property);
+    const std::string value = it == style.end() ? fallback : it->second;
+    return svg::normalise_color(value).value_or(to_lower(value));
+  };
+  switch (rule.kind) {
+    case Kind::none: return "default";
+    case Kind::fill: return paint("fill", "black");
+    case Kind::stroke: return paint("stroke", "none");
+    case Kind::class_name: {
+      const std::string value(trim(node.attribute("class").value()));
+      return value.empty() ? "none" : value;
+    }
+    case Kind::layer: return state.layer.empty() ? "none" : state.layer;
+    case Kind::attribute:
+      for (pugi::xml_node n = node; n; n = n.parent()) {
+        if (const pugi::xml_attribute a = n.attribute(rule.attribute.c_str())) return a.value();
+      }
+      return "none";
+  }
+  return "default";
+}
+
+}  // namespace
+
+Scene parse_svg(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
+  return SvgReader(text, file_name, options).read();
+}
+
+Scene read_svg(const std::filesystem::path& file, const ReaderOptions& options) {
+  const std::string text = read_text_file(file);
+  return parse_svg(text, file.string(), options);
+}
+
+}  // namespace shapeproc::io

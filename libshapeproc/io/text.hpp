@@ -1,0 +1,33 @@
+// Small text helpers shared by the readers and writers: exact number formatting and parsing of
+// number lists such as "0 0 100 50" or "1,2 3-4.5.5".
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shapeproc::io {
+
+// Shortest decimal text that reads back as exactly `value` ("0.1", "2", "1e-20").
+std::string format_number(double value);
+
+// Parses a whole string as one finite number; nullopt on anything else.
+std::optional<double> parse_number(std::string_view text);
+
+// Parses numbers separated by whitespace and/or commas, SVG style: "2-1.79" is 2 and -1.79,
+// ".5.5" is 0.5 and 0.5. nullopt when something else is in the way or a value is not finite.
+std::optional<std::vector<double>> parse_number_list(std::string_view text);
+
+std::string_view trim(std::string_view text);
+std::string to_lower(std::string_view text);
+std::vector<std::string> split(std::string_view text, char separator);
+
+// Lowercase extension without the dot ("svg").
+std::string extension_of(const std::filesystem::path& path);
+
+// The whole file as text; throws InputError when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
+}  // namespace shapeproc::io

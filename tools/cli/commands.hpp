@@ -1,0 +1,19 @@
+// Registration of the subcommands. Each adds itself to the app and, when chosen, sets `action`
+// to the work to do once parsing succeeded.
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace shapeproc::cli {
+
+using Action = std::function<int(std::ostream& out)>;
+
+void add_info_command(CLI::App& app, Action& action);
+void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+
+}  // namespace shapeproc::cli

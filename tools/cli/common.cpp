@@ -1,0 +1,50 @@
+#include "tools/cli/common.hpp"
+
+namespace shapeproc::cli {
+
+void ReaderFlags::add_to(CLI::App& command) {
+  command.add_flag("--split-subpaths", split_subpaths,
+                   "SVG: each disjoint subpath of a path is its own element (holes stay)");
+  command.add_option("--groups", groups, "SVG: a non-layer <g> is one element or a container")
+      ->check(CLI::IsMember({"element", "container"}))
+      ->capture_default_str();
+  command.add_option("--category-by", category_by,
+                     "SVG: none|fill|stroke|class|layer|attr:NAME")
+      ->capture_default_str();
+  command.add_option("--split", split, "meshes: elements are connected components or OBJ groups")
+      ->check(CLI::IsMember({"components", "groups"}))
+      ->capture_default_str();
+  command.add_option("--window", window,
+                     "xmin,xmax,ymin,ymax[,zmin,zmax]: required for CSV, optional for meshes");
+}
+
+io::ReaderOptions ReaderFlags::options() const {
+  io::ReaderOptions options;
+  options.split_subpaths = split_subpaths;
+  options.groups = groups == "container" ? io::GroupMode::container : io::GroupMode::element;
+  options.category_by = io::CategoryRule::parse(category_by);
+  options.mesh_split = split == "groups" ? io::MeshSplit::groups : io::MeshSplit::components;
+  if (!window.empty()) options.window = io::WindowOption::parse(window);
+  return options;
+}
+
+nlohmann::json ReaderFlags::to_json() const {
+  nlohmann::json j = {{"split_subpaths", split_subpaths},
+                      {"groups", groups},
+                      {"category_by", category_by},
+                      {"split", split}};
+  if (!window.empty()) j["window"] = window;
+  return j;
+}
+
+io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,
+                               const nlohmann::json& parameters) {
+  const nlohmann::json record = {{"tool", "shapeproc"},
+                                 {"version", SHAPEPROC_VERSION},
+                                 {"command", command},
+                                 {"arguments", arguments},
+                                 {"parameters", parameters}};
+  return io::Provenance{record.dump()};
+}
+
+}  // namespace shapeproc::cli

@@ -1,0 +1,32 @@
+// Pieces shared by the subcommands: reader options on the command line and provenance records.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "libshapeproc/io/reader_options.hpp"
+#include "libshapeproc/io/scene_writers.hpp"
+
+namespace shapeproc::cli {
+
+// Reader options as typed on the command line, turned into io::ReaderOptions after parsing.
+struct ReaderFlags {
+  bool split_subpaths = false;
+  std::string groups = "element";
+  std::string category_by = "none";
+  std::string split = "components";
+  std::string window;
+
+  void add_to(CLI::App& command);
+  io::ReaderOptions options() const;  // throws io::UsageError
+  nlohmann::json to_json() const;
+};
+
+// Provenance of an output: tool, version, subcommand, the full argument list and parameters.
+io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,
+                               const nlohmann::json& parameters);
+
+}  // namespace shapeproc::cli

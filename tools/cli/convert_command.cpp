@@ -1,0 +1,41 @@
+// shapeproc convert EXEMPLAR -o OUT: read any supported scene, write it in the format of OUT.
+#include <memory>
+
+#include "libshapeproc/io/scene_io.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/cli/common.hpp"
+
+namespace shapeproc::cli {
+
+namespace {
+struct ConvertArguments {
+  std::string input;
+  std::string output;
+  ReaderFlags reader;
+};
+}  // namespace
+
+void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
+  auto args = std::make_shared<ConvertArguments>();
+  CLI::App* command = app.add_subcommand(
+      "convert", "Read an exemplar (SVG, OBJ, PLY, OFF, STL, CSV) and write it as SVG, OBJ, PLY or "
+                 "CSV, chosen by the extension of -o");
+  command->add_option("EXEMPLAR", args->input, "input file")->required();
+  command->add_option("-o,--output", args->output, "output file (.svg, .obj, .ply, .csv)")->required();
+  args->reader.add_to(*command);
+  command->callback([&action, args, arguments] {
+    action = [args, arguments](std::ostream& out) {
+      const io::ReaderOptions options = args->reader.options();
+      const geometry::Scene scene = io::read_scene(args->input, options);
+      nlohmann::json parameters = {{"input", args->input},
+                                   {"output", args->output},
+                                   {"reader", args->reader.to_json()}};
+      io::write_scene(scene, args->output, make_provenance("convert", arguments, parameters));
+      out << "wrote " << args->output << ": " << scene.elements.size() << " elements, "
+          << scene.categories.size() << " categories\n";
+      return 0;
+    };
+  });
+}
+
+}  // namespace shapeproc::cli
