@@ -129,12 +129,9 @@ double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
-bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
-         std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
-}
-
-bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+// Whether two segments share more than isolated touching points: they cross properly, or they
+// are collinear and overlap along a piece of positive length.
+bool segments_overlap(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   const double d1 = orient(c, d, a);
   const double d2 = orient(c, d, b);
   const double d3 = orient(a, b, c);
@@ -142,13 +139,18 @@ bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
     return true;
   }
-  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) ||
-         (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
+  if (d1 != 0 || d2 != 0 || d3 != 0 || d4 != 0) return false;
+  // Collinear: project on the longer direction and compare the intervals.
+  const Vec2 axis = (b - a).squaredNorm() >= (d - c).squaredNorm() ? Vec2(b - a) : Vec2(d - c);
+  const double a0 = axis.dot(a), a1 = axis.dot(b), c0 = axis.dot(c), c1 = axis.dot(d);
+  const double low = std::max(std::min(a0, a1), std::min(c0, c1));
+  const double high = std::min(std::max(a0, a1), std::max(c0, c1));
+  return high > low;
 }
 
 }  // namespace
 
-bool polylines_intersect(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
+bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
                          bool b_closed) {
   const std::size_t na = a.size() < 2 ? 0 : (a_closed ? a.size() : a.size() - 1);
   const std::size_t nb = b.size() < 2 ? 0 : (b_closed ? b.size() : b.size() - 1);
@@ -160,7 +162,7 @@ bool polylines_intersect(const std::vector<Vec2>& a, bool a_closed, const std::v
       const Vec2& r = b[j];
       const Vec2& s = b[(j + 1) % b.size()];
       if (!box_pq.intersects(Box2(r).extend(s))) continue;
-      if (segments_intersect(p, q, r, s)) return true;
+      if (segments_overlap(p, q, r, s)) return true;
     }
   }
   return false;

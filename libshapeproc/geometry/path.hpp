@@ -52,8 +52,9 @@ double signed_area(const std::vector<Vec2>& polygon);
 // Winding number of `polygon` (implicitly closed) around `point`.
 int winding_number(const std::vector<Vec2>& polygon, const Vec2& point);
 
-// True when the two polylines (closed when the flags say so) have a point in common.
-bool polylines_intersect(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
+// True when the outlines of two polylines (closed when the flags say so) cross, or run together
+// along a piece of positive length; touching at isolated points does not count.
+bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
                          bool b_closed);
 
 }  // namespace shapeproc::geometry

@@ -25,6 +25,8 @@ bool split_csv_line(std::string_view line, std::vector<std::string>& fields) {
     } else if (c == '"' && trim(field).empty() && !was_quoted) {
       field.clear();
       quoted = was_quoted = true;
+    } else if (was_quoted && (c == ' ' || c == '\t')) {
+      continue;  // blanks after a closing quote
     } else if (c == ',') {
       fields.push_back(was_quoted ? field : std::string(trim(field)));
       field.clear();

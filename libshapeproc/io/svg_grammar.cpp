@@ -1,5 +1,6 @@
 #include "libshapeproc/io/svg_grammar.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -63,6 +64,14 @@ class PathCollector {
     point_ = to;
   }
   void path_close_subpath() {
+    // Relative coordinates often miss the start by rounding error: snap instead of adding a
+    // closing line of length ~1e-15.
+    if (!current_.segments.empty() && point_ != subpath_start_ &&
+        (point_ - subpath_start_).norm() <= 1e-9 * std::max(1.0, subpath_start_.norm())) {
+      current_.segments.back().end = subpath_start_;
+      if (!current_.segments.back().cubic) current_.segments.back().control2 = subpath_start_;
+      point_ = subpath_start_;
+    }
     if (!current_.segments.empty() || point_ != subpath_start_) {
       if (point_ != subpath_start_) {
         current_.segments.push_back(Segment2::line(point_, subpath_start_));

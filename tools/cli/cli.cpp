@@ -1,5 +1,7 @@
 #include "tools/cli/cli.hpp"
 
+#include <algorithm>
+
 #include <CLI/CLI.hpp>
 
 #include "libshapeproc/io/error.hpp"
@@ -33,6 +35,16 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add_info_command(app, action);
   add_convert_command(app, action, arguments);
 
+  // CLI11 only says "a subcommand is required" for a misspelt one: name it.
+  const std::vector<CLI::App*> subcommands = app.get_subcommands({});
+  const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
+                                             [&](const CLI::App* sub) { return sub->get_name() == argv[1]; });
+  if (argc > 1 && argv[1][0] != '-' && !known) {
+    std::string names;
+    for (const CLI::App* sub : subcommands) names += (names.empty() ? "" : ", ") + sub->get_name();
+    err << "shapeproc: unknown subcommand '" << argv[1] << "' (expected one of: " << names << ")\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

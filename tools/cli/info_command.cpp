@@ -1,6 +1,7 @@
 // shapeproc info EXEMPLAR [--json]: what the readers made of a file.
 #include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -34,11 +35,18 @@ nlohmann::json box_json(const geometry::Box3& box, int dimension) {
   return {{"min", min}, {"max", max}};
 }
 
+// Seven significant digits: enough to read, free of float-to-double noise (JSON keeps all digits).
+std::string short_number(double value) {
+  std::ostringstream text;
+  text << std::setprecision(7) << value;
+  return text.str();
+}
+
 std::string box_text(const geometry::Box3& box, int dimension) {
   std::string text;
   for (int axis = 0; axis < dimension; ++axis) {
     if (axis > 0) text += " x ";
-    text += "[" + io::format_number(box.min()[axis]) + ", " + io::format_number(box.max()[axis]) + "]";
+    text += "[" + short_number(box.min()[axis]) + ", " + short_number(box.max()[axis]) + "]";
   }
   return text;
 }
@@ -73,7 +81,7 @@ nlohmann::json describe(const geometry::Scene& scene, const std::string& input) 
     if (!shape.name.empty()) item["name"] = shape.name;
     elements.push_back(item);
   }
-  const double mean = scene.elements.empty() ? 0.0 : static_cast<double>(primitives) / scene.elements.size();
+  const double mean = scene.elements.empty() ? 0.0 : static_cast<double>(primitives) / static_cast<double>(scene.elements.size());
   return {{"file", input},
           {"dimension", scene.dimension},
           {"window", box_json(scene.window, scene.dimension)},
@@ -91,7 +99,7 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
   out << "file:       " << d["file"].get<std::string>() << '\n'
       << "dimension:  " << scene.dimension << '\n'
       << "window:     " << box_text(scene.window, scene.dimension) << "  ("
-      << (planar ? "area " : "volume ") << io::format_number(scene.window_measure()) << ")\n"
+      << (planar ? "area " : "volume ") << short_number(scene.window_measure()) << ")\n"
       << "units:      " << scene.units << '\n'
       << "elements:   " << scene.elements.size() << "  (" << std::fixed << std::setprecision(1)
       << d["primitives_per_element"].get<double>() << (planar ? " segments" : " triangles")

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The main job on a bundled exemplar: install what is missing, build in Release, and write the
+# results to out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh --target shapeproc
+mkdir -p out
+exemplar=data/svg/two-kinds.svg
+./build/tools/shapeproc info "$exemplar" --category-by fill | tee out/two-kinds-info.txt
+./build/tools/shapeproc info "$exemplar" --category-by fill --json > out/two-kinds-info.json
+./build/tools/shapeproc convert "$exemplar" --category-by fill -o out/two-kinds.svg
+./build/tools/shapeproc convert "$exemplar" --category-by fill -o out/two-kinds.csv
+./build/tools/shapeproc convert data/mesh/pebbles.obj -o out/pebbles.ply
+echo "demo outputs are in out/"

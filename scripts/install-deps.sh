@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs the Debian packages libshapeproc needs, only those that are missing (idempotent).
+set -euo pipefail
+packages=(
+  cmake g++ ninja-build ccache
+  libeigen3-dev libboost-dev libopenmesh-dev libpugixml-dev libsvgpp-dev
+  nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,132 @@
+// The command line, run in-process: exit codes, one-line errors, nothing half-written.
+#include "tools/cli/cli.hpp"
+
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/test_support.hpp"
+
+namespace shapeproc::cli {
+namespace {
+
+struct Result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Result run_cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "shapeproc");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = run(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string data(const std::string& relative) { return testing::data_path(relative).string(); }
+
+void expect_one_line_error(const Result& r, int code, const std::string& part) {
+  EXPECT_EQ(r.code, code) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // exactly one line
+  EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+}
+
+TEST(Cli, VersionAndHelp) {
+  const Result version = run_cli({"--version"});
+  EXPECT_EQ(version.code, 0);
+  EXPECT_EQ(version.out, std::string("shapeproc ") + SHAPEPROC_VERSION + "\n");
+  const Result help = run_cli({"--help"});
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("info"), std::string::npos);
+  EXPECT_NE(help.out.find("convert"), std::string::npos);
+  const Result info_help = run_cli({"info", "--help"});
+  EXPECT_EQ(info_help.code, 0);
+  EXPECT_NE(info_help.out.find("--category-by"), std::string::npos);
+}
+
+TEST(Cli, NonsenseFlags) {
+  expect_one_line_error(run_cli({}), 2, "subcommand");
+  expect_one_line_error(run_cli({"frobnicate"}), 2, "frobnicate");
+  expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--bogus"}), 2, "--bogus");
+  expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--category-by", "colour"}), 2,
+                        "--category-by");
+  expect_one_line_error(run_cli({"info", data("points/clusters.csv"), "--window", "0,1,2"}), 2, "--window");
+  expect_one_line_error(run_cli({"info", data("mesh/pebbles.obj"), "--split", "faces"}), 2, "--split");
+  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg")}), 2, "--output");
+}
+
+TEST(Cli, InfoTextAndJson) {
+  const Result text = run_cli({"info", data("svg/two-kinds.svg"), "--category-by", "fill"});
+  EXPECT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("elements:   34"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("#e53e3e: 17"), std::string::npos) << text.out;
+  const Result json = run_cli({"info", data("mesh/pebbles.obj"), "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  const nlohmann::json parsed = nlohmann::json::parse(json.out);
+  EXPECT_EQ(parsed["dimension"], 3);
+  EXPECT_EQ(parsed["element_count"], 12);
+  EXPECT_EQ(parsed["elements"][0]["triangles"], 80);
+  EXPECT_EQ(parsed["elements"][0]["bbox"]["min"].size(), 3u);
+}
+
+TEST(Cli, ConvertRecordsItsParameters) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("sub/dots.svg").string();
+  const Result r = run_cli({"convert", data("svg/dots-random.svg"), "-o", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string svg = testing::read_file(out);
+  EXPECT_NE(svg.find("&quot;command&quot;:&quot;convert&quot;"), std::string::npos);
+  EXPECT_NE(svg.find("category_by"), std::string::npos);
+  const Result again = run_cli({"info", out});
+  EXPECT_NE(again.out.find("elements:   30"), std::string::npos);
+}
+
+struct BadRun {
+  const char* name;
+  std::vector<std::string> args;  // "IN:" prefix = file written in the temp dir with this text
+  const char* message;
+};
+
+TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
+  const testing::TempDir dir;
+  dir.write("malformed.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<g>\n</svg>\n");
+  dir.write("nowindow.csv", "x,y\n1,2\n");
+  dir.write("nm.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  dir.write("notes.txt", "hello\n");
+  const std::string previous = "previous contents\n";
+  const std::string out_svg = dir.write("out.svg", previous).string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"convert", dir.file("malformed.svg").string(), "-o", out_svg}, "malformed.svg:3: malformed XML"},
+      {{"convert", dir.file("missing.svg").string(), "-o", out_svg}, "missing.svg: no such file"},
+      {{"convert", dir.file("nowindow.csv").string(), "-o", out_svg}, "nowindow.csv: a CSV point pattern needs --window"},
+      {{"convert", dir.file("nm.off").string(), "-o", out_svg}, "nm.off: non-manifold"},
+      {{"convert", dir.file("notes.txt").string(), "-o", out_svg}, "unknown format"},
+      {{"convert", data("mesh/pebbles.obj"), "-o", out_svg}, "2D scenes only"},
+  };
+  for (const Case& c : cases) {
+    expect_one_line_error(run_cli(c.args), 2, c.message);
+    EXPECT_EQ(testing::read_file(out_svg), previous);
+  }
+  const std::string out_png = dir.file("out.png").string();
+  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg"), "-o", out_png}), 2, "unknown output format");
+  EXPECT_FALSE(std::filesystem::exists(out_png));
+  // Nothing else was left in the directory (no temporary files).
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    (void)entry;
+    ++files;
+  }
+  EXPECT_EQ(files, 5u);
+}
+
+}  // namespace
+}  // namespace shapeproc::cli
