@@ -1,6 +1,7 @@
 #include "libshapeproc/io/mesh_reader.hpp"
 
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -20,20 +21,22 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 };
 using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
-// Routes OpenMesh's error stream into a string while alive (OpenMesh reports rejected faces there).
+// Collects what OpenMesh reports while alive (it reports rejected faces on its error stream,
+// which writes to std::cerr). std::cerr's buffer is swapped rather than OpenMesh's stream
+// reconnected, because OpenMesh's disconnect leaks its target. Not for concurrent use.
 class CaptureOpenMeshErrors {
  public:
-  CaptureOpenMeshErrors() {
-    ::omerr().disconnect(std::cerr);
-    ::omerr().connect(buffer_);
+  CaptureOpenMeshErrors() : previous_(std::cerr.rdbuf(buffer_.rdbuf())) {
     ::omlog().disable();
     ::omout().disable();
   }
   ~CaptureOpenMeshErrors() {
     ::omerr().flush();
-    ::omerr().disconnect(buffer_);
-    ::omerr().connect(std::cerr);
+    std::cerr.rdbuf(previous_);
   }
+  CaptureOpenMeshErrors(const CaptureOpenMeshErrors&) = delete;
+  CaptureOpenMeshErrors& operator=(const CaptureOpenMeshErrors&) = delete;
+
   std::string first_line() {
     ::omerr().flush();
     const std::string text = buffer_.str();
@@ -42,6 +45,7 @@ class CaptureOpenMeshErrors {
 
  private:
   std::ostringstream buffer_;
+  std::streambuf* previous_;
 };
 
 // The OBJ group (from `o`/`g` lines) of each triangle, in file order, polygons fanned.

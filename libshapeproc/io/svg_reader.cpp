@@ -260,6 +260,10 @@ std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) 
     }
     state.style[name] = value;
   }
+  // A nested <svg> establishes a viewport at (x, y); its viewBox scaling is not applied.
+  if (tag == "svg" && node != document_.document_element()) {
+    state.transform = state.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
+  }
   if (const pugi::xml_attribute t = node.attribute("transform")) {
     try {
       state.transform = state.transform * svg::parse_transform(t.value());
@@ -377,9 +381,7 @@ void SvgReader::walk_container(pugi::xml_node node, const State& state) {
         make_element(child, *child_state);
       }
     } else if (name == "svg") {
-      State inside = *child_state;
-      inside.transform = inside.transform * Eigen::Translation2d(length(child, "x", 0), length(child, "y", 0));
-      walk_container(child, inside);
+      walk_container(child, *child_state);
     } else if (kDrawables.count(name) || name == "use") {
       make_element(child, *child_state);
     }

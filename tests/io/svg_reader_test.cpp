@@ -116,6 +116,13 @@ TEST(SvgStructure, TransformsComposeDownTheTree) {
   EXPECT_NEAR(box.max().y(), 2, 1e-12);
 }
 
+TEST(SvgStructure, NestedSvgIsAContainerAtItsPosition) {
+  const Scene scene = read(R"x(<svg x="20" y="30"><rect width="2" height="2"/><rect x="5" width="2" height="2"/></svg>)x");
+  ASSERT_EQ(scene.elements.size(), 2u);
+  EXPECT_EQ(scene.elements[0].position, Vec3(21, 31, 0));
+  EXPECT_EQ(scene.elements[1].position, Vec3(26, 31, 0));
+}
+
 TEST(SvgStructure, UseDrawsItsTargetPlaced) {
   const Scene scene = read(R"(<defs><rect id="r" width="2" height="2" fill="red"/></defs>)"
                            R"(<use href="#r" x="5" y="5"/><use xlink:href="#r" transform='translate(10,0)'/>)");
