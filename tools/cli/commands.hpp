@@ -15,5 +15,6 @@ using Action = std::function<int(std::ostream& out)>;
 
 void add_info_command(CLI::App& app, Action& action);
 void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 
 }  // namespace shapeproc::cli

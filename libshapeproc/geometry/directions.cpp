@@ -1,0 +1,80 @@
+#include "libshapeproc/geometry/directions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace shapeproc::geometry {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 from_z_phi(double z, double phi) {
+  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+}
+}  // namespace
+
+int healpix_base_pixel(const Vec3& direction) {
+  const Vec3 u = direction.normalized();
+  const double z = u.z();
+  double phi = std::atan2(u.y(), u.x());
+  if (phi < 0) phi += 2 * kPi;
+  double tt = phi / (kPi / 2);  // in [0, 4)
+  if (tt >= 4.0) tt -= 4.0;
+  if (std::abs(z) <= 2.0 / 3.0) {
+    const int jp = static_cast<int>(0.5 + tt - 0.75 * z);  // ascending edge index
+    const int jm = static_cast<int>(0.5 + tt + 0.75 * z);  // descending edge index
+    if (jp == jm) return (jp % 4) | 4;
+    return jp < jm ? jp % 4 : (jm % 4) + 8;
+  }
+  const int ntt = std::min(3, static_cast<int>(tt));
+  return z > 0 ? ntt : ntt + 8;
+}
+
+Vec3 healpix_base_pixel_centre(int pixel) {
+  if (pixel < 4) return from_z_phi(2.0 / 3.0, kPi / 4 + pixel * kPi / 2);
+  if (pixel < 8) return from_z_phi(0.0, (pixel - 4) * kPi / 2);
+  return from_z_phi(-2.0 / 3.0, kPi / 4 + (pixel - 8) * kPi / 2);
+}
+
+DirectionBins::DirectionBins(int dimension, int directions) : dimension_(dimension), directions_(directions) {
+  if (directions < 1) throw std::invalid_argument("directions: need at least 1, got " + std::to_string(directions));
+  if (directions == 1) {
+    axes_.push_back(Vec3::UnitX());
+    return;
+  }
+  if (dimension == 2) {
+    if (directions % 2 != 0) {
+      throw std::invalid_argument("directions: an even number (or 1 for isotropic) is needed in 2D, got " +
+                                  std::to_string(directions));
+    }
+    for (int k = 0; k < directions / 2; ++k) {
+      const double angle = 2 * kPi * k / directions;
+      axes_.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    }
+  } else {
+    if (directions != 12) {
+      throw std::invalid_argument("directions: 3D uses the 12 HEALPix base pixels (12) or 1, got " +
+                                  std::to_string(directions));
+    }
+    for (int pixel : {0, 1, 2, 3, 4, 5}) axes_.push_back(healpix_base_pixel_centre(pixel));
+  }
+}
+
+int DirectionBins::axis_of(const Vec3& direction) const {
+  if (directions_ == 1) return 0;
+  if (dimension_ == 2) {
+    const double step = 2 * kPi / directions_;
+    const long k = std::lround(std::atan2(direction.y(), direction.x()) / step);
+    const int half = directions_ / 2;
+    return static_cast<int>(((k % half) + half) % half);
+  }
+  const int pixel = healpix_base_pixel(direction);
+  if (pixel < 4) return pixel;
+  if (pixel < 8) return 4 + (pixel - 4) % 2;
+  return (pixel - 8 + 2) % 4;  // south pixel 8 + (f + 2) % 4 is antipodal to north pixel f
+}
+
+}  // namespace shapeproc::geometry

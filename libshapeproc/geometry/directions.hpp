@@ -1,0 +1,42 @@
+// Canonical directions and axis bins for the direction-dependent interaction (math note, "Pair
+// measurements"). A direction and its opposite share one axis bin, because the interaction is
+// symmetric in its two arguments.
+//
+// 2D: D evenly spaced directions e_k at angles 2πk/D (D even; D = 1 means isotropic); a direction
+// goes to the nearest e_k and to axis k mod D/2. Angles are measured in the scene's frame (SVG's
+// y axis points down, so 90° points down the page).
+// 3D: the 12 HEALPix base pixels (Nside = 1); a direction goes to its base pixel, and antipodal
+// pixels share an axis (6 axes). D = 1 means isotropic.
+#pragma once
+
+#include <vector>
+
+#include "libshapeproc/geometry/types.hpp"
+
+namespace shapeproc::geometry {
+
+class DirectionBins {
+ public:
+  // Throws std::invalid_argument for D < 1, odd D > 1 in 2D, or D other than 1 and 12 in 3D.
+  DirectionBins(int dimension, int directions);
+
+  int dimension() const { return dimension_; }
+  int directions() const { return directions_; }
+  int axis_count() const { return static_cast<int>(axes_.size()); }
+  // Axis bin of a non-zero direction (2D uses x and y).
+  int axis_of(const Vec3& direction) const;
+  // Representative unit direction of an axis (e_k with the smallest k of the pair).
+  const Vec3& axis_direction(int axis) const { return axes_.at(static_cast<std::size_t>(axis)); }
+
+ private:
+  int dimension_;
+  int directions_;
+  std::vector<Vec3> axes_;
+};
+
+// HEALPix base pixel (0-3 north, 4-7 equatorial, 8-11 south) of a non-zero direction.
+int healpix_base_pixel(const Vec3& direction);
+// Unit vector to the centre of a HEALPix base pixel.
+Vec3 healpix_base_pixel_centre(int pixel);
+
+}  // namespace shapeproc::geometry

@@ -1,0 +1,267 @@
+#include "libshapeproc/geometry/pair_measurements.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "libshapeproc/geometry/segment_distance.hpp"
+#include "libshapeproc/geometry/triangle_distance.hpp"
+
+namespace shapeproc::geometry {
+
+namespace {
+
+// Lexicographic sign of a vector: the canonical order of a pair uses it when both shapes are
+// the same.
+bool lexicographically_negative(const Vec3& v) {
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] != 0.0) return v[k] < 0.0;
+  }
+  return false;
+}
+
+// Shortest distance from p to the outline of a 2D proxy.
+double point_to_outline(const Proxy2& proxy, const Vec2& p) {
+  BoxTree<2> single = BoxTree<2>::build({Box2(p, p)});
+  return closest_pair_distance<2>(single, proxy.segment_tree, Vec2::Zero(), PairMeasurer::kNoCutoff,
+                                  [&](int, int j) {
+                                    return point_segment_distance(p, proxy.segment_start[j], proxy.segment_end[j]);
+                                  });
+}
+
+double point_to_surface(const Proxy3& proxy, const Vec3& p) {
+  if (proxy.point) return (p - proxy.vertices[0]).norm();
+  BoxTree<3> single = BoxTree<3>::build({Box3(p, p)});
+  return closest_pair_distance<3>(single, proxy.triangle_tree, Vec3::Zero(), PairMeasurer::kNoCutoff,
+                                  [&](int, int j) {
+                                    const auto& t = proxy.triangles[j];
+                                    return point_triangle_distance(p, proxy.vertices[t[0]], proxy.vertices[t[1]],
+                                                                   proxy.vertices[t[2]]);
+                                  });
+}
+
+// Points along a 2D outline at most `step` apart.
+std::vector<Vec2> outline_samples(const Proxy2& proxy, double step) {
+  std::vector<Vec2> samples;
+  for (std::size_t i = 0; i < proxy.segment_start.size(); ++i) {
+    const Vec2 a = proxy.segment_start[i], b = proxy.segment_end[i];
+    const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
+    for (int s = 0; s <= pieces; ++s) samples.push_back(a + (static_cast<double>(s) / pieces) * (b - a));
+  }
+  return samples;
+}
+
+std::vector<Vec3> surface_samples(const Proxy3& proxy, double step) {
+  std::vector<Vec3> samples = proxy.vertices;
+  for (const auto& t : proxy.triangles) {
+    const Vec3 &a = proxy.vertices[t[0]], &b = proxy.vertices[t[1]], &c = proxy.vertices[t[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int m = std::max(1, static_cast<int>(std::ceil(longest / step)));
+    for (int i = 0; i <= m; ++i)
+      for (int j = 0; i + j <= m; ++j) samples.push_back(a + (i * (b - a) + j * (c - a)) / m);
+  }
+  return samples;
+}
+
+}  // namespace
+
+PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options)
+    : dimension_(scene.dimension), options_(options), bins_(scene.dimension, options.directions) {
+  if (!(options.proxy.tolerance >= 0.0)) throw std::invalid_argument("proxy tolerance must not be negative");
+  if (!(options.gravitation_theta >= 0.0 && options.gravitation_theta < 1.0)) {
+    throw std::invalid_argument("gravitation theta must be in [0, 1)");
+  }
+  if (options.periodic) {
+    period_ = scene.window.sizes();
+    if (dimension_ == 2) period_.z() = 0.0;
+  }
+  std::vector<std::size_t> source(scene.shapes.size(), 0), simplified(scene.shapes.size(), 0),
+      mass(scene.shapes.size(), 0);
+  for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+    const Shape& shape = scene.shapes[s];
+    if (dimension_ == 2) {
+      proxies2_.push_back(make_proxy2(shape, options.proxy));
+      const Proxy2& p = proxies2_.back();
+      source[s] = p.source_segments;
+      simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
+      mass[s] = p.mass.points.size();
+      radii_.push_back(std::max(p.box.min().norm(), p.box.max().norm()));
+    } else {
+      proxies3_.push_back(make_proxy3(shape, options.proxy));
+      const Proxy3& p = proxies3_.back();
+      source[s] = p.source_triangles;
+      simplified[s] = p.triangles.size();
+      mass[s] = p.mass.points.size();
+      // Farthest corner of the box from the reference position (the origin).
+      double r = 0.0;
+      for (int corner = 0; corner < 8; ++corner) r = std::max(r, p.box.corner(static_cast<Box3::CornerType>(corner)).norm());
+      radii_.push_back(r);
+    }
+  }
+  if (!scene.elements.empty()) {
+    for (const Element& e : scene.elements) {
+      statistics_.source_per_element += static_cast<double>(source.at(e.shape));
+      statistics_.proxy_per_element += static_cast<double>(simplified.at(e.shape));
+      statistics_.mass_points_per_element += static_cast<double>(mass.at(e.shape));
+    }
+    const double n = static_cast<double>(scene.elements.size());
+    statistics_.source_per_element /= n;
+    statistics_.proxy_per_element /= n;
+    statistics_.mass_points_per_element /= n;
+  }
+}
+
+double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff) const {
+  if (dimension_ == 2) {
+    const Proxy2& pa = proxies2_[a];
+    const Proxy2& pb = proxies2_[b];
+    const Vec2 t = offset.head<2>();
+    const Box2 moved = pb.box.translated(t);
+    if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
+    // One shape inside the other's filled region (their outlines not crossing): one vertex of
+    // every polyline decides. Crossing outlines are found below.
+    if (pa.box.intersects(moved)) {
+      for (const auto& polyline : pb.polylines) {
+        if (pa.inside(polyline.points.front() + t)) return 0.0;
+      }
+      for (const auto& polyline : pa.polylines) {
+        if (pb.inside(polyline.points.front() - t)) return 0.0;
+      }
+    }
+    return closest_pair_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff, [&](int i, int j) {
+      return segment_segment_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
+                                      pb.segment_end[j] + t);
+    });
+  }
+  const Proxy3& pa = proxies3_[a];
+  const Proxy3& pb = proxies3_[b];
+  const Box3 moved = pb.box.translated(offset);
+  if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
+  if (pa.box.intersects(moved)) {
+    if (pa.inside(pb.vertices.front() + offset)) return 0.0;
+    if (pb.inside(pa.vertices.front() - offset)) return 0.0;
+  }
+  auto corner = [](const Proxy3& p, int t, int k) -> const Vec3& {
+    return p.point ? p.vertices[0] : p.vertices[p.triangles[t][k]];
+  };
+  return closest_pair_distance<3>(pa.triangle_tree, pb.triangle_tree, offset, cutoff, [&](int i, int j) {
+    return triangle_triangle_distance(corner(pa, i, 0), corner(pa, i, 1), corner(pa, i, 2),
+                                      corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
+                                      corner(pb, j, 2) + offset);
+  });
+}
+
+double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const {
+  double worst = 0.0;
+  if (dimension_ == 2) {
+    const Proxy2& pa = proxies2_[a];
+    const Proxy2& pb = proxies2_[b];
+    const Vec2 t = offset.head<2>();
+    const double step = std::max(1e-9, 0.01 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
+    for (const Vec2& p : outline_samples(pa, step)) worst = std::max(worst, point_to_outline(pb, p - t));
+    for (const Vec2& p : outline_samples(pb, step)) worst = std::max(worst, point_to_outline(pa, p + t));
+    return worst;
+  }
+  const Proxy3& pa = proxies3_[a];
+  const Proxy3& pb = proxies3_[b];
+  const double step = std::max(1e-9, 0.05 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
+  for (const Vec3& p : surface_samples(pa, step)) worst = std::max(worst, point_to_surface(pb, p - offset));
+  for (const Vec3& p : surface_samples(pb, step)) worst = std::max(worst, point_to_surface(pa, p + offset));
+  return worst;
+}
+
+double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff) const {
+  switch (options_.distance) {
+    case DistanceKind::shape: return shape_distance(a, b, offset, cutoff);
+    case DistanceKind::centroid: return std::min(cutoff, offset.norm());
+    case DistanceKind::hausdorff: return std::min(cutoff, hausdorff_distance(a, b, offset));
+  }
+  return cutoff;
+}
+
+Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const {
+  Vec3 force = Vec3::Zero();
+  double scale = 0.0;
+  if (dimension_ == 2) {
+    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), options_.gravitation_theta);
+    force.head<2>() = f;
+    scale = proxies2_[a].mass.total_mass() * proxies2_[b].mass.total_mass();
+  } else {
+    force = gravitation_force(proxies3_[a].mass, proxies3_[b].mass, offset, options_.gravitation_theta);
+    scale = proxies3_[a].mass.total_mass() * proxies3_[b].mass.total_mass();
+  }
+  const double norm = force.norm();
+  // A force that cancels (a dot centred in a ring) has no direction: fall back to the centroids.
+  if (!(norm > 1e-12 * scale / std::max(1e-300, std::pow(radii_[a] + radii_[b] + offset.norm(), dimension_ - 1)))) {
+    return offset.norm() > 0 ? Vec3(offset.normalized()) : Vec3(Vec3::UnitX());
+  }
+  return force / norm;
+}
+
+Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
+  // Canonical order, so that swapping the pair negates the result bit for bit.
+  if (a > b || (a == b && lexicographically_negative(offset))) return -direction(b, a, -offset);
+  if (options_.direction == DirectionKind::centroid) {
+    return offset.norm() > 0 ? Vec3(offset.normalized()) : Vec3(Vec3::UnitX());
+  }
+  return gravitation_direction(a, b, offset);
+}
+
+Measurement PairMeasurer::measure(const Element& first, const Element& second, double cutoff) const {
+  Measurement m;
+  const Vec3 base = second.position - first.position;
+  m.offset = base;
+  if (!options_.periodic) {
+    m.distance = distance(first.shape, second.shape, base, cutoff);
+  } else {
+    // Minimum image: the nearest of the 3^dim translates (k = 0 first, so ties keep it).
+    m.distance = cutoff;
+    const int nz = dimension_ == 3 ? 1 : 0;
+    bool found = false;
+    for (int kx = 0; kx < 3; ++kx)
+      for (int ky = 0; ky < 3; ++ky)
+        for (int kz = 0; kz <= 2 * nz; ++kz) {
+          const Vec3 k(kx == 2 ? -1 : kx, ky == 2 ? -1 : ky, kz == 2 ? -1 : kz);
+          const Vec3 image = base + k.cwiseProduct(period_);
+          const double d = distance(first.shape, second.shape, image, m.distance);
+          if (d < m.distance || (!found && d <= m.distance && d < cutoff)) {
+            m.distance = d;
+            m.offset = image;
+            found = true;
+          }
+        }
+  }
+  if (m.distance >= cutoff) return m;
+  m.direction = direction(first.shape, second.shape, m.offset);
+  m.axis = bins_.axis_of(m.direction);
+  return m;
+}
+
+std::vector<PairRecord> PairMeasurer::all_pairs(const std::vector<Element>& elements, double range) const {
+  std::vector<PairRecord> records;
+  const std::size_t n = elements.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Element& a = elements[i];
+      const Element& b = elements[j];
+      if (std::isfinite(range) && options_.distance != DistanceKind::hausdorff) {
+        // Cheap reject: d >= |offset| - r_a - r_b for every distance kind but Hausdorff.
+        Vec3 t = b.position - a.position;
+        if (options_.periodic) {
+          for (int k = 0; k < dimension_; ++k) {
+            if (period_[k] > 0) t[k] -= period_[k] * std::round(t[k] / period_[k]);
+          }
+        }
+        const double reach = options_.distance == DistanceKind::centroid ? 0.0 : radii_[a.shape] + radii_[b.shape];
+        if (t.norm() - reach >= range) continue;
+      }
+      const Measurement m = measure(a, b, range);
+      if (m.distance < range || !std::isfinite(range)) {
+        records.push_back({static_cast<int>(i), static_cast<int>(j), m});
+      }
+    }
+  }
+  return records;
+}
+
+}  // namespace shapeproc::geometry
