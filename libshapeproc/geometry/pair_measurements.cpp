@@ -84,7 +84,7 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       const Proxy2& p = proxies2_.back();
       source[s] = p.source_segments;
       simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
-      mass[s] = p.mass.points.size();
+      mass[s] = p.mass.start.size();
       radii_.push_back(std::max(p.box.min().norm(), p.box.max().norm()));
     } else {
       proxies3_.push_back(make_proxy3(shape, options.proxy));
@@ -102,12 +102,12 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
     for (const Element& e : scene.elements) {
       statistics_.source_per_element += static_cast<double>(source.at(e.shape));
       statistics_.proxy_per_element += static_cast<double>(simplified.at(e.shape));
-      statistics_.mass_points_per_element += static_cast<double>(mass.at(e.shape));
+      statistics_.mass_per_element += static_cast<double>(mass.at(e.shape));
     }
     const double n = static_cast<double>(scene.elements.size());
     statistics_.source_per_element /= n;
     statistics_.proxy_per_element /= n;
-    statistics_.mass_points_per_element /= n;
+    statistics_.mass_per_element /= n;
   }
 }
 
@@ -171,6 +171,8 @@ double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const 
 }
 
 double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff) const {
+  // Canonical order, so that d(b, a) == d(a, b) bit for bit.
+  if (a > b || (a == b && lexicographically_negative(offset))) return distance(b, a, -offset, cutoff);
   switch (options_.distance) {
     case DistanceKind::shape: return shape_distance(a, b, offset, cutoff);
     case DistanceKind::centroid: return std::min(cutoff, offset.norm());
@@ -183,9 +185,9 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
   Vec3 force = Vec3::Zero();
   double scale = 0.0;
   if (dimension_ == 2) {
-    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), options_.gravitation_theta);
+    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>());
     force.head<2>() = f;
-    scale = proxies2_[a].mass.total_mass() * proxies2_[b].mass.total_mass();
+    scale = proxies2_[a].mass.area * proxies2_[b].mass.area;
   } else {
     force = gravitation_force(proxies3_[a].mass, proxies3_[b].mass, offset, options_.gravitation_theta);
     scale = proxies3_[a].mass.total_mass() * proxies3_[b].mass.total_mass();

@@ -29,7 +29,7 @@ struct MeasurementOptions {
   int directions = 8;     // canonical directions: 2D any even number or 1; 3D 12 or 1
   bool periodic = false;  // the window is a torus: minimum-image offsets
   ProxyOptions proxy;
-  double gravitation_theta = 0.2;  // Barnes–Hut opening parameter
+  double gravitation_theta = 0.2;  // Barnes–Hut opening parameter (3D point cubature)
 };
 
 struct Measurement {
@@ -47,7 +47,7 @@ struct PairRecord {
 struct ProxyStatistics {
   double source_per_element = 0.0;  // mean segments (2D) or triangles (3D) per element, as drawn
   double proxy_per_element = 0.0;   // the same for the proxies
-  double mass_points_per_element = 0.0;
+  double mass_per_element = 0.0;  // mass boundary edges (2D) or cubature points (3D)
 };
 
 class PairMeasurer {

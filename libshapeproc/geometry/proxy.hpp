@@ -9,6 +9,7 @@
 
 #include "libshapeproc/geometry/box_tree.hpp"
 #include "libshapeproc/geometry/gravitation.hpp"
+#include "libshapeproc/geometry/region_gravitation.hpp"
 #include "libshapeproc/geometry/shape.hpp"
 
 namespace shapeproc::geometry {
@@ -18,8 +19,10 @@ struct ProxyOptions {
   // Douglas–Peucker distance; 3D: quadric error as a distance). Curves are flattened first at a
   // quarter of it.
   double tolerance = 0.01;
-  // Mass cubature: grid cells along the longest side of the element's box.
-  int mass_resolution_2d = 40;
+  // Mass of curves (2D outlines that bound no filled region): a strip of this half-width, as a
+  // fraction of the element's diagonal, unless the drawable has a stroke-width (half of it).
+  double curve_half_width = 0.005;
+  // Mass cubature (3D): grid cells along the longest side.
   int mass_resolution_3d = 16;
 };
 
@@ -39,13 +42,23 @@ struct Proxy2 {
   std::vector<Vec2> segment_start, segment_end;  // every proxy segment (points: zero length)
   BoxTree<2> segment_tree;
   Box2 box;
-  MassModel2 mass;
+  // The mass whose gravitation gives the relative orientation: the filled regions, plus strips
+  // around curves (rings: closed polygons combined even-odd, one group per strip polygon).
+  std::vector<std::vector<std::vector<Vec2>>> strips;
+  MassBoundary2 mass;
   std::size_t source_segments = 0;  // segments of the shape before flattening and simplification
 
   std::size_t segment_count() const { return segment_start.size(); }
   // Whether p lies in a filled region (on the fill rule of each region).
   bool inside(const Vec2& p) const;
+  // Whether p lies in the mass (a filled region or a curve's strip).
+  bool in_mass(const Vec2& p) const;
 };
+
+// Midpoint-rule samples of a 2D proxy's mass on the square lattice of spacing `cell` through
+// `lattice`, each cell tested at subsamples^2 points (weight = covered area, at the covered
+// centroid; with 1 subsample, plain cell centres): a dense, independent reference for tests.
+MassModel2 sample_mass(const Proxy2& proxy, double cell, const Vec2& lattice = Vec2::Zero(), int subsamples = 4);
 
 // 3D proxy: a simplified triangle mesh; closed meshes are solids.
 struct Proxy3 {

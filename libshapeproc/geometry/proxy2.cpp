@@ -1,5 +1,6 @@
 // 2D proxies: flattening, Douglas–Peucker through Boost.Geometry, region tests, mass cubature.
 #include <cmath>
+#include <cstdlib>
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/linestring.hpp>
@@ -36,7 +37,124 @@ std::vector<Vec2> simplify(const std::vector<Vec2>& points, bool closed, double 
   return result;
 }
 
+using BgPolygon = bg::model::polygon<BgPoint>;
+using BgMultiPolygon = bg::model::multi_polygon<BgPolygon>;
+
+std::vector<Vec2> ring_points(const bg::model::ring<BgPoint>& ring) {
+  std::vector<Vec2> points;
+  for (const BgPoint& p : ring) points.emplace_back(p.x(), p.y());
+  if (points.size() > 1 && points.back() == points.front()) points.pop_back();
+  return points;
+}
+
+// Strips of the given half-width around a polyline (closed polylines give annuli).
+BgMultiPolygon strip_around(const Proxy2::Polyline& polyline, double half_width) {
+  BgLine line;
+  for (const Vec2& p : polyline.points) line.emplace_back(p.x(), p.y());
+  if (polyline.closed && !polyline.points.empty()) line.emplace_back(polyline.points.front().x(), polyline.points.front().y());
+  BgMultiPolygon result;
+  if (line.size() < 2) {
+    const Vec2 p = polyline.points.empty() ? Vec2::Zero() : polyline.points.front();
+    line.clear();
+    line.emplace_back(p.x() - half_width, p.y());
+    line.emplace_back(p.x() + half_width, p.y());
+  }
+  bg::buffer(line, result, bg::strategy::buffer::distance_symmetric<double>(half_width),
+             bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_miter(),
+             bg::strategy::buffer::end_flat(), bg::strategy::buffer::point_circle(8));
+  return result;
+}
+
+bool in_strip(const std::vector<std::vector<Vec2>>& rings, const Vec2& p) {
+  int winding = 0;
+  for (const auto& ring : rings) winding += winding_number(ring, p) != 0 ? 1 : 0;
+  return winding % 2 == 1;
+}
+
+// The boundary of the mass: every edge of a filled ring or strip ring that has mass on exactly
+// one side, with its normal towards the empty side. Edges inside the mass (shared by two rings,
+// overlapping strips) drop out.
+void build_mass(Proxy2& proxy, const std::vector<double>& strip_half_widths, double diagonal, const ProxyOptions&) {
+  for (std::size_t k = 0; k < proxy.polylines.size(); ++k) {
+    if (strip_half_widths[k] <= 0.0) continue;
+    for (const BgPolygon& polygon : strip_around(proxy.polylines[k], strip_half_widths[k])) {
+      std::vector<std::vector<Vec2>> rings{ring_points(polygon.outer())};
+      for (const auto& inner : polygon.inners()) rings.push_back(ring_points(inner));
+      proxy.strips.push_back(std::move(rings));
+    }
+  }
+  const double epsilon = std::max(1e-9, 1e-7 * diagonal);
+  auto consider = [&](const Vec2& a, const Vec2& b) {
+    const Vec2 edge = b - a;
+    const double length = edge.norm();
+    if (length == 0.0) return;
+    const Vec2 left(-edge.y() / length, edge.x() / length);
+    const Vec2 mid = 0.5 * (a + b);
+    const bool mass_left = proxy.in_mass(mid + epsilon * left);
+    const bool mass_right = proxy.in_mass(mid - epsilon * left);
+    if (mass_left != mass_right) proxy.mass.add_edge(a, b, mass_left ? Vec2(-left) : left);
+  };
+  for (const auto& region : proxy.regions) {
+    for (int ring : region.rings) {
+      const auto& points = proxy.polylines[ring].points;
+      for (std::size_t i = 0; i < points.size(); ++i) consider(points[i], points[(i + 1) % points.size()]);
+    }
+  }
+  for (const auto& strip : proxy.strips) {
+    for (const auto& ring : strip) {
+      for (std::size_t i = 0; i < ring.size(); ++i) consider(ring[i], ring[(i + 1) % ring.size()]);
+    }
+  }
+  proxy.mass.finish();
+  if (proxy.mass.point) proxy.mass.centroid = proxy.box.isEmpty() ? Vec2::Zero() : Vec2(proxy.box.center());
+}
+
 }  // namespace
+
+bool Proxy2::in_mass(const Vec2& p) const {
+  if (inside(p)) return true;
+  for (const auto& strip : strips) {
+    if (in_strip(strip, p)) return true;
+  }
+  return false;
+}
+
+MassModel2 sample_mass(const Proxy2& proxy, double cell, const Vec2& lattice, int subsamples) {
+  std::vector<Vec2> points;
+  std::vector<double> weights;
+  Box2 box = proxy.box;
+  for (const auto& strip : proxy.strips)
+    for (const auto& ring : strip)
+      for (const Vec2& p : ring) box.extend(p);
+  if (box.isEmpty() || cell <= 0) return make_mass_model(std::vector<Vec2>{Vec2::Zero()}, {1.0});
+  // Cells [lattice + cell * (i, j), lattice + cell * (i + 1, j + 1)] covering the box.
+  const Vec2 first((box.min() - lattice).array() / cell);
+  const Vec2 origin = lattice + cell * Vec2(std::floor(first.x()), std::floor(first.y()));
+  const int nx = 1 + static_cast<int>(std::ceil((box.max().x() - origin.x()) / cell));
+  const int ny = 1 + static_cast<int>(std::ceil((box.max().y() - origin.y()) / cell));
+  const int k = std::max(1, subsamples);
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      Vec2 sum = Vec2::Zero();
+      int covered = 0;
+      for (int a = 0; a < k; ++a) {
+        for (int b = 0; b < k; ++b) {
+          const Vec2 p = origin + cell * Vec2(i + (a + 0.5) / k, j + (b + 0.5) / k);
+          if (proxy.in_mass(p)) {
+            sum += p;
+            ++covered;
+          }
+        }
+      }
+      if (covered > 0) {
+        points.push_back(k == 1 ? sum : Vec2(sum / covered));
+        weights.push_back(cell * cell * covered / (k * k));
+      }
+    }
+  }
+  if (points.empty()) return make_mass_model(std::vector<Vec2>{proxy.mass.centroid}, {1.0});
+  return make_mass_model(std::move(points), std::move(weights));
+}
 
 bool Proxy2::inside(const Vec2& p) const {
   if (regions.empty() || !box.contains(p)) return false;
@@ -57,21 +175,29 @@ Proxy2 make_proxy2(const Shape& shape, const ProxyOptions& options) {
     proxy.segment_end.push_back(Vec2::Zero());
     proxy.box = Box2(Vec2::Zero(), Vec2::Zero());
     proxy.segment_tree = BoxTree<2>::build({proxy.box});
-    proxy.mass = make_mass_model(std::vector<Vec2>{Vec2::Zero()}, {1.0});
+    proxy.mass.finish();  // a unit point mass
     return proxy;
   }
   const PlanarShape& planar = std::get<PlanarShape>(shape.geometry);
   const Box3 shape_box = bounding_box(shape);
   const double diagonal = shape_box.isEmpty() ? 0.0 : shape_box.diagonal().norm();
   const double tolerance = options.tolerance * diagonal;
+  std::vector<double> strip_half_widths;  // per polyline; 0 for rings of filled regions
   for (const Drawable2& part : planar.parts) {
     Proxy2::Region region;
     region.rule = part.fill_rule;
+    double half_width = options.curve_half_width * diagonal;
+    if (const auto stroke = part.style.find("stroke-width"); stroke != part.style.end()) {
+      const double width = std::atof(stroke->second.c_str());
+      if (width > 0 && std::isfinite(width)) half_width = 0.5 * width;
+    }
     for (const Path2& path : part.paths) {
       proxy.source_segments += path.segments.size();
       std::vector<Vec2> flat = flatten(path, std::max(tolerance / 4, diagonal * 1e-9));
       Proxy2::Polyline polyline{simplify(flat, path.closed, tolerance), path.closed && flat.size() >= 3};
-      if (part.filled() && polyline.closed) region.rings.push_back(static_cast<int>(proxy.polylines.size()));
+      const bool ring = part.filled() && polyline.closed;
+      if (ring) region.rings.push_back(static_cast<int>(proxy.polylines.size()));
+      strip_half_widths.push_back(ring ? 0.0 : half_width);
       proxy.polylines.push_back(std::move(polyline));
     }
     if (!region.rings.empty()) proxy.regions.push_back(std::move(region));
@@ -91,52 +217,7 @@ Proxy2 make_proxy2(const Shape& shape, const ProxyOptions& options) {
   }
   proxy.segment_tree = BoxTree<2>::build(boxes);
 
-  // Mass: midpoint rule on a square grid over the filled regions; outlines that bound no filled
-  // region (open curves, fill:none) count as strips one cell wide.
-  const double longest = proxy.box.isEmpty() ? 0.0 : proxy.box.sizes().maxCoeff();
-  std::vector<Vec2> points;
-  std::vector<double> weights;
-  if (longest > 0.0) {
-    const double h = longest / options.mass_resolution_2d;
-    if (!proxy.regions.empty()) {
-      const int nx = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes().x() / h)));
-      const int ny = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes().y() / h)));
-      const Vec2 origin = proxy.box.center() - 0.5 * h * Vec2(nx, ny);
-      for (int i = 0; i < nx; ++i) {
-        for (int j = 0; j < ny; ++j) {
-          const Vec2 p = origin + h * Vec2(i + 0.5, j + 0.5);
-          if (proxy.inside(p)) {
-            points.push_back(p);
-            weights.push_back(h * h);
-          }
-        }
-      }
-    }
-    std::vector<bool> in_region(proxy.polylines.size(), false);
-    for (const auto& region : proxy.regions)
-      for (int ring : region.rings) in_region[ring] = true;
-    const bool no_area = points.empty();  // filled regions thinner than a cell count as outlines
-    for (std::size_t k = 0; k < proxy.polylines.size(); ++k) {
-      if (in_region[k] && !no_area) continue;
-      const auto& polyline = proxy.polylines[k];
-      const std::size_t n = polyline.points.size();
-      const std::size_t count = polyline.closed ? n : n - 1;
-      for (std::size_t i = 0; i < count; ++i) {
-        const Vec2 a = polyline.points[i], b = polyline.points[(i + 1) % n];
-        const double length = (b - a).norm();
-        const int pieces = std::max(1, static_cast<int>(std::ceil(length / h)));
-        for (int s = 0; s < pieces; ++s) {
-          points.push_back(a + (s + 0.5) / pieces * (b - a));
-          weights.push_back(length / pieces * h);
-        }
-      }
-    }
-  }
-  if (points.empty()) {  // a degenerate shape: its box centre
-    points.push_back(proxy.box.isEmpty() ? Vec2::Zero() : Vec2(proxy.box.center()));
-    weights.push_back(1.0);
-  }
-  proxy.mass = make_mass_model(std::move(points), std::move(weights));
+  build_mass(proxy, strip_half_widths, diagonal, options);
   return proxy;
 }
 

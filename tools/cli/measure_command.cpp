@@ -107,7 +107,8 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
          << scene.shapes.size() << '\n'
          << "proxies:  " << stats.source_per_element << " -> " << stats.proxy_per_element << ' ' << unit
          << " per element (tolerance " << std::setprecision(4) << args.proxy_tolerance << " of the diagonal), "
-         << std::setprecision(0) << stats.mass_points_per_element << " mass points per element\n"
+         << std::setprecision(0) << stats.mass_per_element
+         << (scene.dimension == 2 ? " mass boundary edges" : " mass points") << " per element\n"
          << "pairs:    " << pairs.size() << (std::isfinite(args.range) ? " within range" : " (all)") << ", "
          << measurer->bins().axis_count() << " axis bins\n"
          << std::setprecision(3) << "time:     proxies " << proxy_seconds * 1e3 << " ms, measurements "

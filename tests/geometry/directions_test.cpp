@@ -1,0 +1,60 @@
+#include "libshapeproc/geometry/directions.hpp"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+namespace shapeproc::geometry {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 at_angle(double degrees) {
+  return Vec3(std::cos(degrees * kPi / 180), std::sin(degrees * kPi / 180), 0);
+}
+
+TEST(DirectionBins, PlanarAxes) {
+  const DirectionBins bins(2, 8);
+  EXPECT_EQ(bins.axis_count(), 4);
+  EXPECT_EQ(bins.axis_of(at_angle(0)), 0);
+  EXPECT_EQ(bins.axis_of(at_angle(22)), 0);
+  EXPECT_EQ(bins.axis_of(at_angle(23)), 1);
+  EXPECT_EQ(bins.axis_of(at_angle(90)), 2);
+  EXPECT_EQ(bins.axis_of(at_angle(135)), 3);
+  EXPECT_EQ(bins.axis_of(at_angle(180)), 0);
+  EXPECT_EQ(bins.axis_of(at_angle(-45)), 3);
+  for (double angle = -179; angle < 180; angle += 7.3) {
+    EXPECT_EQ(bins.axis_of(at_angle(angle)), bins.axis_of(-at_angle(angle))) << angle;
+  }
+  EXPECT_NEAR(bins.axis_direction(1).x(), std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(DirectionBins(2, 1).axis_count(), 1);
+  EXPECT_EQ(DirectionBins(2, 2).axis_of(at_angle(80)), 0);
+  EXPECT_THROW(DirectionBins(2, 3), std::invalid_argument);
+  EXPECT_THROW(DirectionBins(2, 0), std::invalid_argument);
+  EXPECT_THROW(DirectionBins(3, 8), std::invalid_argument);
+}
+
+TEST(DirectionBins, HealpixBasePixelsHaveEqualAreas) {
+  std::mt19937 rng(12);
+  std::normal_distribution<double> normal;
+  const int samples = 120000;
+  std::vector<int> counts(12, 0);
+  const DirectionBins bins(3, 12);
+  for (int s = 0; s < samples; ++s) {
+    const Vec3 u = Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+    const int pixel = healpix_base_pixel(u);
+    ASSERT_GE(pixel, 0);
+    ASSERT_LT(pixel, 12);
+    ++counts[pixel];
+    EXPECT_EQ(bins.axis_of(u), bins.axis_of(-u));
+  }
+  // Binomial(samples, 1/12): 5 standard errors.
+  const double expected = samples / 12.0, se = std::sqrt(samples * (1.0 / 12) * (11.0 / 12));
+  for (int p = 0; p < 12; ++p) EXPECT_NEAR(counts[p], expected, 5 * se) << p;
+  for (int p = 0; p < 12; ++p) EXPECT_EQ(healpix_base_pixel(healpix_base_pixel_centre(p)), p);
+  EXPECT_EQ(bins.axis_count(), 6);
+}
+
+}  // namespace
+}  // namespace shapeproc::geometry
