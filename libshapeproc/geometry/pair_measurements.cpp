@@ -91,7 +91,7 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       const Proxy3& p = proxies3_.back();
       source[s] = p.source_triangles;
       simplified[s] = p.triangles.size();
-      mass[s] = p.mass.points.size();
+      mass[s] = p.closed ? p.solid.triangles.size() : p.mass.points.size();
       // Farthest corner of the box from the reference position (the origin).
       double r = 0.0;
       for (int corner = 0; corner < 8; ++corner) r = std::max(r, p.box.corner(static_cast<Box3::CornerType>(corner)).norm());
@@ -189,8 +189,14 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
     force.head<2>() = f;
     scale = proxies2_[a].mass.area * proxies2_[b].mass.area;
   } else {
-    force = gravitation_force(proxies3_[a].mass, proxies3_[b].mass, offset, options_.gravitation_theta);
-    scale = proxies3_[a].mass.total_mass() * proxies3_[b].mass.total_mass();
+    const Proxy3& pa = proxies3_[a];
+    const Proxy3& pb = proxies3_[b];
+    if (pa.closed && pb.closed) {
+      force = gravitation_force(pa.solid, pb.solid, offset);
+    } else {
+      force = gravitation_force(pa.mass, pb.mass, offset, options_.gravitation_theta);
+    }
+    scale = pa.mass.total_mass() * pb.mass.total_mass();
   }
   const double norm = force.norm();
   // A force that cancels (a dot centred in a ring) has no direction: fall back to the centroids.

@@ -22,7 +22,7 @@ struct ProxyOptions {
   // Mass of curves (2D outlines that bound no filled region): a strip of this half-width, as a
   // fraction of the element's diagonal, unless the drawable has a stroke-width (half of it).
   double curve_half_width = 0.005;
-  // Mass cubature (3D): grid cells along the longest side.
+  // Mass cubature of open meshes (3D): grid cells along the longest side.
   int mass_resolution_3d = 16;
 };
 
@@ -68,12 +68,17 @@ struct Proxy3 {
   bool point = false;  // a point element: vertices[0] only
   BoxTree<3> triangle_tree;
   Box3 box;
-  MassModel3 mass;
+  MassSurface3 solid;  // closed meshes: the solid's mass, through its boundary
+  MassModel3 mass;     // open meshes and points: cubature points (a shell one cell thick)
   std::size_t source_triangles = 0;
 
   // Whether p lies inside the solid (closed meshes only): generalized winding number > 1/2.
   bool inside(const Vec3& p) const;
 };
+
+// Midpoint samples of a closed 3D proxy's solid on a cubic lattice of spacing `cell` (cell
+// centres inside the mesh): a dense, independent reference for tests.
+MassModel3 sample_mass(const Proxy3& proxy, double cell);
 
 // `shape` must be a point or planar shape (local coordinates).
 Proxy2 make_proxy2(const Shape& shape, const ProxyOptions& options);

@@ -121,23 +121,15 @@ Proxy3 make_proxy3(const Shape& shape, const ProxyOptions& options) {
   }
   proxy.triangle_tree = BoxTree<3>::build(boxes);
 
-  // Mass: midpoint rule on a cubic grid inside closed meshes; open surfaces as shells one cell thick.
+  // Mass: closed meshes are solids, integrated through their boundary (region_gravitation.hpp);
+  // open surfaces are shells one cell thick, sampled at triangle points.
   std::vector<Vec3> points;
   std::vector<double> weights;
   const double h = proxy.box.sizes().maxCoeff() / options.mass_resolution_3d;
-  if (proxy.closed && h > 0) {
-    Eigen::Vector3i n;
-    for (int axis = 0; axis < 3; ++axis) n[axis] = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes()[axis] / h)));
-    const Vec3 origin = proxy.box.center() - 0.5 * h * n.cast<double>();
-    for (int i = 0; i < n.x(); ++i)
-      for (int j = 0; j < n.y(); ++j)
-        for (int k = 0; k < n.z(); ++k) {
-          const Vec3 p = origin + h * Vec3(i + 0.5, j + 0.5, k + 0.5);
-          if (proxy.inside(p)) {
-            points.push_back(p);
-            weights.push_back(h * h * h);
-          }
-        }
+  if (proxy.closed) {
+    proxy.solid = MassSurface3::from_closed_mesh(proxy.vertices, proxy.triangles);
+    proxy.mass = make_mass_model(std::vector<Vec3>{proxy.solid.centroid}, {proxy.solid.volume});
+    return proxy;
   }
   if (points.empty()) {
     for (const auto& t : proxy.triangles) {
@@ -163,6 +155,25 @@ Proxy3 make_proxy3(const Shape& shape, const ProxyOptions& options) {
   }
   proxy.mass = make_mass_model(std::move(points), std::move(weights));
   return proxy;
+}
+
+MassModel3 sample_mass(const Proxy3& proxy, double cell) {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  Eigen::Vector3i n;
+  for (int axis = 0; axis < 3; ++axis) n[axis] = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes()[axis] / cell)));
+  const Vec3 origin = proxy.box.center() - 0.5 * cell * n.cast<double>();
+  for (int i = 0; i < n.x(); ++i)
+    for (int j = 0; j < n.y(); ++j)
+      for (int k = 0; k < n.z(); ++k) {
+        const Vec3 p = origin + cell * Vec3(i + 0.5, j + 0.5, k + 0.5);
+        if (proxy.inside(p)) {
+          points.push_back(p);
+          weights.push_back(cell * cell * cell);
+        }
+      }
+  if (points.empty()) return make_mass_model(std::vector<Vec3>{proxy.box.center()}, {1.0});
+  return make_mass_model(std::move(points), std::move(weights));
 }
 
 Shape proxy_as_shape(const Proxy3& proxy) {

@@ -1,5 +1,7 @@
 #include "libshapeproc/geometry/region_gravitation.hpp"
 
+#include "libshapeproc/geometry/gravitation.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -73,6 +75,9 @@ void MassBoundary2::add_edge(const Vec2& a, const Vec2& b, const Vec2& outward_n
   const double c = a.dot(outward_normal);  // x·n is constant along the edge
   area += 0.5 * c * length;                // ∫_A 1 = ½ ∮ x·n
   centroid += (c * length / 3.0) * (0.5 * (a + b));  // ∫_A x = ⅓ ∮ x (x·n)
+  // ∫_A x x^T = ¼ ∮ x x^T (x·n), the edge integral by Simpson's rule (exact for quadratics).
+  const Vec2 m = 0.5 * (a + b);
+  moments += (c * length / 24.0) * (a * a.transpose() + 4.0 * m * m.transpose() + b * b.transpose());
 }
 
 void MassBoundary2::finish() {
@@ -82,7 +87,10 @@ void MassBoundary2::finish() {
     radius = 0.0;
     return;
   }
-  if (area > 0) centroid /= area;
+  if (area > 0) {
+    centroid /= area;
+    moments -= area * centroid * centroid.transpose();  // about the centroid
+  }
   radius = 0.0;
   for (std::size_t i = 0; i < start.size(); ++i) {
     radius = std::max({radius, (start[i] - centroid).norm(), (end[i] - centroid).norm()});
@@ -93,8 +101,8 @@ Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec
   const Vec2 between = b.centroid + offset - a.centroid;
   const double distance = between.norm();
   if (a.point && b.point) return distance > 0 ? Vec2(between / (distance * distance * distance)) : Vec2::Zero();
-  if (distance > 20.0 * (a.radius + b.radius) && distance > 0) {
-    return (a.area * b.area / (distance * distance * distance)) * between;
+  if (distance > 5.0 * (a.radius + b.radius) && distance > 0) {
+    return far_field_force<2>(a.area, a.moments, b.area, b.moments, between);
   }
   if (a.point || b.point) {
     // A unit point mass p and a region R: ∫_R (y − p)/|y − p|^3 dy = −∮_∂R n / |y − p| ds.
@@ -134,8 +142,16 @@ Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec
     for (std::size_t j = 0; j < nb; ++j) {
       if (b_length[j] == 0) continue;
       const Vec2 mid_j = b_start[j] + 0.5 * b_length[j] * b_unit[j];
-      const double ratio = (mid_j - mid_i).norm() / (length_i + b_length[j]);
-      const GaussRule& g = ratio > 4.0 ? kRules[0] : ratio > 1.5 ? kRules[1] : ratio > 0.7 ? kRules[2] : kRules[3];
+      const Vec2 between_mids = mid_j - mid_i;
+      const double gap = between_mids.norm();
+      const double ratio = gap / (length_i + b_length[j]);
+      if (ratio > 4.0) {
+        // Far apart: midpoint rule for both integrals, h_j(m_i) ℓ_j / |m_j − m_i| (relative error
+        // below (1/4)^2 / 24).
+        integral += between_mids.dot(b.normal[j]) * b_length[j] / gap;
+        continue;
+      }
+      const GaussRule& g = ratio > 1.5 ? kRules[1] : ratio > 0.7 ? kRules[2] : kRules[3];
       double sum = 0.0;
       for (int k = 0; k < g.n; ++k) {
         sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b_start[j], b_unit[j], b_length[j], b.normal[j]);
@@ -143,6 +159,115 @@ Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec
       integral += sum;
     }
     total += (integral * length_i) * a.normal[i];
+  }
+  return total;
+}
+
+namespace {
+
+// Symmetric quadrature points of a triangle with equal weights: 1 (centroid), 3 (degree 2), or
+// 3 on each of the four midpoint sub-triangles (12).
+int triangle_points(const std::array<Vec3, 3>& t, int level, std::array<Vec3, 12>& out) {
+  auto three = [](const Vec3& a, const Vec3& b, const Vec3& c, Vec3* p) {
+    p[0] = (2.0 / 3) * a + (1.0 / 6) * (b + c);
+    p[1] = (2.0 / 3) * b + (1.0 / 6) * (a + c);
+    p[2] = (2.0 / 3) * c + (1.0 / 6) * (a + b);
+  };
+  if (level == 0) {
+    out[0] = (t[0] + t[1] + t[2]) / 3.0;
+    return 1;
+  }
+  if (level == 1) {
+    three(t[0], t[1], t[2], out.data());
+    return 3;
+  }
+  const Vec3 ab = 0.5 * (t[0] + t[1]), bc = 0.5 * (t[1] + t[2]), ca = 0.5 * (t[2] + t[0]);
+  three(t[0], ab, ca, out.data());
+  three(ab, t[1], bc, out.data() + 3);
+  three(ca, bc, t[2], out.data() + 6);
+  three(ab, bc, ca, out.data() + 9);
+  return 12;
+}
+
+}  // namespace
+
+MassSurface3 MassSurface3::from_closed_mesh(const std::vector<Vec3>& vertices,
+                                           const std::vector<std::array<int, 3>>& triangles) {
+  MassSurface3 s;
+  Vec3 first = Vec3::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (const auto& t : triangles) {
+    const Vec3 &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
+    const Vec3 cross = (b - a).cross(c - a);
+    const double twice_area = cross.norm();
+    if (twice_area == 0.0) continue;
+    const Vec3 n = cross / twice_area;
+    const double area = 0.5 * twice_area;
+    const double h = a.dot(n);  // x·n is constant on the triangle
+    const Vec3 sum = a + b + c;
+    s.volume += h * area / 3.0;                   // ∫ 1 = ⅓ ∮ x·n
+    first += (h * area / 3.0 / 4.0) * sum;        // ∫ x = ¼ ∮ x (x·n); ∫_T x = A (a+b+c)/3
+    // ∫ x x^T = ⅕ ∮ x x^T (x·n); ∫_T x x^T = A/12 (Σ v v^T + S S^T)
+    second += (h * area / 12.0 / 5.0) *
+              (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
+    s.triangles.push_back({a, b, c});
+    s.normal.push_back(n);
+    s.area.push_back(area);
+  }
+  if (s.volume < 0) {  // inward orientation: flip
+    s.volume = -s.volume;
+    first = -first;
+    second = -second;
+    for (auto& t : s.triangles) std::swap(t[1], t[2]);
+    for (auto& n : s.normal) n = -n;
+  }
+  if (s.volume > 0) {
+    s.centroid = first / s.volume;
+    s.moments = second - s.volume * s.centroid * s.centroid.transpose();
+  }
+  for (const auto& t : s.triangles)
+    for (const Vec3& v : t) s.radius = std::max(s.radius, (v - s.centroid).norm());
+  return s;
+}
+
+Vec3 gravitation_force(const MassSurface3& a, const MassSurface3& b, const Vec3& offset) {
+  const Vec3 between = b.centroid + offset - a.centroid;
+  const double distance = between.norm();
+  if (distance > 5.0 * (a.radius + b.radius) && distance > 0) {
+    return far_field_force<3>(a.volume, a.moments, b.volume, b.moments, between);
+  }
+  std::vector<Vec3> b_centre(b.triangles.size());
+  std::vector<double> b_size(b.triangles.size());
+  for (std::size_t j = 0; j < b.triangles.size(); ++j) {
+    const auto& t = b.triangles[j];
+    b_centre[j] = (t[0] + t[1] + t[2]) / 3.0 + offset;
+    b_size[j] = std::max({(t[0] - t[1]).norm(), (t[1] - t[2]).norm(), (t[2] - t[0]).norm()});
+  }
+  Vec3 total = Vec3::Zero();
+  std::array<Vec3, 12> pa, pb;
+  for (std::size_t i = 0; i < a.triangles.size(); ++i) {
+    const auto& ti = a.triangles[i];
+    const Vec3 ci = (ti[0] + ti[1] + ti[2]) / 3.0;
+    const double size_i = std::max({(ti[0] - ti[1]).norm(), (ti[1] - ti[2]).norm(), (ti[2] - ti[0]).norm()});
+    double integral = 0.0;
+    for (std::size_t j = 0; j < b.triangles.size(); ++j) {
+      const double ratio = (b_centre[j] - ci).norm() / (size_i + b_size[j]);
+      const int level = ratio > 2.0 ? 0 : ratio > 0.5 ? 1 : 2;
+      const int na = triangle_points(ti, level, pa);
+      std::array<Vec3, 3> tj = b.triangles[j];
+      for (Vec3& v : tj) v += offset;
+      const int nb = triangle_points(tj, level, pb);
+      double sum = 0.0;
+      for (int p = 0; p < na; ++p) {
+        for (int q = 0; q < nb; ++q) {
+          const Vec3 r = pb[q] - pa[p];
+          const double length = r.norm();
+          if (length > 0) sum += r.dot(b.normal[j]) / length;
+        }
+      }
+      integral += sum * b.area[j] / (na * nb);
+    }
+    total += (0.5 * integral * a.area[i]) * a.normal[i];
   }
   return total;
 }

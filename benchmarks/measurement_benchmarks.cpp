@@ -1,0 +1,123 @@
+// Pair measurements: d and o between two elements, and all pairs of a 1,000-element exemplar.
+// Run: ./build/benchmarks/measurement_benchmarks
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "tests/geometry/measurement_fixtures.hpp"
+
+namespace {
+
+using namespace shapeproc::geometry;
+
+// Two regular n-gons of radius 1, 0.2 apart, one rotated by half a step.
+Scene two_polygons(int n) {
+  std::vector<Vec2> a, b;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * 3.14159265358979323846 * k / n;
+    a.emplace_back(std::cos(angle), std::sin(angle));
+    b.emplace_back(std::cos(angle + 3.14159265358979323846 / n), std::sin(angle + 3.14159265358979323846 / n));
+  }
+  return fixtures::scene_of({fixtures::planar({fixtures::polygon(a)}), fixtures::planar({fixtures::polygon(b)})},
+                            {{0, 0}, {2.1, 0.4}});
+}
+
+MeasurementOptions exact_proxies() {
+  MeasurementOptions options;
+  options.proxy.tolerance = 0.0;  // keep every segment: the proxy is the polygon itself
+  return options;
+}
+
+void BM_Distance2D(benchmark::State& state) {
+  const Scene scene = two_polygons(static_cast<int>(state.range(0)));
+  const PairMeasurer measurer(scene, exact_proxies());
+  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
+  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+}
+BENCHMARK(BM_Distance2D)->Arg(8)->Arg(50)->Arg(500);
+
+void BM_Direction2D(benchmark::State& state) {
+  const Scene scene = two_polygons(static_cast<int>(state.range(0)));
+  const PairMeasurer measurer(scene, exact_proxies());
+  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+}
+BENCHMARK(BM_Direction2D)->Arg(8)->Arg(50)->Arg(500);
+
+// UV spheres of radius 1, 0.2 apart: 50 triangles (5 x 6) or 500 (25 x 11).
+Scene two_spheres(int triangles) {
+  const TriangleMesh mesh = triangles <= 50 ? fixtures::uv_sphere(1, 5, 6) : fixtures::uv_sphere(1, 25, 11);
+  return fixtures::scene_of_meshes({mesh, mesh}, {{0, 0, 0}, {2.1, 0.3, 0.2}});
+}
+
+void BM_Distance3D(benchmark::State& state) {
+  const Scene scene = two_spheres(static_cast<int>(state.range(0)));
+  MeasurementOptions options = exact_proxies();
+  options.directions = 12;
+  const PairMeasurer measurer(scene, options);
+  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
+  state.counters["triangles"] = static_cast<double>(measurer.proxies3()[0].triangles.size());
+}
+BENCHMARK(BM_Distance3D)->Arg(50)->Arg(500);
+
+void BM_Direction3D(benchmark::State& state) {
+  const Scene scene = two_spheres(static_cast<int>(state.range(0)));
+  MeasurementOptions options = exact_proxies();
+  options.directions = 12;
+  const PairMeasurer measurer(scene, options);
+  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+  state.counters["triangles"] = static_cast<double>(measurer.proxies3()[0].triangles.size());
+}
+BENCHMARK(BM_Direction3D)->Arg(50)->Arg(500);
+
+// 1,000 random 12-gons (radius 0.4 to 1) at density about 0.25 per unit area, each its own shape.
+Scene thousand_elements() {
+  std::mt19937 rng(1000);
+  std::uniform_real_distribution<double> position(0, 63);
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  for (int i = 0; i < 1000; ++i) {
+    shapes.push_back(fixtures::random_polygon(rng, 12, 1.0));
+    positions.emplace_back(position(rng), position(rng));
+  }
+  return fixtures::scene_of(shapes, positions, Box3(Vec3(0, 0, 0), Vec3(63, 63, 0)));
+}
+
+void BM_AllPairs1000(benchmark::State& state) {
+  const Scene scene = thousand_elements();
+  MeasurementOptions options;
+  options.distance = state.range(0) == 0 ? DistanceKind::shape : DistanceKind::shape;
+  const PairMeasurer measurer(scene, options);
+  const double range = state.range(0) == 0 ? PairMeasurer::kNoCutoff : static_cast<double>(state.range(0));
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    pairs = measurer.all_pairs(scene.elements, range).size();
+    benchmark::DoNotOptimize(pairs);
+  }
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+// 0: every pair (d and o for all 499,500); 3: pairs closer than 3 units (about 2 radii).
+BENCHMARK(BM_AllPairs1000)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
+
+void BM_AllDistances1000(benchmark::State& state) {
+  const Scene scene = thousand_elements();
+  const PairMeasurer measurer(scene, MeasurementOptions{});
+  for (auto _ : state) {
+    double sum = 0;
+    for (std::size_t i = 0; i < scene.elements.size(); ++i)
+      for (std::size_t j = i + 1; j < scene.elements.size(); ++j)
+        sum += measurer.distance(scene.elements[i].shape, scene.elements[j].shape,
+                                 scene.elements[j].position - scene.elements[i].position);
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK(BM_AllDistances1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
