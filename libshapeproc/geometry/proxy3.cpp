@@ -4,6 +4,7 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModHausdorffT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
@@ -43,9 +44,11 @@ bool mesh_is_closed(const std::vector<std::array<int, 3>>& triangles) {
   return !triangles.empty();
 }
 
-// Quadric-error decimation: collapses edges while the quadric error stays below tolerance^2 and
-// no face normal flips by more than 60 degrees. Topology-preserving collapses only, so closed
-// meshes stay closed.
+// Error-bounded decimation: edge collapses ordered by quadric error (below tolerance^2), each
+// allowed only while every removed vertex stays within `tolerance` of the simplified surface
+// (OpenMesh's Hausdorff module: the quadric alone lets thin parts such as legs drift by many times
+// the tolerance) and no face normal flips by more than 60 degrees. Topology-preserving collapses
+// only, so closed meshes stay closed.
 void decimate(TriangleMesh& mesh, double tolerance) {
   if (tolerance <= 0.0 || mesh.triangles.size() <= 4) return;
   OmMesh om;
@@ -60,11 +63,15 @@ void decimate(TriangleMesh& mesh, double tolerance) {
   using Decimater = OpenMesh::Decimater::DecimaterT<OmMesh>;
   using Quadric = OpenMesh::Decimater::ModQuadricT<OmMesh>::Handle;
   using NormalFlipping = OpenMesh::Decimater::ModNormalFlippingT<OmMesh>::Handle;
+  using Hausdorff = OpenMesh::Decimater::ModHausdorffT<OmMesh>::Handle;
   Decimater decimater(om);
   Quadric quadric;
   NormalFlipping flipping;
+  Hausdorff hausdorff;
   decimater.add(quadric);
   decimater.add(flipping);
+  decimater.add(hausdorff);
+  decimater.module(hausdorff).set_tolerance(tolerance);
   decimater.module(quadric).set_max_err(tolerance * tolerance, false);
   decimater.module(flipping).set_max_normal_deviation(60.0);
   if (!decimater.initialize()) return;

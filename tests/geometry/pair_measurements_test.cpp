@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/geometry/segment_distance.hpp"
+#include "libshapeproc/geometry/triangle_distance.hpp"
 #include "tests/geometry/measurement_fixtures.hpp"
 
 namespace shapeproc::geometry {
@@ -284,6 +285,30 @@ TEST(Proxies, SimplificationKeepsClosedRingsAndHoles) {
   // Coarser tolerance, fewer segments.
   options.tolerance = 0.05;
   EXPECT_LT(make_proxy2(r, options).segment_count(), proxy.segment_count());
+}
+
+TEST(Proxies, DecimationIsErrorBoundedAndKeepsMeshesClosed) {
+  const Shape sphere{MeshShape{uv_sphere(1.0, 48, 24)}, ""};
+  const auto& mesh = std::get<MeshShape>(sphere.geometry).mesh;
+  const double diagonal = bounding_box(mesh).diagonal().norm();
+  std::size_t previous = mesh.triangles.size() + 1;
+  for (const double tolerance : {0.002, 0.01, 0.03}) {
+    ProxyOptions options;
+    options.tolerance = tolerance;
+    const Proxy3 proxy = make_proxy3(sphere, options);
+    EXPECT_TRUE(proxy.closed);
+    EXPECT_LT(proxy.triangles.size(), previous);
+    previous = proxy.triangles.size();
+    double worst = 0.0;
+    for (const Vec3& v : mesh.vertices) {
+      double nearest = INFINITY;
+      for (const auto& t : proxy.triangles) {
+        nearest = std::min(nearest, point_triangle_distance(v, proxy.vertices[t[0]], proxy.vertices[t[1]], proxy.vertices[t[2]]));
+      }
+      worst = std::max(worst, nearest);
+    }
+    EXPECT_LE(worst, tolerance * diagonal * 1.001) << tolerance;
+  }
 }
 
 }  // namespace
