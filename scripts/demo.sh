@@ -12,4 +12,6 @@ exemplar=data/svg/two-kinds.svg
 ./build/tools/shapeproc convert "$exemplar" --category-by fill -o out/two-kinds.svg
 ./build/tools/shapeproc convert "$exemplar" --category-by fill -o out/two-kinds.csv
 ./build/tools/shapeproc convert data/mesh/pebbles.obj -o out/pebbles.ply
+./build/tools/shapeproc measure "$exemplar" --category-by fill --range 20 -o out/two-kinds-pairs.csv \
+  --proxy-out out/two-kinds-proxies.svg
 echo "demo outputs are in out/"
