@@ -165,8 +165,8 @@ TEST(Gravitation, ExactlyAntisymmetricAndTranslationInvariant) {
       EXPECT_EQ(ba.direction, -ab.direction);  // bit for bit
       EXPECT_EQ(ab.axis, ba.axis);
       const Measurement moved_ab = moved_measurer.measure(translated.elements[i], translated.elements[j]);
-      // Equal up to the cubature's sensitivity to rounding in the local coordinates.
-      EXPECT_LT(angle_between(ab.direction, moved_ab.direction), 0.1);
+      // Equal up to rounding in the shapes' local coordinates.
+      EXPECT_LT(angle_between(ab.direction, moved_ab.direction), 1e-6);
       EXPECT_NEAR(ab.distance, moved_ab.distance, 1e-9);
     }
   }
