@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   cmake g++ ninja-build ccache
   libeigen3-dev libboost-dev libcgal-dev libopenmesh-dev libpugixml-dev libsvgpp-dev
+  libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )

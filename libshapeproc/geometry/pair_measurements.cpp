@@ -206,6 +206,59 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
   return force / norm;
 }
 
+std::pair<double, double> PairMeasurer::distance_bounds(int a, int b, const Vec3& offset) const {
+  if (options_.distance != DistanceKind::shape) {
+    const double d = distance(a, b, offset);
+    return {d, d};
+  }
+  const double norm = offset.norm();
+  const Vec3 unit = norm > 0 ? Vec3(offset / norm) : Vec3(Vec3::UnitX());
+  if (dimension_ == 2) {
+    const Proxy2& pa = proxies2_[a];
+    const Proxy2& pb = proxies2_[b];
+    const Vec2 t = offset.head<2>(), u = unit.head<2>();
+    const double lo = std::sqrt(pa.box.squaredExteriorDistance(pb.box.translated(t)));
+    Vec2 far_a = pa.segment_start.front(), near_b = pb.segment_start.front();
+    for (const Vec2& p : pa.segment_start) if (p.dot(u) > far_a.dot(u)) far_a = p;
+    for (const Vec2& p : pb.segment_start) if (p.dot(u) < near_b.dot(u)) near_b = p;
+    return {lo, std::max(lo, (near_b + t - far_a).norm())};
+  }
+  const Proxy3& pa = proxies3_[a];
+  const Proxy3& pb = proxies3_[b];
+  const double lo = std::sqrt(pa.box.squaredExteriorDistance(pb.box.translated(offset)));
+  Vec3 far_a = pa.vertices.front(), near_b = pb.vertices.front();
+  for (const Vec3& p : pa.vertices) if (p.dot(unit) > far_a.dot(unit)) far_a = p;
+  for (const Vec3& p : pb.vertices) if (p.dot(unit) < near_b.dot(unit)) near_b = p;
+  return {lo, std::max(lo, (near_b + offset - far_a).norm())};
+}
+
+int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack) const {
+  if (dimension_ != 2) return -1;
+  if (bins_.directions() == 1) return 0;
+  const Box2& box_a = proxies2_[a].box;
+  const Box2& box_b = proxies2_[b].box;
+  // Difference box: every y − x with x in box_a and y in box_b + offset.
+  const Vec2 low = box_b.min() + offset.head<2>() - box_a.max() - Vec2::Constant(slack);
+  const Vec2 high = box_b.max() + offset.head<2>() - box_a.min() + Vec2::Constant(slack);
+  if (low.x() <= 0 && high.x() >= 0 && low.y() <= 0 && high.y() >= 0) return -1;  // holds the origin
+  const Vec2 centre = 0.5 * (low + high);
+  const double middle = std::atan2(centre.y(), centre.x());
+  constexpr double kPi = 3.14159265358979323846;
+  double lowest = 0.0, highest = 0.0;
+  for (const Vec2& corner : {low, high, Vec2(low.x(), high.y()), Vec2(high.x(), low.y())}) {
+    double delta = std::atan2(corner.y(), corner.x()) - middle;
+    if (delta > kPi) delta -= 2 * kPi;
+    if (delta < -kPi) delta += 2 * kPi;
+    lowest = std::min(lowest, delta);
+    highest = std::max(highest, delta);
+  }
+  const double step = 2 * kPi / bins_.directions();
+  const long first = std::lround((middle + lowest) / step), last = std::lround((middle + highest) / step);
+  if (first != last) return -1;
+  const long half = bins_.directions() / 2;
+  return static_cast<int>(((first % half) + half) % half);
+}
+
 Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
   // Canonical order, so that swapping the pair negates the result bit for bit.
   if (a > b || (a == b && lexicographically_negative(offset))) return -direction(b, a, -offset);
@@ -216,6 +269,14 @@ Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
 }
 
 Measurement PairMeasurer::measure(const Element& first, const Element& second, double cutoff) const {
+  Measurement m = measure_distance(first, second, cutoff);
+  if (m.distance >= cutoff) return m;
+  m.direction = direction(first.shape, second.shape, m.offset);
+  m.axis = bins_.axis_of(m.direction);
+  return m;
+}
+
+Measurement PairMeasurer::measure_distance(const Element& first, const Element& second, double cutoff) const {
   Measurement m;
   const Vec3 base = second.position - first.position;
   m.offset = base;
@@ -239,9 +300,6 @@ Measurement PairMeasurer::measure(const Element& first, const Element& second, d
           }
         }
   }
-  if (m.distance >= cutoff) return m;
-  m.direction = direction(first.shape, second.shape, m.offset);
-  m.axis = bins_.axis_of(m.direction);
   return m;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "libshapeproc/geometry/directions.hpp"
@@ -69,6 +70,22 @@ class PairMeasurer {
   // distance being measured. With a cutoff, returns distance = cutoff (and no direction) when
   // d >= cutoff.
   Measurement measure(const Element& first, const Element& second, double cutoff = kNoCutoff) const;
+  // The distance part of measure(): distance and the image offset, no direction (direction and
+  // axis left at their defaults). Callers that need the direction only for some distances use
+  // this, then direction(first.shape, second.shape, offset).
+  Measurement measure_distance(const Element& first, const Element& second, double cutoff = kNoCutoff) const;
+
+  // Cheap bounds lo <= d(a, b, offset) <= hi for the shape distance (no periodic images): lo from
+  // the proxies' boxes, hi between the two proxies' extreme vertices along the offset.
+  std::pair<double, double> distance_bounds(int a, int b, const Vec3& offset) const;
+
+  // The axis bin of direction(a, b, offset) when the shapes' boxes alone decide it, else -1.
+  // Both direction kinds lie in the cone of vectors y − x from a point x of a's proxy box to a
+  // point y of b's (moved by `offset`); when that cone fits in one direction sector (2D), the
+  // axis is known without computing the direction. With `slack`, the answer holds for every
+  // offset within `slack` of the given one (the difference box is grown by it). 3D always
+  // returns -1.
+  int axis_from_boxes(int a, int b, const Vec3& offset, double slack = 0.0) const;
 
   // Every unordered pair with d < range (all pairs for an infinite range), ordered by (i, j).
   std::vector<PairRecord> all_pairs(const std::vector<Element>& elements, double range = kNoCutoff) const;

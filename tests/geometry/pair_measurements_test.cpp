@@ -313,3 +313,38 @@ TEST(Proxies, DecimationIsErrorBoundedAndKeepsMeshesClosed) {
 
 }  // namespace
 }  // namespace shapeproc::geometry
+
+namespace shapeproc::geometry {
+namespace {
+
+TEST(AxisFromBoxes, AgreesWithTheDirectionWheneverItDecides) {
+  std::mt19937 rng(77);
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  std::uniform_real_distribution<double> position(0, 40);
+  for (int i = 0; i < 30; ++i) {
+    shapes.push_back(fixtures::random_polygon(rng, 9, 2.0));
+    positions.emplace_back(position(rng), position(rng));
+  }
+  const Scene scene = fixtures::scene_of(shapes, positions);
+  for (const DirectionKind kind : {DirectionKind::gravitation, DirectionKind::centroid}) {
+    MeasurementOptions options;
+    options.direction = kind;
+    const PairMeasurer measurer(scene, options);
+    int decided = 0;
+    for (int i = 0; i < 30; ++i) {
+      for (int j = 0; j < 30; ++j) {
+        if (i == j) continue;
+        const Vec3 offset = scene.elements[j].position - scene.elements[i].position;
+        const int axis = measurer.axis_from_boxes(i, j, offset);
+        if (axis < 0) continue;
+        ++decided;
+        EXPECT_EQ(axis, measurer.bins().axis_of(measurer.direction(i, j, offset)));
+      }
+    }
+    EXPECT_GT(decided, 300);  // most of the 870 ordered pairs are decided by their boxes
+  }
+}
+
+}  // namespace
+}  // namespace shapeproc::geometry

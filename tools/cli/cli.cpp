@@ -35,6 +35,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add_info_command(app, action);
   add_convert_command(app, action, arguments);
   add_measure_command(app, action, arguments);
+  add_fit_command(app, action, arguments);
+  add_show_command(app, action);
 
   // CLI11 only says "a subcommand is required" for a misspelt one: name it.
   const std::vector<CLI::App*> subcommands = app.get_subcommands({});

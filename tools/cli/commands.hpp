@@ -15,6 +15,8 @@ using Action = std::function<int(std::ostream& out)>;
 
 void add_info_command(CLI::App& app, Action& action);
 void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_show_command(CLI::App& app, Action& action);
 void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 
 }  // namespace shapeproc::cli

@@ -1,0 +1,58 @@
+// Fitting the shape process to an exemplar (paper §6.1–6.2): thresholds from quantiles of the
+// directional distance distributions, then β and γ by maximum log pseudo-likelihood.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::fit {
+
+// Edge treatment (math note): none (neighbours and quadrature inside W, every data point counts),
+// periodic (W is a torus), border (only data points and quadrature locations at least R inside W
+// contribute; their neighbours anywhere in W count).
+enum class EdgeTreatment { none, periodic, border };
+
+struct FitOptions {
+  int directions = 0;  // canonical directions; 0 = 8 in 2D, 12 in 3D
+  geometry::DistanceKind distance = geometry::DistanceKind::shape;
+  geometry::DirectionKind direction = geometry::DirectionKind::gravitation;
+  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+  // Quantile orders q_0 < q_1 < … of the thresholds, or explicit thresholds (then the same for
+  // every pair and axis; quantiles are ignored).
+  std::vector<double> quantiles = {0.0, 0.1, 0.2};
+  std::vector<double> thresholds;
+  EdgeTreatment edge = EdgeTreatment::none;
+  // Quadrature: dummy locations on a grid of this many cells along the window's longest side
+  // (0: the default, see docs/fit.md), each crossed with `shapes_per_location` shapes of every
+  // category taken in rotation (0: all shapes of the category).
+  int quadrature = 0;
+  int shapes_per_location = 0;
+  // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
+  // pairs pooled over all axes.
+  int min_pairs_per_axis = 10;
+};
+
+struct FitResult {
+  model::ShapeProcessModel model;
+  double log_pseudo_likelihood = 0.0;
+  int data_points = 0;        // data points in the LPL's sum
+  int quadrature_points = 0;  // dummy and data points in the quadrature (λ > 0)
+  int quadrature_cells = 0;
+  std::vector<std::string> notes;  // fallbacks and special cases, one sentence each
+  struct {
+    double proxies = 0, measurements = 0, quadrature = 0, optimisation = 0;
+  } seconds;
+};
+
+// Fits the model to `exemplar`. The model's shape space is the exemplar's shapes (empty for
+// point patterns). Throws std::invalid_argument on bad options, and on exemplars that cannot be
+// fitted (no element, thresholds below an observed distance, a border edge that leaves no
+// window), with a message for the user.
+FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& options);
+
+const char* to_string(EdgeTreatment edge);
+
+}  // namespace shapeproc::fit

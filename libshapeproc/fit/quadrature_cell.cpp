@@ -1,0 +1,173 @@
+#include "libshapeproc/fit/quadrature_cell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shapeproc::fit {
+
+using geometry::Vec3;
+using model::Interaction;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cell_radius(int dimension, double measure) {
+  return dimension == 2 ? std::sqrt(measure / kPi) : std::cbrt(3.0 * measure / (4.0 * kPi));
+}
+
+// A place where the statistics change inside the cell: with probability `fraction` the
+// neighbour's band is `other_band` (on `other_axis`) instead of the centre's.
+struct Cut {
+  int neighbour;  // index into the neighbour list
+  double fraction;
+  int other_band, other_axis;
+};
+
+struct Neighbour {
+  int category;
+  int band, axis;
+};
+
+}  // namespace
+
+double cut_fraction(int dimension, double cell_measure, double x) {
+  const double r = cell_radius(dimension, cell_measure);
+  if (x >= r) return 0.0;
+  x = std::max(0.0, x);
+  if (dimension == 2) {
+    return (r * r * std::acos(x / r) - x * std::sqrt(r * r - x * x)) / (kPi * r * r);
+  }
+  return (r - x) * (r - x) * (2 * r + x) / (4.0 * r * r * r);  // cap volume / ball volume
+}
+
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double cell_measure) {
+  const Interaction& interaction = *context.interaction;
+  const geometry::PairMeasurer& measurer = *context.measurer;
+  const double radius = cell_radius(context.dimension, cell_measure);
+  std::vector<Neighbour> neighbours;
+  std::vector<Cut> cuts;
+  bool hard_core = false;
+  context.grid->for_each_candidate(dummy.position, [&](int k) {
+    if (hard_core) return;
+    const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
+    if (!interaction.interacts(dummy.category, other.category)) return;
+    const double reach = interaction.max_range(dummy.category, other.category);
+    Vec3 offset = other.position - dummy.position;
+    for (int axis = 0; axis < context.dimension; ++axis) {
+      if (context.period[axis] > 0) offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
+    }
+    if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >= reach + radius) return;
+    auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
+    if (lo >= reach + radius) return;
+    int axis = measurer.axis_from_boxes(dummy.shape, other.shape, offset, radius);
+    double angular_margin = -1.0;
+    int other_axis = -1;
+    if (axis < 0) {
+      const Vec3 direction = measurer.direction(dummy.shape, other.shape, offset);
+      axis = measurer.bins().axis_of(direction);
+      if (context.dimension == 2 && measurer.bins().directions() > 1) {
+        const double step = 2 * kPi / measurer.bins().directions();
+        const double angle = std::atan2(direction.y(), direction.x());
+        const double sector = std::round(angle / step);
+        angular_margin = step / 2 - std::abs(angle - sector * step);
+        const long neighbour_sector = static_cast<long>(sector) + (angle > sector * step ? 1 : -1);
+        const long half = measurer.bins().directions() / 2;
+        other_axis = static_cast<int>(((neighbour_sector % half) + half) % half);
+        // Near a sector boundary, the rate at which the angle turns as the dummy moves across the
+        // direction (a finite difference over the cell radius) converts the margin into a distance.
+        if (angular_margin < 8 * radius / std::max(offset.norm(), radius)) {
+          const Vec3 across(-direction.y() * radius, direction.x() * radius, 0.0);
+          const Vec3 turned = measurer.direction(dummy.shape, other.shape, offset + across);
+          const double rate = std::abs(std::atan2(direction.x() * turned.y() - direction.y() * turned.x(), direction.dot(turned))) / radius;
+          angular_margin = rate > 0 ? angular_margin / rate : std::numeric_limits<double>::infinity();
+        } else {
+          angular_margin *= offset.norm();
+        }
+      }
+    }
+    // Thresholds of this axis near [lo, hi] decide whether the exact distance is needed.
+    double d = lo;
+    bool exact = false;
+    auto threshold_near = [&](double low, double high) {
+      const int band_low = interaction.band(dummy.category, other.category, axis, low);
+      const int band_high = interaction.band(dummy.category, other.category, axis, high);
+      return band_low != band_high;
+    };
+    // With an uncertain axis the other axis's thresholds matter too: measure exactly then.
+    if (angular_margin >= 0 || threshold_near(std::max(0.0, lo - radius), hi + radius)) {
+      d = measurer.distance(dummy.shape, other.shape, offset, reach + radius);
+      exact = true;
+    }
+    const int band = interaction.band(dummy.category, other.category, axis, d);
+    const int index = static_cast<int>(neighbours.size());
+    neighbours.push_back({other.category, band, axis});
+    if (exact) {
+      // The nearest threshold on either side within the cell radius.
+      const int below = interaction.band(dummy.category, other.category, axis, std::max(0.0, d - radius));
+      const int above = interaction.band(dummy.category, other.category, axis, d + radius);
+      if (below != band || above != band) {
+        // Find the threshold crossing by bisection on the band function (bands are monotone in d).
+        const bool downward = below != band;
+        double inside = d, outside = downward ? std::max(0.0, d - radius) : d + radius;
+        for (int it = 0; it < 60; ++it) {
+          const double mid = 0.5 * (inside + outside);
+          if (interaction.band(dummy.category, other.category, axis, mid) == band) inside = mid; else outside = mid;
+        }
+        const double x = std::abs(0.5 * (inside + outside) - d);
+        const int other_band = downward ? below : above;
+        // Only the nearest crossing on that side is modelled; a second one within the cell is rare.
+        cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, axis});
+      }
+    }
+    if (angular_margin >= 0 && d < reach + radius) {
+      const double x = angular_margin;  // already a distance
+      if (x < radius) {
+        const int other_band = interaction.band(dummy.category, other.category, other_axis, d);
+        // Another axis means other parameters even in the same band.
+        if (other_band != band || other_band >= 0) {
+          cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, other_axis});
+        }
+      }
+    }
+    if (band == Interaction::kHardCore && cuts.empty()) hard_core = true;  // the whole cell is forbidden
+    else if (band == Interaction::kHardCore) {
+      bool rescued = false;
+      for (const Cut& cut : cuts) rescued = rescued || (cut.neighbour == index && cut.other_band != Interaction::kHardCore);
+      if (!rescued) hard_core = true;
+    }
+  });
+  std::vector<CellPart> parts;
+  if (hard_core) return parts;
+  // At most 5 cuts are combined (32 parts); further ones keep the centre's value.
+  const std::size_t used = std::min<std::size_t>(cuts.size(), 5);
+  for (std::size_t mask = 0; mask < (std::size_t{1} << used); ++mask) {
+    double fraction = 1.0;
+    std::vector<Neighbour> state = neighbours;
+    for (std::size_t c = 0; c < used; ++c) {
+      const Cut& cut = cuts[c];
+      if (mask & (std::size_t{1} << c)) {
+        fraction *= cut.fraction;
+        state[static_cast<std::size_t>(cut.neighbour)].band = cut.other_band;
+        state[static_cast<std::size_t>(cut.neighbour)].axis = cut.other_axis;
+      } else {
+        fraction *= 1.0 - cut.fraction;
+      }
+    }
+    if (fraction <= 0.0) continue;
+    model::InteractionCounts counts;
+    bool forbidden = false;
+    for (const Neighbour& n : state) {
+      if (n.band == Interaction::kHardCore) {
+        forbidden = true;
+        break;
+      }
+      if (n.band >= 0) counts.add(interaction.parameter(dummy.category, n.category, n.axis, n.band));
+    }
+    if (!forbidden) parts.push_back({fraction, std::move(counts.counts)});
+  }
+  return parts;
+}
+
+}  // namespace shapeproc::fit

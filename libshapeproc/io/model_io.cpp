@@ -1,0 +1,363 @@
+#include "libshapeproc/io/model_io.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/io/scene_writers.hpp"
+#include "libshapeproc/io/svg_grammar.hpp"
+#include "libshapeproc/io/text.hpp"
+
+namespace shapeproc::io {
+
+using nlohmann::json;
+using namespace shapeproc::model;
+
+namespace {
+
+constexpr const char* kFormat = "shapeproc-model";
+constexpr int kVersion = 1;
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string path_data(const geometry::Path2& path) {
+  std::string d = "M" + format_number(path.start_point().x()) + " " + format_number(path.start_point().y());
+  for (const geometry::Segment2& s : path.segments) {
+    if (s.cubic) {
+      d += "C" + format_number(s.control1.x()) + " " + format_number(s.control1.y()) + " " + format_number(s.control2.x()) +
+           " " + format_number(s.control2.y()) + " ";
+    } else {
+      d += "L";
+    }
+    d += format_number(s.end.x()) + " " + format_number(s.end.y());
+  }
+  if (path.closed) d += "Z";
+  return d;
+}
+
+json shape_json(const geometry::Shape& shape) {
+  if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
+    json parts = json::array();
+    for (const geometry::Drawable2& part : planar->parts) {
+      std::string d;
+      for (const geometry::Path2& path : part.paths) d += (d.empty() ? "" : " ") + path_data(path);
+      parts.push_back({{"d", d},
+                       {"fill_rule", part.fill_rule == geometry::FillRule::evenodd ? "evenodd" : "nonzero"},
+                       {"style", part.style}});
+    }
+    return {{"type", "paths"}, {"parts", parts}};
+  }
+  if (const auto* mesh = std::get_if<geometry::MeshShape>(&shape.geometry)) {
+    json vertices = json::array(), triangles = json::array();
+    for (const geometry::Vec3& v : mesh->mesh.vertices) vertices.push_back({v.x(), v.y(), v.z()});
+    for (const auto& t : mesh->mesh.triangles) triangles.push_back({t[0], t[1], t[2]});
+    return {{"type", "mesh"}, {"vertices", vertices}, {"triangles", triangles}};
+  }
+  return {{"type", "point"}};
+}
+
+const char* distance_name(geometry::DistanceKind d) {
+  switch (d) {
+    case geometry::DistanceKind::shape: return "shape";
+    case geometry::DistanceKind::centroid: return "centroid";
+    case geometry::DistanceKind::hausdorff: return "hausdorff";
+  }
+  return "shape";
+}
+
+// Reading with paths in messages.
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw InputError(file_, 0, where + ": " + what);
+  }
+  const json& field(const json& object, const std::string& where, const char* name) const {
+    if (!object.is_object() || !object.contains(name)) fail(where.empty() ? name : where + "." + name, "missing");
+    return object.at(name);
+  }
+  double number(const json& v, const std::string& where) const {
+    if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+    if (!v.is_number()) fail(where, "expected a number, got " + v.dump());
+    return v.get<double>();
+  }
+  int integer(const json& v, const std::string& where) const {
+    if (!v.is_number_integer()) fail(where, "expected an integer, got " + v.dump());
+    return v.get<int>();
+  }
+  std::string text(const json& v, const std::string& where) const {
+    if (!v.is_string()) fail(where, "expected a string, got " + v.dump());
+    return v.get<std::string>();
+  }
+  std::vector<double> numbers(const json& v, const std::string& where) const {
+    if (!v.is_array()) fail(where, "expected an array of numbers");
+    std::vector<double> out;
+    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(number(v[k], where + "[" + std::to_string(k) + "]"));
+    return out;
+  }
+  const json& array(const json& v, const std::string& where) const {
+    if (!v.is_array()) fail(where, "expected an array");
+    return v;
+  }
+
+  geometry::Shape shape(const json& j, const std::string& where, int dimension) const {
+    const std::string type = text(field(j, where, "type"), where + ".type");
+    if (type == "point") return geometry::Shape{geometry::PointShape{}, ""};
+    if (type == "paths") {
+      if (dimension != 2) fail(where + ".type", "paths in a 3D model");
+      geometry::PlanarShape planar;
+      const json& parts = array(field(j, where, "parts"), where + ".parts");
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        const std::string at = where + ".parts[" + std::to_string(k) + "]";
+        geometry::Drawable2 drawable;
+        try {
+          drawable.paths = svg::parse_path_data(text(field(parts[k], at, "d"), at + ".d"));
+        } catch (const svg::GrammarError& e) {
+          fail(at + ".d", e.what());
+        }
+        if (drawable.paths.empty()) fail(at + ".d", "no path");
+        if (parts[k].contains("fill_rule")) {
+          const std::string rule = text(parts[k]["fill_rule"], at + ".fill_rule");
+          if (rule != "evenodd" && rule != "nonzero") fail(at + ".fill_rule", "expected evenodd or nonzero");
+          drawable.fill_rule = rule == "evenodd" ? geometry::FillRule::evenodd : geometry::FillRule::nonzero;
+        }
+        if (parts[k].contains("style")) {
+          const json& style = parts[k]["style"];
+          if (!style.is_object()) fail(at + ".style", "expected an object of SVG properties");
+          for (const auto& [name, value] : style.items()) drawable.style[name] = text(value, at + ".style." + name);
+        }
+        planar.parts.push_back(std::move(drawable));
+      }
+      if (planar.parts.empty()) fail(where + ".parts", "at least one part is needed");
+      return geometry::Shape{std::move(planar), ""};
+    }
+    if (type == "mesh") {
+      if (dimension != 3) fail(where + ".type", "a mesh in a 2D model");
+      geometry::MeshShape mesh;
+      const json& vertices = array(field(j, where, "vertices"), where + ".vertices");
+      for (std::size_t k = 0; k < vertices.size(); ++k) {
+        const std::vector<double> v = numbers(vertices[k], where + ".vertices[" + std::to_string(k) + "]");
+        if (v.size() != 3 || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
+          fail(where + ".vertices[" + std::to_string(k) + "]", "expected three finite numbers");
+        }
+        mesh.mesh.vertices.emplace_back(v[0], v[1], v[2]);
+      }
+      const json& triangles = array(field(j, where, "triangles"), where + ".triangles");
+      for (std::size_t k = 0; k < triangles.size(); ++k) {
+        const std::string at = where + ".triangles[" + std::to_string(k) + "]";
+        const json& t = array(triangles[k], at);
+        if (t.size() != 3) fail(at, "expected three vertex indices");
+        std::array<int, 3> tri{};
+        for (int c = 0; c < 3; ++c) {
+          tri[static_cast<std::size_t>(c)] = integer(t[static_cast<std::size_t>(c)], at);
+          if (tri[static_cast<std::size_t>(c)] < 0 || tri[static_cast<std::size_t>(c)] >= static_cast<int>(mesh.mesh.vertices.size())) {
+            fail(at, "vertex index out of range");
+          }
+        }
+        mesh.mesh.triangles.push_back(tri);
+      }
+      if (mesh.mesh.triangles.empty()) fail(where + ".triangles", "at least one triangle is needed");
+      return geometry::Shape{std::move(mesh), ""};
+    }
+    fail(where + ".type", "expected paths, mesh or point, got '" + type + "'");
+  }
+
+ private:
+  std::string file_;
+};
+
+ParameterStatus status_from(const std::string& s, const Reader& reader, const std::string& where) {
+  if (s == "free") return ParameterStatus::free;
+  if (s == "boundary") return ParameterStatus::boundary;
+  if (s == "unidentifiable") return ParameterStatus::unidentifiable;
+  if (s == "fixed") return ParameterStatus::fixed;
+  reader.fail(where, "expected free, boundary, unidentifiable or fixed, got '" + s + "'");
+}
+
+}  // namespace
+
+std::string model_to_json(const ShapeProcessModel& model) {
+  json categories = json::array();
+  for (const CategoryParameters& c : model.categories) {
+    categories.push_back({{"name", c.name}, {"beta", c.beta}, {"beta_standard_error", number_or_null(c.beta_standard_error)}});
+  }
+  json interaction = json::array();
+  for (const PairInteraction& pair : model.interactions) {
+    json axes = json::array();
+    for (const AxisParameters& a : pair.axes) {
+      json direction = json::array();
+      for (int k = 0; k < model.dimension; ++k) direction.push_back(a.direction[k]);
+      json errors = json::array(), status = json::array();
+      for (std::size_t k = 0; k < a.gammas.size(); ++k) {
+        errors.push_back(number_or_null(k < a.gamma_standard_errors.size() ? a.gamma_standard_errors[k] : NAN));
+        status.push_back(to_string(k < a.status.size() ? a.status[k] : ParameterStatus::fixed));
+      }
+      json axis = {{"direction", direction}, {"thresholds", a.thresholds}, {"gammas", a.gammas},
+                   {"gamma_standard_errors", errors}, {"status", status}};
+      if (!a.observed_pairs.empty()) axis["observed_pairs"] = a.observed_pairs;
+      axes.push_back(axis);
+    }
+    interaction.push_back({{"categories", {pair.first, pair.second}}, {"axes", axes}});
+  }
+  json shapes = json::array();
+  for (const ModelShape& s : model.shapes) {
+    json entry = {{"category", s.category}, {"geometry", shape_json(s.shape)}};
+    if (!s.shape.name.empty()) entry["name"] = s.shape.name;
+    shapes.push_back(entry);
+  }
+  json document = {{"format", kFormat},
+                   {"version", kVersion},
+                   {"dimension", model.dimension},
+                   {"units", model.units},
+                   {"measurement",
+                    {{"distance", distance_name(model.measurement.distance)},
+                     {"direction", model.measurement.direction == geometry::DirectionKind::centroid ? "centroid" : "gravitation"},
+                     {"directions", model.measurement.directions},
+                     {"proxy_tolerance", model.measurement.proxy_tolerance}}},
+                   {"categories", categories},
+                   {"interaction", interaction},
+                   {"shapes", shapes}};
+  if (!model.fit_json.empty()) document["fit"] = json::parse(model.fit_json);
+  return document.dump(2) + "\n";
+}
+
+void write_model(const ShapeProcessModel& model, const std::filesystem::path& file) {
+  const std::string text = model_to_json(model);
+  write_file_atomically(file, [&](std::ostream& out) { out << text; });
+}
+
+ShapeProcessModel parse_model(std::string_view text, const std::string& file_name) {
+  if (trim(text).empty()) throw InputError(file_name, 0, "the file is empty");
+  json document;
+  try {
+    document = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    const std::size_t byte = std::min(e.byte, text.size());
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
+    std::string message = e.what();
+    if (const std::size_t colon = message.rfind(": "); colon != std::string::npos) message = message.substr(colon + 2);
+    throw InputError(file_name, line, "malformed JSON: " + message);
+  }
+  const Reader r(file_name);
+  if (!document.is_object()) r.fail("(document)", "expected a JSON object");
+  if (r.text(r.field(document, "", "format"), "format") != kFormat) r.fail("format", std::string("expected \"") + kFormat + "\"");
+  const int version = r.integer(r.field(document, "", "version"), "version");
+  if (version != kVersion) r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " + std::to_string(version));
+  ShapeProcessModel model;
+  model.dimension = r.integer(r.field(document, "", "dimension"), "dimension");
+  if (model.dimension != 2 && model.dimension != 3) r.fail("dimension", "must be 2 or 3");
+  model.units = document.contains("units") ? r.text(document["units"], "units") : (model.dimension == 2 ? "px" : "1");
+
+  const json& categories = r.array(r.field(document, "", "categories"), "categories");
+  for (std::size_t c = 0; c < categories.size(); ++c) {
+    const std::string where = "categories[" + std::to_string(c) + "]";
+    CategoryParameters category;
+    category.name = r.text(r.field(categories[c], where, "name"), where + ".name");
+    category.beta = r.number(r.field(categories[c], where, "beta"), where + ".beta");
+    if (categories[c].contains("beta_standard_error")) category.beta_standard_error = r.number(categories[c]["beta_standard_error"], where);
+    model.categories.push_back(category);
+  }
+  const json& interaction = r.array(r.field(document, "", "interaction"), "interaction");
+  std::size_t axes_seen = 0;
+  for (std::size_t p = 0; p < interaction.size(); ++p) {
+    const std::string where = "interaction[" + std::to_string(p) + "]";
+    PairInteraction pair;
+    const json& cats = r.array(r.field(interaction[p], where, "categories"), where + ".categories");
+    if (cats.size() != 2) r.fail(where + ".categories", "expected two category indices");
+    pair.first = r.integer(cats[0], where + ".categories[0]");
+    pair.second = r.integer(cats[1], where + ".categories[1]");
+    if (pair.first > pair.second) std::swap(pair.first, pair.second);
+    const json& axes = r.array(r.field(interaction[p], where, "axes"), where + ".axes");
+    axes_seen = axes.size();
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      const std::string at = where + ".axes[" + std::to_string(i) + "]";
+      AxisParameters axis;
+      const std::vector<double> direction = r.numbers(r.field(axes[i], at, "direction"), at + ".direction");
+      if (static_cast<int>(direction.size()) != model.dimension) {
+        r.fail(at + ".direction", "expected " + std::to_string(model.dimension) + " numbers for a " +
+                                      std::to_string(model.dimension) + "D model");
+      }
+      axis.direction = geometry::Vec3::Zero();
+      for (int k = 0; k < model.dimension; ++k) axis.direction[k] = direction[static_cast<std::size_t>(k)];
+      axis.thresholds = r.numbers(r.field(axes[i], at, "thresholds"), at + ".thresholds");
+      axis.gammas = r.numbers(r.field(axes[i], at, "gammas"), at + ".gammas");
+      const std::size_t bands = axis.gammas.size();
+      axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());
+      axis.status.assign(bands, ParameterStatus::fixed);
+      if (axes[i].contains("gamma_standard_errors")) {
+        const std::vector<double> se = r.numbers(axes[i]["gamma_standard_errors"], at + ".gamma_standard_errors");
+        if (se.size() != bands) r.fail(at + ".gamma_standard_errors", "expected one per gamma");
+        axis.gamma_standard_errors = se;
+      }
+      if (axes[i].contains("status")) {
+        const json& status = r.array(axes[i]["status"], at + ".status");
+        if (status.size() != bands) r.fail(at + ".status", "expected one per gamma");
+        for (std::size_t k = 0; k < bands; ++k) {
+          axis.status[k] = status_from(r.text(status[k], at + ".status"), r, at + ".status[" + std::to_string(k) + "]");
+        }
+      }
+      if (axes[i].contains("observed_pairs")) {
+        for (const json& v : r.array(axes[i]["observed_pairs"], at + ".observed_pairs")) axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
+      }
+      pair.axes.push_back(std::move(axis));
+    }
+    model.interactions.push_back(std::move(pair));
+  }
+  // Measurement settings; the number of directions defaults to what the axes imply.
+  int directions = axes_seen <= 1 ? 1 : (model.dimension == 2 ? static_cast<int>(2 * axes_seen) : 12);
+  if (document.contains("measurement")) {
+    const json& m = document["measurement"];
+    if (!m.is_object()) r.fail("measurement", "expected an object");
+    if (m.contains("distance")) {
+      const std::string d = r.text(m["distance"], "measurement.distance");
+      if (d == "shape") model.measurement.distance = geometry::DistanceKind::shape;
+      else if (d == "centroid") model.measurement.distance = geometry::DistanceKind::centroid;
+      else if (d == "hausdorff") model.measurement.distance = geometry::DistanceKind::hausdorff;
+      else r.fail("measurement.distance", "expected shape, centroid or hausdorff, got '" + d + "'");
+    }
+    if (m.contains("direction")) {
+      const std::string d = r.text(m["direction"], "measurement.direction");
+      if (d == "gravitation") model.measurement.direction = geometry::DirectionKind::gravitation;
+      else if (d == "centroid") model.measurement.direction = geometry::DirectionKind::centroid;
+      else r.fail("measurement.direction", "expected gravitation or centroid, got '" + d + "'");
+    }
+    if (m.contains("directions")) directions = r.integer(m["directions"], "measurement.directions");
+    if (m.contains("proxy_tolerance")) {
+      model.measurement.proxy_tolerance = r.number(m["proxy_tolerance"], "measurement.proxy_tolerance");
+      if (!(model.measurement.proxy_tolerance >= 0 && model.measurement.proxy_tolerance < 1)) {
+        r.fail("measurement.proxy_tolerance", "must be in [0, 1)");
+      }
+    }
+  }
+  model.measurement.directions = directions;
+  const json& shapes = r.array(r.field(document, "", "shapes"), "shapes");
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    const std::string where = "shapes[" + std::to_string(s) + "]";
+    ModelShape shape;
+    shape.category = r.integer(r.field(shapes[s], where, "category"), where + ".category");
+    shape.shape = r.shape(r.field(shapes[s], where, "geometry"), where + ".geometry", model.dimension);
+    if (shapes[s].contains("name")) shape.shape.name = r.text(shapes[s]["name"], where + ".name");
+    // Shapes are stored centred on their bounding box; hand-written ones are centred here.
+    const geometry::Box3 box = geometry::bounding_box(shape.shape);
+    if (!box.isEmpty()) geometry::translate(shape.shape, -box.center());
+    model.shapes.push_back(std::move(shape));
+  }
+  if (document.contains("fit")) model.fit_json = document["fit"].dump();
+  try {
+    validate(model);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file_name, 0, e.what());
+  }
+  return model;
+}
+
+ShapeProcessModel read_model(const std::filesystem::path& file) {
+  const std::string text = read_text_file(file);
+  return parse_model(text, file.string());
+}
+
+}  // namespace shapeproc::io

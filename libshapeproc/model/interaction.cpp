@@ -1,0 +1,95 @@
+#include "libshapeproc/model/interaction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shapeproc::model {
+
+Interaction::Interaction(const ShapeProcessModel& model) : categories_(static_cast<int>(model.categories.size())) {
+  pair_index_.assign(static_cast<std::size_t>(categories_ * categories_), -1);
+  parameters_ = categories_;
+  for (int c = 0; c < categories_; ++c) locations_.push_back({-1, c, -1});
+  for (std::size_t p = 0; p < model.interactions.size(); ++p) {
+    const PairInteraction& source = model.interactions[p];
+    Pair pair;
+    pair.min_hard_core = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < source.axes.size(); ++i) {
+      const AxisParameters& a = source.axes[i];
+      Axis axis;
+      axis.thresholds = a.thresholds;
+      for (double g : a.gammas) axis.log_gammas.push_back(std::log(g));  // log 0 = −∞
+      axis.first_parameter = parameters_;
+      for (std::size_t k = 0; k < a.gammas.size(); ++k) {
+        locations_.push_back({static_cast<int>(p), static_cast<int>(i), static_cast<int>(k)});
+      }
+      parameters_ += static_cast<int>(a.gammas.size());
+      pair.min_hard_core = std::min(pair.min_hard_core, a.thresholds.front());
+      pair.max_range = std::max(pair.max_range, a.thresholds.back());
+      pair.axes.push_back(std::move(axis));
+    }
+    if (source.axes.empty()) pair.min_hard_core = 0.0;
+    range_ = std::max(range_, pair.max_range);
+    pair_index_[static_cast<std::size_t>(source.first * categories_ + source.second)] = static_cast<int>(pairs_.size());
+    pair_index_[static_cast<std::size_t>(source.second * categories_ + source.first)] = static_cast<int>(pairs_.size());
+    pairs_.push_back(std::move(pair));
+  }
+}
+
+int Interaction::band(int ca, int cb, int axis, double distance) const {
+  const int p = pair_of(ca, cb);
+  if (p < 0) return kBeyond;
+  const std::vector<double>& d = pairs_[p].axes[static_cast<std::size_t>(axis)].thresholds;
+  if (distance < d.front()) return kHardCore;
+  if (distance >= d.back()) return kBeyond;
+  // γ_k on [δ_{k−1}, δ_k): the first threshold strictly above the distance ends the band.
+  const auto above = std::upper_bound(d.begin(), d.end(), distance);
+  return static_cast<int>(above - d.begin()) - 1;
+}
+
+int Interaction::parameter(int ca, int cb, int axis, int band) const {
+  return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].first_parameter + band;
+}
+
+double Interaction::log_gamma(int ca, int cb, int axis, int band) const {
+  if (band == kBeyond) return 0.0;
+  if (band == kHardCore) return -std::numeric_limits<double>::infinity();
+  return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].log_gammas[static_cast<std::size_t>(band)];
+}
+
+PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                       const geometry::Element& xi, const geometry::Element& neighbour) {
+  PairEffect effect;
+  if (!interaction.interacts(xi.category, neighbour.category)) return effect;
+  const double reach = interaction.max_range(xi.category, neighbour.category);
+  if (!(reach > 0)) return effect;
+  const geometry::Measurement m = measurer.measure_distance(xi, neighbour, reach);
+  effect.distance = m.distance;
+  if (m.distance >= reach) return effect;
+  if (m.distance < interaction.min_hard_core(xi.category, neighbour.category)) {
+    effect.band = Interaction::kHardCore;
+    return effect;
+  }
+  const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, m.offset);
+  effect.axis = known >= 0 ? known : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, m.offset));
+  effect.band = interaction.band(xi.category, neighbour.category, effect.axis, m.distance);
+  return effect;
+}
+
+void InteractionCounts::add(int parameter) {
+  const auto it = std::lower_bound(counts.begin(), counts.end(), std::make_pair(parameter, 0),
+                                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (it != counts.end() && it->first == parameter) {
+    ++it->second;
+  } else {
+    counts.insert(it, {parameter, 1});
+  }
+}
+
+double InteractionCounts::dot(const std::vector<double>& theta) const {
+  if (hard_core) return -std::numeric_limits<double>::infinity();
+  double sum = 0.0;
+  for (const auto& [parameter, count] : counts) sum += theta[static_cast<std::size_t>(parameter)] * count;
+  return sum;
+}
+
+}  // namespace shapeproc::model

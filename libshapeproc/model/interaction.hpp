@@ -1,0 +1,87 @@
+// The interaction function compiled for evaluation, and the conditional intensity
+//   log λ(ξ | x) = log β_c + Σ_m log Γ(ξ, x_m) = θ · t(ξ, x)
+// with θ = (log β_c, log γ_{pair, axis, band}) and t the counts of x's elements that ξ interacts
+// with per (pair, axis, band). One implementation for fitting, sampling and metrics.
+#pragma once
+
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::model {
+
+class Interaction {
+ public:
+  static constexpr int kHardCore = -1;  // d < δ_0
+  static constexpr int kBeyond = -2;    // d ≥ δ_K, or categories that do not interact
+
+  explicit Interaction(const ShapeProcessModel& model);
+
+  int category_count() const { return categories_; }
+  int parameter_count() const { return parameters_; }
+  // Largest δ_K of any pair (0 when nothing interacts).
+  double range() const { return range_; }
+  bool interacts(int ca, int cb) const { return pair_of(ca, cb) >= 0; }
+  // Below this distance the pair is a hard-core violation whatever the axis; at or beyond
+  // max_range it does not interact. Between, the axis decides.
+  double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
+  double max_range(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_range; }
+
+  // Band of a pair at `distance` along `axis`: kHardCore, kBeyond or k in 0..K-1 (γ_{k+1}).
+  int band(int ca, int cb, int axis, double distance) const;
+  // θ index of a band (betas come first: θ[c] = log β_c).
+  int parameter(int ca, int cb, int axis, int band) const;
+  double log_gamma(int ca, int cb, int axis, int band) const;
+
+  // Location of a θ index: (pair, axis, band), or (-1, category, -1) for a β.
+  struct Location {
+    int pair, axis, band;
+  };
+  Location locate(int parameter) const { return locations_.at(static_cast<std::size_t>(parameter)); }
+
+ private:
+  struct Axis {
+    std::vector<double> thresholds;
+    std::vector<double> log_gammas;
+    int first_parameter = 0;
+  };
+  struct Pair {
+    std::vector<Axis> axes;
+    double min_hard_core = 0.0, max_range = 0.0;
+  };
+  int pair_of(int ca, int cb) const { return pair_index_[static_cast<std::size_t>(ca * categories_ + cb)]; }
+
+  int categories_ = 0;
+  int parameters_ = 0;
+  double range_ = 0.0;
+  std::vector<int> pair_index_;  // categories x categories -> index into pairs_ or -1
+  std::vector<Pair> pairs_;
+  std::vector<Location> locations_;
+};
+
+// What one neighbour does to ξ.
+struct PairEffect {
+  int band = Interaction::kBeyond;
+  int axis = 0;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+// Measures ξ against one neighbour, lazily: the direction is computed only when the distance
+// leaves the axis to decide.
+PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                       const geometry::Element& xi, const geometry::Element& neighbour);
+
+// t(ξ, x) restricted to interactions: sorted (θ index, count) pairs and the hard-core flag.
+struct InteractionCounts {
+  bool hard_core = false;
+  std::vector<std::pair<int, int>> counts;
+
+  void add(int parameter);
+  // θ · t for the interaction part (−∞ on a hard core).
+  double dot(const std::vector<double>& theta) const;
+};
+
+}  // namespace shapeproc::model

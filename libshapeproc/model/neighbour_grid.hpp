@@ -1,0 +1,55 @@
+// A uniform grid of element positions for neighbour queries (open or periodic windows).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "libshapeproc/geometry/types.hpp"
+
+namespace shapeproc::model {
+
+class NeighbourGrid {
+ public:
+  // Cells of at least `cell_size` covering `window`; with `periodic`, queries wrap around.
+  NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size, bool periodic);
+
+  void insert(int id, const geometry::Vec3& position);
+  void remove(int id, const geometry::Vec3& position);
+
+  // Calls f(id) for every id in the cells around `position` (its cell and the adjacent ones): a
+  // superset of the ids within the cell size of `position`, each once. Thread-safe.
+  template <class F>
+  void for_each_candidate(const geometry::Vec3& position, F&& f) const {
+    const Eigen::Vector3i centre = cell_of(position);
+    const int reach_z = dimension_ == 3 ? 1 : 0;
+    std::array<std::size_t, 27> visited{};
+    int visited_count = 0;
+    for (int dz = -reach_z; dz <= reach_z; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          Eigen::Vector3i c = centre + Eigen::Vector3i(dx, dy, dz);
+          if (!wrap(c)) continue;
+          const std::size_t index = linear(c);
+          if (std::find(visited.begin(), visited.begin() + visited_count, index) != visited.begin() + visited_count) continue;
+          visited[static_cast<std::size_t>(visited_count++)] = index;
+          for (int id : cells_[index]) f(id);
+        }
+  }
+
+ private:
+  Eigen::Vector3i cell_of(const geometry::Vec3& p) const;
+  bool wrap(Eigen::Vector3i& c) const;
+  std::size_t linear(const Eigen::Vector3i& c) const {
+    return static_cast<std::size_t>((c.z() * counts_.y() + c.y()) * counts_.x() + c.x());
+  }
+
+  geometry::Box3 window_;
+  int dimension_;
+  bool periodic_;
+  Eigen::Vector3i counts_;
+  geometry::Vec3 cell_;
+  std::vector<std::vector<int>> cells_;
+};
+
+}  // namespace shapeproc::model

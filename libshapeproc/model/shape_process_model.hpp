@@ -1,0 +1,87 @@
+// The shape-process model (paper §5; math note "Interaction function and density"):
+//   f(x) ∝ ∏_n β_{c_n} ∏_{n<m} Γ(x_n, x_m),
+// with, for the categories (c, c') of a pair and the axis bin i of its relative orientation,
+//   Γ = 0 if d < δ_{i,0} (hard core), γ_{i,k} if δ_{i,k−1} ≤ d < δ_{i,k} (k = 1..K), 1 if d ≥ δ_{i,K}.
+// This file holds the parameters as a user edits them; interaction.hpp compiles them for
+// evaluation.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/geometry/shape.hpp"
+
+namespace shapeproc::model {
+
+struct CategoryParameters {
+  std::string name;
+  double beta = 1.0;  // intensity per unit area (volume in 3D), in exemplar units
+  double beta_standard_error = std::numeric_limits<double>::quiet_NaN();
+};
+
+// How a band's γ came out of the fit (free parameters are estimated normally).
+enum class ParameterStatus {
+  free,
+  boundary,        // no observed pair in the band: γ = 0 is the maximum (on the boundary)
+  unidentifiable,  // neither observed pairs nor quadrature exposure: γ = 1 by convention
+  fixed,           // set by hand (a loaded model without fit information)
+};
+
+struct AxisParameters {
+  geometry::Vec3 direction = geometry::Vec3::UnitX();  // representative canonical direction
+  std::vector<double> thresholds;                      // δ_0 ≤ δ_1 ≤ … ≤ δ_K
+  std::vector<double> gammas;                          // γ_1 … γ_K (≥ 0)
+  std::vector<double> gamma_standard_errors;           // NaN where not estimated
+  std::vector<ParameterStatus> status;                 // per band
+  std::vector<int> observed_pairs;                     // exemplar pairs per band (fit only)
+};
+
+// The interaction of one unordered pair of categories: one entry per axis bin.
+struct PairInteraction {
+  int first = 0, second = 0;  // category indices, first ≤ second
+  std::vector<AxisParameters> axes;
+};
+
+struct MeasurementSettings {
+  geometry::DistanceKind distance = geometry::DistanceKind::shape;
+  geometry::DirectionKind direction = geometry::DirectionKind::gravitation;
+  int directions = 8;               // 2D: even or 1; 3D: 12 or 1
+  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+};
+
+struct ModelShape {
+  geometry::Shape shape;  // local coordinates, bounding-box centre at the origin
+  int category = 0;
+};
+
+struct ShapeProcessModel {
+  int dimension = 2;
+  std::string units = "px";
+  MeasurementSettings measurement;
+  std::vector<CategoryParameters> categories;
+  std::vector<PairInteraction> interactions;  // pairs not listed do not interact (Γ = 1)
+  std::vector<ModelShape> shapes;             // empty for point patterns
+  std::string fit_json;                       // provenance of the fit, a JSON object (may be empty)
+
+  // Largest δ_K over every pair and axis: beyond it no pair interacts.
+  double interaction_range() const;
+  // Index into `interactions` of the pair (a, b) in either order, or -1.
+  int interaction_index(int a, int b) const;
+  // Measurement options for a PairMeasurer on this model's shapes.
+  geometry::MeasurementOptions measurement_options(bool periodic) const;
+  // The shape space as a scene (window and elements empty), for a PairMeasurer.
+  geometry::Scene shape_space() const;
+};
+
+// Checks every invariant (β > 0 finite, thresholds finite, ≥ 0 and not decreasing, one γ per band,
+// γ ≥ 0 finite, categories in range and each pair once, axes matching the canonical directions of
+// `measurement.directions`, shape categories in range, shape dimensions matching). Throws
+// std::invalid_argument with the path of the offending field ("interaction[1].axes[2].gammas[0]:
+// must be finite and >= 0, got -1").
+void validate(const ShapeProcessModel& model);
+
+const char* to_string(ParameterStatus status);
+
+}  // namespace shapeproc::model

@@ -1,0 +1,117 @@
+// shapeproc fit EXEMPLAR -o model.json: thresholds from quantiles, then maximum pseudo-likelihood.
+#include <chrono>
+#include <iomanip>
+#include <memory>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/text.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/cli/common.hpp"
+#include "tools/cli/model_summary.hpp"
+
+namespace shapeproc::cli {
+
+namespace {
+
+struct FitArguments {
+  std::string input, output;
+  int directions = 0;
+  std::string quantiles = "0,0.1,0.2";
+  std::string thresholds;
+  std::string edge = "none";
+  std::string distance = "shape";
+  std::string direction = "gravitation";
+  int quadrature = 0;
+  int shapes_per_location = 0;
+  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+  ReaderFlags reader;
+};
+
+std::vector<double> number_list(const std::string& text, const char* option) {
+  const auto values = io::parse_number_list(text);
+  if (!values || values->empty()) throw io::UsageError(std::string(option) + ": expected numbers separated by commas, got '" + text + "'");
+  return *values;
+}
+
+int run_fit(const FitArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  if (io::extension_of(args.output) != "json") throw io::UsageError(args.output + ": the model is written as .json");
+  fit::FitOptions options;
+  options.directions = args.directions;
+  options.quantiles = number_list(args.quantiles, "--quantiles");
+  if (!args.thresholds.empty()) options.thresholds = number_list(args.thresholds, "--thresholds");
+  options.edge = args.edge == "periodic" ? fit::EdgeTreatment::periodic
+                 : args.edge == "border" ? fit::EdgeTreatment::border
+                                         : fit::EdgeTreatment::none;
+  options.distance = args.distance == "centroid"    ? geometry::DistanceKind::centroid
+                     : args.distance == "hausdorff" ? geometry::DistanceKind::hausdorff
+                                                    : geometry::DistanceKind::shape;
+  options.direction = args.direction == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+  options.quadrature = args.quadrature;
+  options.shapes_per_location = args.shapes_per_location;
+  options.proxy_tolerance = args.proxy_tolerance;
+  if (!(args.proxy_tolerance >= 0 && args.proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
+  const io::ReaderOptions reader = args.reader.options();
+  const geometry::Scene exemplar = io::read_scene(args.input, reader);
+  fit::FitResult result;
+  try {
+    result = fit::fit_shape_process(exemplar, options);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(args.input, 0, e.what());
+  }
+  nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
+  provenance["exemplar"] = args.input;
+  provenance["arguments"] = arguments;
+  provenance["reader"] = args.reader.to_json();
+  provenance["options"] = {{"directions", result.model.measurement.directions}, {"distance", args.distance},
+                           {"direction", args.direction}, {"proxy_tolerance", args.proxy_tolerance}};
+  result.model.fit_json = provenance.dump();
+  io::write_model(result.model, args.output);
+
+  print_model_summary(result.model, out);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out << std::fixed << std::setprecision(1) << "time: proxies " << result.seconds.proxies * 1e3 << " ms, measurements "
+      << result.seconds.measurements * 1e3 << " ms, quadrature " << result.seconds.quadrature * 1e3 << " ms, fit "
+      << result.seconds.optimisation * 1e3 << " ms; total " << total * 1e3 << " ms\n";
+  out.unsetf(std::ios::fixed);
+  out << "wrote " << args.output << '\n';
+  return 0;
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
+  auto args = std::make_shared<FitArguments>();
+  CLI::App* command = app.add_subcommand("fit", "Fit the shape-process model to an exemplar (maximum log pseudo-likelihood)");
+  command->add_option("EXEMPLAR", args->input, "input file")->required();
+  command->add_option("-o,--output", args->output, "model file (.json)")->required();
+  command->add_option("--directions", args->directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
+  auto* quantiles = command->add_option("--quantiles", args->quantiles, "quantile orders of the thresholds")->capture_default_str();
+  auto* thresholds = command->add_option("--thresholds", args->thresholds, "thresholds d0,d1,... for every pair and axis");
+  quantiles->excludes(thresholds);
+  command->add_option("--edge", args->edge, "edge treatment: none, periodic or border")
+      ->check(CLI::IsMember({"none", "periodic", "border"}))
+      ->capture_default_str();
+  command->add_option("--distance", args->distance, "shape, centroid or hausdorff")
+      ->check(CLI::IsMember({"shape", "centroid", "hausdorff"}))
+      ->capture_default_str();
+  command->add_option("--direction", args->direction, "gravitation or centroid")
+      ->check(CLI::IsMember({"gravitation", "centroid"}))
+      ->capture_default_str();
+  command->add_option("--quadrature", args->quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 12 in 3D)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--shapes-per-location", args->shapes_per_location,
+                      "shapes crossed with each quadrature location, in rotation (default: all)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--proxy-tolerance", args->proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
+      ->capture_default_str();
+  args->reader.add_to(*command);
+  command->callback([&action, args, arguments] {
+    action = [args, arguments](std::ostream& out) { return run_fit(*args, arguments, out); };
+  });
+}
+
+}  // namespace shapeproc::cli

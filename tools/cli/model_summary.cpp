@@ -1,0 +1,87 @@
+#include "tools/cli/model_summary.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace shapeproc::cli {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string g(double v, int digits = 4) {
+  if (!std::isfinite(v)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+std::string direction_text(const geometry::Vec3& d, int dimension) {
+  if (dimension == 2) return g(std::atan2(d.y(), d.x()) * 180 / kPi, 3) + " deg";
+  return "(" + g(d.x(), 2) + ", " + g(d.y(), 2) + ", " + g(d.z(), 2) + ")";
+}
+
+std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
+  const model::ParameterStatus status = k < a.status.size() ? a.status[k] : model::ParameterStatus::fixed;
+  switch (status) {
+    case model::ParameterStatus::boundary: return "0 (boundary: no pair)";
+    case model::ParameterStatus::unidentifiable: return "1 (no information)";
+    default: break;
+  }
+  std::string text = g(a.gammas[k], 3);
+  if (k < a.gamma_standard_errors.size() && std::isfinite(a.gamma_standard_errors[k])) text += " ± " + g(a.gamma_standard_errors[k], 2);
+  if (k < a.observed_pairs.size()) text += " (" + std::to_string(a.observed_pairs[k]) + ")";
+  return text;
+}
+
+}  // namespace
+
+void print_model_summary(const model::ShapeProcessModel& model, std::ostream& out) {
+  const char* measure = model.dimension == 2 ? "area" : "volume";
+  out << "model: " << model.dimension << "D, " << model.categories.size() << " categor"
+      << (model.categories.size() == 1 ? "y" : "ies") << ", " << model.measurement.directions << " direction(s), distance "
+      << (model.measurement.distance == geometry::DistanceKind::shape       ? "shape"
+          : model.measurement.distance == geometry::DistanceKind::centroid ? "centroid"
+                                                                            : "hausdorff")
+      << ", direction "
+      << (model.measurement.direction == geometry::DirectionKind::gravitation ? "gravitation" : "centroid") << ", "
+      << (model.shapes.empty() ? std::string("points") : std::to_string(model.shapes.size()) + " shapes") << "\n";
+  out << "\nintensity beta (per unit " << measure << ", " << model.units << "):\n";
+  for (const model::CategoryParameters& c : model.categories) {
+    out << "  " << std::left << std::setw(16) << c.name << std::right << " " << g(c.beta);
+    if (std::isfinite(c.beta_standard_error)) out << " ± " << g(c.beta_standard_error, 2);
+    out << '\n';
+  }
+  if (model.interactions.empty()) out << "\nno interaction: a Poisson process\n";
+  for (const model::PairInteraction& pair : model.interactions) {
+    out << "\ninteraction " << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
+        << model.categories[static_cast<std::size_t>(pair.second)].name
+        << "  (gamma ± se (exemplar pairs in the band); hard core below d0)\n";
+    for (std::size_t i = 0; i < pair.axes.size(); ++i) {
+      const model::AxisParameters& a = pair.axes[i];
+      out << "  axis " << i << "  " << std::setw(9) << direction_text(a.direction, model.dimension) << "  d0 "
+          << std::setw(8) << g(a.thresholds.front());
+      for (std::size_t k = 0; k < a.gammas.size(); ++k) {
+        out << "  | [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1]) << "): " << gamma_text(a, k);
+      }
+      out << '\n';
+    }
+  }
+  if (!model.fit_json.empty()) {
+    const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
+    if (fit.contains("log_pseudo_likelihood")) out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
+    if (fit.contains("quadrature")) {
+      out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, " << fit["quadrature"].value("points", 0)
+          << " points; edge " << fit.value("edge", "none") << '\n';
+    }
+    if (fit.contains("notes")) {
+      for (const auto& note : fit["notes"]) out << "note: " << note.get<std::string>() << '\n';
+    }
+  }
+}
+
+}  // namespace shapeproc::cli
