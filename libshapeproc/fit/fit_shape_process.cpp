@@ -102,10 +102,10 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   std::vector<std::vector<int>> shapes_of(static_cast<std::size_t>(categories));
   std::vector<int> shape_category(exemplar.shapes.size(), -1);
   for (const Element& e : exemplar.elements) {
-    if (shape_category[static_cast<std::size_t>(e.shape)] < 0) {
-      shape_category[static_cast<std::size_t>(e.shape)] = e.category;
-      shapes_of[static_cast<std::size_t>(e.category)].push_back(e.shape);
-    }
+    // A shape may serve several categories (the single point shape of a point pattern).
+    if (shape_category[static_cast<std::size_t>(e.shape)] < 0) shape_category[static_cast<std::size_t>(e.shape)] = e.category;
+    std::vector<int>& own = shapes_of[static_cast<std::size_t>(e.category)];
+    if (std::find(own.begin(), own.end(), e.shape) == own.end()) own.push_back(e.shape);
   }
   bool points_only = true;
   for (const auto& shape : exemplar.shapes) points_only = points_only && geometry::dimension(shape) == 0;
@@ -257,12 +257,13 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
 
   // Quadrature: a grid of cells tiling the region, each cell crossed with m shapes of S_c (all,
   // or m in rotation), each dummy integrated over its cell (quadrature_cell.hpp) with weight
-  // |cell| / m. Data points join with a weight of kDataWeight dummies: enough to keep the
-  // maximum finite (every observed statistic has exposure), too little to bias the integral the
-  // way Berman–Turner counting weights do at practical resolutions.
+  // |cell| / m. Data points join with kDataWeight of a dummy's weight, taken from the dummies of
+  // their tile (so the weights still sum to |W|): enough to keep the maximum finite (every
+  // observed statistic has exposure), too little to bias the integral the way Berman–Turner
+  // counting weights (equal shares) do at practical resolutions.
   clock = std::chrono::steady_clock::now();
   const geometry::Vec3 sizes = region.sizes();
-  const int cells_along = options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 12 : 32);
+  const int cells_along = options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 32);
   const double longest = sizes.head(dimension).maxCoeff();
   std::array<int, 3> count{1, 1, 1};
   double cell_measure = 1.0;
@@ -305,7 +306,9 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
         centre[axis] = region.min()[axis] + (k + 0.5) * sizes[axis] / count[axis];
       }
       const auto& inside = data_in_cell[static_cast<std::size_t>(c)][static_cast<std::size_t>(cell)];
-      const double weight = cell_measure / static_cast<double>(m);
+      // Data points take a small share of the tile, so that the weights still sum to |cell|.
+      const double data_weight = kDataWeight * cell_measure / static_cast<double>(m);
+      const double weight = (cell_measure - data_weight * static_cast<double>(inside.size())) / static_cast<double>(m);
       for (int r = 0; r < m; ++r) {
         Element e;
         e.category = c;
@@ -315,7 +318,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       }
       for (int k : inside) {
         QuadraturePoint q;
-        q.weight = kDataWeight * weight;
+        q.weight = data_weight;
         q.category = c;
         q.counts = data[static_cast<std::size_t>(k)].counts;
         design.points.push_back(std::move(q));
@@ -385,6 +388,13 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     axis.gammas[k] = std::exp(theta);  // exp(−∞) = 0 on the boundary
     axis.gamma_standard_errors[k] = axis.status[k] == model::ParameterStatus::free ? axis.gammas[k] * se
                                                                                    : std::numeric_limits<double>::quiet_NaN();
+  }
+  bool unbounded = false;
+  for (model::ParameterStatus status : mple.status) unbounded = unbounded || status == model::ParameterStatus::unbounded;
+  if (unbounded) {
+    result.notes.push_back("some parameters have no finite maximum: the exemplar separates their statistics (for example "
+                           "every element of a category near another category); they stay at the search bound |log gamma| = 30 "
+                           "and are marked unbounded. Fewer bands (--quantiles), fewer directions or one category help.");
   }
 
   nlohmann::json fit = {

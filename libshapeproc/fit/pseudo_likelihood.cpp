@@ -1,5 +1,6 @@
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -12,6 +13,7 @@ namespace shapeproc::fit {
 
 namespace {
 constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
+constexpr double kBound = 30.0;
 }
 
 double log_pseudo_likelihood(const PseudoLikelihoodDesign& design, const std::vector<double>& theta,
@@ -86,7 +88,16 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
       std::function<std::vector<double>(const std::vector<double>&)> full;
       int evaluations = 0;
     } context{&design, &free, full, 0};
+    // Search box: |θ − start| ≤ 30 (γ between e^−30 and e^30 times the start), so that an
+    // exemplar whose statistics are separated cannot send the search to infinity.
+    std::vector<double> lower(free.size()), upper(free.size());
+    for (std::size_t k = 0; k < free.size(); ++k) {
+      lower[k] = x[k] - kBound;
+      upper[k] = x[k] + kBound;
+    }
     nlopt::opt optimiser(nlopt::LD_LBFGS, static_cast<unsigned>(free.size()));
+    optimiser.set_lower_bounds(lower);
+    optimiser.set_upper_bounds(upper);
     optimiser.set_min_objective(
         [](const std::vector<double>& v, std::vector<double>& grad, void* data) {
           auto* c = static_cast<Context*>(data);
@@ -108,6 +119,9 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
       // far, and the Newton steps below finish the job on this concave function.
     }
     result.evaluations = context.evaluations;
+    if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+      for (std::size_t k = 0; k < free.size(); ++k) x[k] = result.theta[static_cast<std::size_t>(free[k])];
+    }
 
     // Newton polish with backtracking on the concave LPL.
     const Eigen::Index n = static_cast<Eigen::Index>(free.size());
@@ -131,8 +145,11 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
       std::vector<double> trial(x.size());
       bool improved = false;
       for (int halving = 0; halving < 40; ++halving) {
-        for (std::size_t k = 0; k < x.size(); ++k) trial[k] = x[k] + scale * direction[static_cast<Eigen::Index>(k)];
-        if (log_pseudo_likelihood(design, full(trial)) >= value - 1e-12 * std::abs(value)) {
+        for (std::size_t k = 0; k < x.size(); ++k) {
+          trial[k] = std::clamp(x[k] + scale * direction[static_cast<Eigen::Index>(k)], lower[k], upper[k]);
+        }
+        const double trial_value = log_pseudo_likelihood(design, full(trial));
+        if (std::isfinite(trial_value) && trial_value >= value - 1e-12 * std::abs(value)) {
           improved = true;
           break;
         }
@@ -145,6 +162,11 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
     }
   }
 
+  // Parameters stuck on the search box have no finite maximum.
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    const double start_value = start[static_cast<std::size_t>(free[k])];
+    if (std::abs(x[k] - start_value) >= kBound - 1e-6) result.status[static_cast<std::size_t>(free[k])] = model::ParameterStatus::unbounded;
+  }
   result.theta = full(x);
   std::vector<double> gradient, hessian;
   result.log_pseudo_likelihood = log_pseudo_likelihood(design, result.theta, &gradient, &hessian);

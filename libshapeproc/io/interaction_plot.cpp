@@ -50,7 +50,7 @@ std::string sector(double cx, double cy, double r0, double r1, double a0, double
 
 std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
   const double size = 260, margin = 30;
-  const std::size_t pairs = std::max<std::size_t>(1, model.interactions.size());
+  const double pairs = static_cast<double>(std::max<std::size_t>(1, model.interactions.size()));
   const double width = pairs * (size + margin) + margin, height = size + 2 * margin + 60;
   std::ostringstream svg;
   svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width
@@ -59,7 +59,7 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
   const double reach = std::max(model.interaction_range(), 1e-12);
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const model::PairInteraction& pair = model.interactions[p];
-    const double x0 = margin + p * (size + margin), cx = x0 + size / 2, cy = margin + size / 2;
+    const double x0 = margin + static_cast<double>(p) * (size + margin), cx = x0 + size / 2, cy = margin + size / 2;
     const double outer = size / 2 - 4;
     auto radius = [&](double d) { return outer * std::min(1.0, d / reach) * 0.92; };
     svg << "<text x=\"" << cx << "\" y=\"" << margin - 10 << "\" text-anchor=\"middle\">"
@@ -68,7 +68,7 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
     const std::size_t axes = pair.axes.size();
     if (model.dimension == 2) {
       svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << outer << "\" fill=\"white\" stroke=\"#999\"/>\n";
-      const double half = axes <= 1 ? kPi : kPi / (2.0 * axes);  // each direction spans 2π/D
+      const double half = axes <= 1 ? kPi : kPi / (2.0 * static_cast<double>(axes));  // each direction spans 2π/D
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
         const double angle = std::atan2(a.direction.y(), a.direction.x());
@@ -88,10 +88,10 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
       svg << "<text x=\"" << cx << "\" y=\"" << cy + outer + 16 << "\" text-anchor=\"middle\">radius: distance 0 to "
           << fmt(reach) << " " << model.units << "</text>\n";
     } else {
-      const double bar = std::min(24.0, size / std::max<std::size_t>(axes, 1) - 4);
+      const double bar = std::min(24.0, size / static_cast<double>(std::max<std::size_t>(axes, 1)) - 4);
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
-        const double y = margin + i * (bar + 4);
+        const double y = margin + static_cast<double>(i) * (bar + 4);
         auto x = [&](double d) { return x0 + 40 + (size - 44) * std::min(1.0, d / reach); };
         svg << "<text x=\"" << x0 << "\" y=\"" << y + bar * 0.7 << "\">axis " << i << "</text>\n";
         svg << "<rect x=\"" << x(0) << "\" y=\"" << y << "\" width=\"" << x(a.thresholds.front()) - x(0) << "\" height=\"" << bar
@@ -109,8 +109,9 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
   svg << "<text x=\"" << margin << "\" y=\"" << ly - 6 << "\">gamma</text>\n";
   const double stops[] = {0, 0.25, 0.5, 0.75, 1, 1.5, 2, 3, 4};
   for (std::size_t k = 0; k < std::size(stops); ++k) {
-    svg << "<rect x=\"" << margin + k * 34 << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\"" << colour(stops[k])
-        << "\" stroke=\"#555\" stroke-width=\"0.3\"/><text x=\"" << margin + k * 34 + 17 << "\" y=\"" << ly + 26
+    const double x = margin + static_cast<double>(k) * 34;
+    svg << "<rect x=\"" << x << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\"" << colour(stops[k])
+        << "\" stroke=\"#555\" stroke-width=\"0.3\"/><text x=\"" << x + 17 << "\" y=\"" << ly + 26
         << "\" text-anchor=\"middle\">" << fmt(stops[k]) << "</text>\n";
   }
   svg << "<rect x=\"" << margin + 9 * 34 + 12 << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\"black\"/><text x=\""

@@ -174,8 +174,9 @@ ParameterStatus status_from(const std::string& s, const Reader& reader, const st
   if (s == "free") return ParameterStatus::free;
   if (s == "boundary") return ParameterStatus::boundary;
   if (s == "unidentifiable") return ParameterStatus::unidentifiable;
+  if (s == "unbounded") return ParameterStatus::unbounded;
   if (s == "fixed") return ParameterStatus::fixed;
-  reader.fail(where, "expected free, boundary, unidentifiable or fixed, got '" + s + "'");
+  reader.fail(where, "expected free, boundary, unidentifiable, unbounded or fixed, got '" + s + "'");
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ const char* to_string(ParameterStatus status) {
     case ParameterStatus::free: return "free";
     case ParameterStatus::boundary: return "boundary";
     case ParameterStatus::unidentifiable: return "unidentifiable";
+    case ParameterStatus::unbounded: return "unbounded";
     case ParameterStatus::fixed: return "fixed";
   }
   return "fixed";

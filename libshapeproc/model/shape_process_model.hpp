@@ -26,6 +26,8 @@ enum class ParameterStatus {
   free,
   boundary,        // no observed pair in the band: γ = 0 is the maximum (on the boundary)
   unidentifiable,  // neither observed pairs nor quadrature exposure: γ = 1 by convention
+  unbounded,       // the pseudo-likelihood grows without limit (the exemplar separates the
+                   // statistics); the estimate sits at the search bound |log γ| = 30
   fixed,           // set by hand (a loaded model without fit information)
 };
 

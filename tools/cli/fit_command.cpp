@@ -101,7 +101,7 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   command->add_option("--direction", args->direction, "gravitation or centroid")
       ->check(CLI::IsMember({"gravitation", "centroid"}))
       ->capture_default_str();
-  command->add_option("--quadrature", args->quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 12 in 3D)")
+  command->add_option("--quadrature", args->quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 8 in 3D)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--shapes-per-location", args->shapes_per_location,
                       "shapes crossed with each quadrature location, in rotation (default: all)")

@@ -30,6 +30,7 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
   switch (status) {
     case model::ParameterStatus::boundary: return "0 (boundary: no pair)";
     case model::ParameterStatus::unidentifiable: return "1 (no information)";
+    case model::ParameterStatus::unbounded: return g(a.gammas[k], 3) + " (unbounded)";
     default: break;
   }
   std::string text = g(a.gammas[k], 3);
@@ -73,7 +74,9 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   }
   if (!model.fit_json.empty()) {
     const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
-    if (fit.contains("log_pseudo_likelihood")) out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
+    if (fit.contains("log_pseudo_likelihood") && fit["log_pseudo_likelihood"].is_number()) {
+      out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
+    }
     if (fit.contains("quadrature")) {
       out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, " << fit["quadrature"].value("points", 0)
           << " points; edge " << fit.value("edge", "none") << '\n';

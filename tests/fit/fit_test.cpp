@@ -1,0 +1,221 @@
+#include "libshapeproc/fit/fit_shape_process.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "libshapeproc/fit/quantile.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "tests/test_support.hpp"
+
+namespace shapeproc::fit {
+namespace {
+
+using geometry::Scene;
+using geometry::Vec3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Scene points(const std::vector<Vec3>& positions, const std::vector<int>& categories, const geometry::Box3& window) {
+  Scene scene;
+  scene.window = window;
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  int count = 0;
+  for (int c : categories) count = std::max(count, c + 1);
+  for (int c = 0; c < count; ++c) scene.categories.push_back({"c" + std::to_string(c)});
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    geometry::Element e;
+    e.position = positions[i];
+    e.category = categories[i];
+    scene.elements.push_back(e);
+  }
+  return scene;
+}
+
+const geometry::Box3 kUnit(Vec3(0, 0, 0), Vec3(1, 1, 0));
+
+TEST(Quantile, LinearInterpolationBetweenOrderStatistics) {
+  const std::vector<double> v = {1, 2, 4, 8};
+  EXPECT_DOUBLE_EQ(quantile(v, 0), 1);
+  EXPECT_DOUBLE_EQ(quantile(v, 1), 8);
+  EXPECT_DOUBLE_EQ(quantile(v, 0.5), 3);
+  EXPECT_DOUBLE_EQ(quantile(v, 0.1), 1.3);
+  EXPECT_THROW(quantile({}, 0.5), std::invalid_argument);
+}
+
+TEST(Fit, NoInteractionBandsGiveBetaNOverW) {
+  const Scene scene = points({{0.1, 0.2, 0}, {0.5, 0.5, 0}, {0.9, 0.3, 0}, {0.3, 0.8, 0}, {0.7, 0.1, 0}}, {0, 0, 1, 1, 1}, kUnit);
+  FitOptions options;
+  options.thresholds = {0.0};  // hard core at 0, no band
+  options.quadrature = 8;
+  const FitResult fit = fit_shape_process(scene, options);
+  EXPECT_NEAR(fit.model.categories[0].beta, 2.0, 1e-12);
+  EXPECT_NEAR(fit.model.categories[1].beta, 3.0, 1e-12);
+  // The same on a shipped exemplar with shapes.
+  const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  const FitResult shapes = fit_shape_process(dots, options);
+  EXPECT_NEAR(shapes.model.categories[0].beta, 30.0 / dots.window_measure(), 1e-12 * 30.0 / dots.window_measure());
+}
+
+// Strauss process on three points in the unit square: the exact LPL needs the areas covered by
+// 0, 1 and 2 discs of radius r, known in closed form; the MPLE by Newton's method here.
+TEST(Fit, TinyStraussMatchesTheExactMple) {
+  const double r = 0.15, d = 0.1;
+  const Scene scene = points({{0.3, 0.4, 0}, {0.3 + d, 0.4, 0}, {0.75, 0.7, 0}}, {0, 0, 0}, kUnit);
+  const double lens = 2 * r * r * std::acos(d / (2 * r)) - 0.5 * d * std::sqrt(4 * r * r - d * d);
+  const double a2 = lens, a1 = 3 * kPi * r * r - 2 * lens, a0 = 1.0 - a1 - a2;
+  // LPL(b, g) = 3 b + 2 g − e^b (a0 + a1 e^g + a2 e^{2g})
+  double b = std::log(3.0), g = 0.0;
+  for (int step = 0; step < 100; ++step) {
+    const double eg = std::exp(g), s = a0 + a1 * eg + a2 * eg * eg, sg = a1 * eg + 2 * a2 * eg * eg,
+                 sgg = a1 * eg + 4 * a2 * eg * eg, eb = std::exp(b);
+    const double gb = 3 - eb * s, gg = 2 - eb * sg;
+    const double hbb = -eb * s, hbg = -eb * sg, hgg = -eb * sgg;
+    const double det = hbb * hgg - hbg * hbg;
+    b -= (hgg * gb - hbg * gg) / det;
+    g -= (-hbg * gb + hbb * gg) / det;
+  }
+  FitOptions options;
+  options.directions = 1;
+  options.thresholds = {0.0, r};
+  options.quadrature = 400;
+  const FitResult fit = fit_shape_process(scene, options);
+  EXPECT_NEAR(fit.model.categories[0].beta / std::exp(b), 1.0, 1e-3);
+  EXPECT_NEAR(fit.model.interactions[0].axes[0].gammas[0] / std::exp(g), 1.0, 1e-3);
+}
+
+Scene transformed(const Scene& scene, const Eigen::Matrix2d& linear, const Vec3& shift) {
+  Scene out = scene;
+  for (auto& shape : out.shapes) {
+    if (auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
+      geometry::Affine2 map = geometry::Affine2::Identity();
+      map.linear() = linear;
+      for (auto& part : planar->parts)
+        for (auto& path : part.paths) geometry::transform(path, map);
+    }
+  }
+  for (auto& e : out.elements) {
+    e.position.head<2>() = linear * e.position.head<2>() + shift.head<2>();
+  }
+  geometry::Box3 window;
+  for (const Vec3& corner : {scene.window.min(), scene.window.max()}) {
+    Vec3 p = corner;
+    p.head<2>() = linear * corner.head<2>() + shift.head<2>();
+    window.extend(p);
+  }
+  out.window = window;
+  return out;
+}
+
+std::vector<double> gammas(const FitResult& fit) {
+  std::vector<double> out;
+  for (const auto& axis : fit.model.interactions.at(0).axes)
+    for (double gamma : axis.gammas) out.push_back(gamma);
+  return out;
+}
+
+class Invariance : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    exemplar = io::read_scene(testing::data_path("svg/dashes-rows.svg"), {});
+    options.quadrature = 16;
+    reference = fit_shape_process(exemplar, options);
+  }
+  Scene exemplar;
+  FitOptions options;
+  FitResult reference;
+};
+
+TEST_F(Invariance, TranslationChangesNothing) {
+  const FitResult moved = fit_shape_process(transformed(exemplar, Eigen::Matrix2d::Identity(), Vec3(1000.25, -500.5, 0)), options);
+  EXPECT_NEAR(moved.model.categories[0].beta / reference.model.categories[0].beta, 1.0, 1e-6);
+  const auto a = gammas(reference), b = gammas(moved);
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6 * std::max(1.0, a[k])) << k;
+}
+
+TEST_F(Invariance, ScalingScalesThresholdsAndBeta) {
+  const FitResult scaled = fit_shape_process(transformed(exemplar, 2.0 * Eigen::Matrix2d::Identity(), Vec3::Zero()), options);
+  EXPECT_NEAR(scaled.model.categories[0].beta * 4.0 / reference.model.categories[0].beta, 1.0, 1e-6);
+  for (std::size_t i = 0; i < reference.model.interactions[0].axes.size(); ++i) {
+    const auto& a = reference.model.interactions[0].axes[i];
+    const auto& b = scaled.model.interactions[0].axes[i];
+    for (std::size_t k = 0; k < a.thresholds.size(); ++k) EXPECT_NEAR(b.thresholds[k], 2 * a.thresholds[k], 1e-9 * b.thresholds[k]);
+    for (std::size_t k = 0; k < a.gammas.size(); ++k) EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k]));
+  }
+}
+
+TEST_F(Invariance, QuarterTurnPermutesTheAxes) {
+  Eigen::Matrix2d turn;
+  turn << 0, -1, 1, 0;  // 90 degrees: direction k·45° becomes (k + 2)·45°
+  const FitResult turned = fit_shape_process(transformed(exemplar, turn, Vec3::Zero()), options);
+  EXPECT_NEAR(turned.model.categories[0].beta / reference.model.categories[0].beta, 1.0, 1e-6);
+  for (int i = 0; i < 4; ++i) {
+    const auto& a = reference.model.interactions[0].axes[static_cast<std::size_t>(i)];
+    const auto& b = turned.model.interactions[0].axes[static_cast<std::size_t>((i + 2) % 4)];
+    for (std::size_t k = 0; k < a.thresholds.size(); ++k) EXPECT_NEAR(a.thresholds[k], b.thresholds[k], 1e-9 * std::max(1.0, a.thresholds[k]));
+    for (std::size_t k = 0; k < a.gammas.size(); ++k) EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k])) << i << " " << k;
+  }
+}
+
+TEST(FitSpecialCases, TinyAndDegenerateExemplarsGiveClearResults) {
+  FitOptions options;
+  options.quadrature = 8;
+  // One element: a Poisson model with beta = 1/|W|, and a note.
+  const FitResult one = fit_shape_process(points({{0.5, 0.5, 0}}, {0}, kUnit), options);
+  EXPECT_TRUE(one.model.interactions.empty());
+  EXPECT_NEAR(one.model.categories[0].beta, 1.0, 1e-12);
+  ASSERT_FALSE(one.notes.empty());
+  EXPECT_NE(one.notes[0].find("Poisson"), std::string::npos);
+  // Two elements: still too few pairs for quantiles.
+  const FitResult two = fit_shape_process(points({{0.2, 0.5, 0}, {0.8, 0.5, 0}}, {0, 0}, kUnit), options);
+  EXPECT_TRUE(two.model.interactions.empty());
+  // All pairs along one direction (a row): fits, empty axes pooled, no NaN.
+  std::vector<Vec3> row;
+  for (int i = 0; i < 8; ++i) row.emplace_back(0.05 + 0.12 * i, 0.5, 0);
+  const FitResult line = fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), options);
+  EXPECT_TRUE(std::isfinite(line.log_pseudo_likelihood));
+  EXPECT_FALSE(line.notes.empty());
+  // A category with one element beside a category of six.
+  const FitResult lonely = fit_shape_process(
+      points({{0.1, 0.1, 0}, {0.4, 0.2, 0}, {0.7, 0.15, 0}, {0.2, 0.6, 0}, {0.6, 0.7, 0}, {0.9, 0.8, 0}, {0.5, 0.45, 0}},
+             {0, 0, 0, 0, 0, 0, 1}, kUnit),
+      options);
+  EXPECT_EQ(lonely.model.interactions.size(), 3u);
+  // One element: a finite intensity (large: the other category's hard cores leave it little room).
+  EXPECT_TRUE(std::isfinite(lonely.model.categories[1].beta));
+  EXPECT_GT(lonely.model.categories[1].beta, 0.0);
+  // Bad options and impossible thresholds throw with a message.
+  FitOptions bad = options;
+  bad.quantiles = {0.2, 0.1};
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), bad), std::invalid_argument);
+  FitOptions too_big = options;
+  too_big.thresholds = {0.5, 0.6};  // hard core above every observed distance
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), too_big), std::invalid_argument);
+  FitOptions border = options;
+  border.edge = EdgeTreatment::border;
+  border.thresholds = {0.0, 0.6};
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), border), std::invalid_argument);
+}
+
+TEST(FitSpecialCases, IdenticalShapesAndEdgeTreatments) {
+  // Rings tile: every element one circle of a few sizes; identical shapes are fine.
+  io::ReaderOptions split;
+  split.split_subpaths = true;
+  const Scene bubbles = io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), split);
+  for (const EdgeTreatment edge : {EdgeTreatment::none, EdgeTreatment::periodic, EdgeTreatment::border}) {
+    FitOptions options;
+    options.quadrature = 12;
+    options.edge = edge;
+    options.directions = 2;
+    options.quantiles = {0.0, 0.05};
+    const FitResult fit = fit_shape_process(bubbles, options);
+    EXPECT_TRUE(std::isfinite(fit.log_pseudo_likelihood)) << to_string(edge);
+    EXPECT_GT(fit.model.categories[0].beta, 0.0);
+    if (edge == EdgeTreatment::border) {
+      EXPECT_LT(fit.data_points, 17);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shapeproc::fit
