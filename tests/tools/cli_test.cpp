@@ -130,3 +130,44 @@ TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
 
 }  // namespace
 }  // namespace shapeproc::cli
+
+namespace shapeproc::cli {
+namespace {
+
+TEST(CliFit, FitShowAndPlot) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  const Result fit = run_cli({"fit", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", model});
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  EXPECT_NE(fit.out.find("intensity beta"), std::string::npos);
+  EXPECT_NE(fit.out.find("interaction #e53e3e - #3182ce"), std::string::npos) << fit.out;
+  EXPECT_NE(fit.out.find("log pseudo-likelihood"), std::string::npos);
+  EXPECT_NE(fit.out.find("time: proxies"), std::string::npos);
+  const nlohmann::json saved = nlohmann::json::parse(testing::read_file(model));
+  EXPECT_EQ(saved["format"], "shapeproc-model");
+  EXPECT_EQ(saved["fit"]["arguments"][1], "fit");
+  EXPECT_EQ(saved["shapes"].size(), 34u);
+  const std::string plot = dir.file("plot.svg").string();
+  const Result show = run_cli({"show", model, "--plot", plot});
+  ASSERT_EQ(show.code, 0) << show.err;
+  EXPECT_NE(show.out.find("intensity beta"), std::string::npos);
+  EXPECT_NE(testing::read_file(plot).find("<svg"), std::string::npos);
+}
+
+TEST(CliFit, BadInputAndOptions) {
+  const testing::TempDir dir;
+  dir.write("broken.json", "{\"format\": \"shapeproc-model\",\n \"version\": 1,\n}");
+  expect_one_line_error(run_cli({"show", dir.file("broken.json").string()}), 2, "broken.json:3: malformed JSON");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--quantiles", "0.2,0.1"}),
+                        2, "quantile orders must increase");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--quantiles", "0,0.1",
+                                 "--thresholds", "1,2"}),
+                        2, "excludes");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.txt").string()}), 2, ".json");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--directions", "3"}), 2,
+                        "even number");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.json")));
+}
+
+}  // namespace
+}  // namespace shapeproc::cli
