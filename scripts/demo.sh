@@ -14,4 +14,6 @@ exemplar=data/svg/two-kinds.svg
 ./build/tools/shapeproc convert data/mesh/pebbles.obj -o out/pebbles.ply
 ./build/tools/shapeproc measure "$exemplar" --category-by fill --range 20 -o out/two-kinds-pairs.csv \
   --proxy-out out/two-kinds-proxies.svg
+./build/tools/shapeproc fit "$exemplar" --category-by fill -o out/two-kinds-model.json
+./build/tools/shapeproc show out/two-kinds-model.json --plot out/two-kinds-interaction.svg
 echo "demo outputs are in out/"
