@@ -360,6 +360,14 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     }
   }
   result.quadrature_points = static_cast<int>(design.points.size());
+  // Points with the same category and statistics contribute w·exp(θ·t) with the same t: merge
+  // them (most dummies see no neighbour or the same few), in a deterministic order.
+  {
+    std::map<std::pair<int, std::vector<std::pair<int, int>>>, double> merged;
+    for (QuadraturePoint& q : design.points) merged[{q.category, std::move(q.counts)}] += q.weight;
+    design.points.clear();
+    for (auto& [key, weight] : merged) design.points.push_back({weight, key.first, key.second});
+  }
   result.seconds.quadrature = seconds_since(clock);
 
   // Maximum pseudo-likelihood.
