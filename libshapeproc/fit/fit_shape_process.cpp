@@ -329,7 +329,8 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   // depend on the thread count).
   double max_radius = 0.0;
   for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
-  const double dummy_cell = cell_measure;  // each dummy integrates a cell's worth of locations
+  const double cell_side = std::pow(cell_measure, 1.0 / dimension);  // cells are (nearly) square
+  const int refinement = options.refinement;
   model::NeighbourGrid grid(exemplar.window, dimension, range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * longest / cells_along,
                             periodic);
   for (std::size_t k = 0; k < n; ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
@@ -341,7 +342,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       if (range <= 0) {
         dummy_parts[d] = {CellPart{}};
       } else {
-        dummy_parts[d] = integrate_cell(context, dummies[d].element, dummy_cell);
+        dummy_parts[d] = integrate_cell_adaptive(context, dummies[d].element, cell_side, refinement);
       }
     }
   };
@@ -413,7 +414,8 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       {"quantiles", fixed_thresholds ? nlohmann::json() : nlohmann::json(options.quantiles)},
       {"thresholds", fixed_thresholds ? nlohmann::json(options.thresholds) : nlohmann::json()},
       {"quadrature", {{"cells", result.quadrature_cells}, {"cells_along_longest_side", cells_along},
-                      {"shapes_per_location", options.shapes_per_location}, {"points", result.quadrature_points}}},
+                      {"shapes_per_location", options.shapes_per_location}, {"refinement", options.refinement},
+                      {"points", result.quadrature_points}}},
       {"data_points", result.data_points},
       {"log_pseudo_likelihood", result.log_pseudo_likelihood},
       {"optimiser", {{"method", "NLopt LD_LBFGS, then Newton"}, {"evaluations", mple.evaluations}, {"newton_steps", mple.newton_steps}}},

@@ -30,6 +30,9 @@ struct FitOptions {
   // category taken in rotation (0: all shapes of the category).
   int quadrature = 0;
   int shapes_per_location = 0;
+  // Levels of adaptive refinement of cells that a boundary may cross (each halves the cell;
+  // costly: most cells of an anisotropic model are crossed by some sector boundary).
+  int refinement = 0;
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;

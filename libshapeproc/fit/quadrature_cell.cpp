@@ -42,10 +42,15 @@ double cut_fraction(int dimension, double cell_measure, double x) {
   return (r - x) * (r - x) * (2 * r + x) / (4.0 * r * r * r);  // cap volume / ball volume
 }
 
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double cell_measure) {
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double side,
+                                     bool* uniform) {
   const Interaction& interaction = *context.interaction;
   const geometry::PairMeasurer& measurer = *context.measurer;
+  const double cell_measure = context.dimension == 2 ? side * side : side * side * side;
   const double radius = cell_radius(context.dimension, cell_measure);
+  // Every point of the cell lies within `corner` of its centre.
+  const double corner = 0.5 * side * std::sqrt(static_cast<double>(context.dimension));
+  bool near_boundary = false;
   std::vector<Neighbour> neighbours;
   std::vector<Cut> cuts;
   bool hard_core = false;
@@ -58,10 +63,10 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
     for (int axis = 0; axis < context.dimension; ++axis) {
       if (context.period[axis] > 0) offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
     }
-    if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >= reach + radius) return;
+    if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >= reach + corner) return;
     auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
-    if (lo >= reach + radius) return;
-    int axis = measurer.axis_from_boxes(dummy.shape, other.shape, offset, radius);
+    if (lo >= reach + corner) return;
+    int axis = measurer.axis_from_boxes(dummy.shape, other.shape, offset, corner);
     double angular_margin = -1.0;
     int other_axis = -1;
     if (axis < 0) {
@@ -77,10 +82,10 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
         other_axis = static_cast<int>(((neighbour_sector % half) + half) % half);
         // Near a sector boundary, the rate at which the angle turns as the dummy moves across the
         // direction (a finite difference over the cell radius) converts the margin into a distance.
-        if (angular_margin < 8 * radius / std::max(offset.norm(), radius)) {
-          const Vec3 across(-direction.y() * radius, direction.x() * radius, 0.0);
+        if (angular_margin < 8 * corner / std::max(offset.norm(), corner)) {
+          const Vec3 across(-direction.y() * corner, direction.x() * corner, 0.0);
           const Vec3 turned = measurer.direction(dummy.shape, other.shape, offset + across);
-          const double rate = std::abs(std::atan2(direction.x() * turned.y() - direction.y() * turned.x(), direction.dot(turned))) / radius;
+          const double rate = std::abs(std::atan2(direction.x() * turned.y() - direction.y() * turned.x(), direction.dot(turned))) / corner;
           angular_margin = rate > 0 ? angular_margin / rate : std::numeric_limits<double>::infinity();
         } else {
           angular_margin *= offset.norm();
@@ -96,21 +101,23 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
       return band_low != band_high;
     };
     // With an uncertain axis the other axis's thresholds matter too: measure exactly then.
-    if (angular_margin >= 0 || threshold_near(std::max(0.0, lo - radius), hi + radius)) {
-      d = measurer.distance(dummy.shape, other.shape, offset, reach + radius);
+    if (angular_margin >= 0 || threshold_near(std::max(0.0, lo - corner), hi + corner)) {
+      d = measurer.distance(dummy.shape, other.shape, offset, reach + corner);
       exact = true;
     }
     const int band = interaction.band(dummy.category, other.category, axis, d);
     const int index = static_cast<int>(neighbours.size());
     neighbours.push_back({other.category, band, axis});
+    bool neighbour_near = false;
     if (exact) {
-      // The nearest threshold on either side within the cell radius.
-      const int below = interaction.band(dummy.category, other.category, axis, std::max(0.0, d - radius));
-      const int above = interaction.band(dummy.category, other.category, axis, d + radius);
+      // The nearest threshold on either side within the cell.
+      const int below = interaction.band(dummy.category, other.category, axis, std::max(0.0, d - corner));
+      const int above = interaction.band(dummy.category, other.category, axis, d + corner);
       if (below != band || above != band) {
+        neighbour_near = true;
         // Find the threshold crossing by bisection on the band function (bands are monotone in d).
         const bool downward = below != band;
-        double inside = d, outside = downward ? std::max(0.0, d - radius) : d + radius;
+        double inside = d, outside = downward ? std::max(0.0, d - corner) : d + corner;
         for (int it = 0; it < 60; ++it) {
           const double mid = 0.5 * (inside + outside);
           if (interaction.band(dummy.category, other.category, axis, mid) == band) inside = mid; else outside = mid;
@@ -118,11 +125,12 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
         const double x = std::abs(0.5 * (inside + outside) - d);
         const int other_band = downward ? below : above;
         // Only the nearest crossing on that side is modelled; a second one within the cell is rare.
-        cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, axis});
+        if (x < radius) cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, axis});
       }
     }
-    if (angular_margin >= 0 && d < reach + radius) {
+    if (angular_margin >= 0 && d < reach + corner) {
       const double x = angular_margin;  // already a distance
+      if (x < corner) neighbour_near = true;
       if (x < radius) {
         const int other_band = interaction.band(dummy.category, other.category, other_axis, d);
         // Another axis means other parameters even in the same band.
@@ -131,13 +139,21 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
         }
       }
     }
-    if (band == Interaction::kHardCore && cuts.empty()) hard_core = true;  // the whole cell is forbidden
-    else if (band == Interaction::kHardCore) {
+    near_boundary = near_boundary || neighbour_near;
+    if (band == Interaction::kHardCore) {
       bool rescued = false;
       for (const Cut& cut : cuts) rescued = rescued || (cut.neighbour == index && cut.other_band != Interaction::kHardCore);
-      if (!rescued) hard_core = true;
+      // Deep inside a hard core (no boundary of this neighbour within the cell) the whole cell is
+      // forbidden, whatever the others do.
+      if (!rescued && !neighbour_near) {
+        hard_core = true;
+        near_boundary = false;
+      } else if (!rescued) {
+        hard_core = true;
+      }
     }
   });
+  if (uniform) *uniform = !near_boundary;
   std::vector<CellPart> parts;
   if (hard_core) return parts;
   // At most 5 cuts are combined (32 parts); further ones keep the centre's value.
@@ -166,6 +182,27 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
       if (n.band >= 0) counts.add(interaction.parameter(dummy.category, n.category, n.axis, n.band));
     }
     if (!forbidden) parts.push_back({fraction, std::move(counts.counts)});
+  }
+  return parts;
+}
+
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, double side,
+                                              int depth) {
+  bool uniform = true;
+  std::vector<CellPart> parts = integrate_cell(context, dummy, side, &uniform);
+  if (uniform || depth <= 0) return parts;
+  parts.clear();
+  const int children = context.dimension == 2 ? 4 : 8;
+  const double share = 1.0 / children;
+  for (int child = 0; child < children; ++child) {
+    geometry::Element sub = dummy;
+    for (int axis = 0; axis < context.dimension; ++axis) {
+      sub.position[axis] += ((child >> axis) & 1 ? 0.25 : -0.25) * side;
+    }
+    for (CellPart& part : integrate_cell_adaptive(context, sub, 0.5 * side, depth - 1)) {
+      part.fraction *= share;
+      parts.push_back(std::move(part));
+    }
   }
   return parts;
 }

@@ -35,9 +35,17 @@ struct CellContext {
   geometry::Vec3 period = geometry::Vec3::Zero();  // window sizes when periodic, else 0
 };
 
-// Parts of the cell of measure `cell_measure` around `dummy` with λ > 0 (hard-core parts
-// dropped; an empty result when the whole cell is hard core).
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double cell_measure);
+// Parts of the square (cube) cell of side `side` around `dummy` with λ > 0 (hard-core parts
+// dropped; an empty result when the whole cell is hard core). `uniform` tells whether no
+// boundary can cross the cell at all (tested with the circumscribed radius), so that the
+// result is exact.
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double side,
+                                     bool* uniform = nullptr);
+
+// integrate_cell, refined: a cell that is not uniform is split into 2^dim sub-cells, down to
+// `depth` levels; the finest cells use the cut estimate. Fractions are of the top cell.
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, double side,
+                                              int depth);
 
 // Fraction of a disc (2D) or ball (3D) of the given measure lying beyond a plane at distance
 // x ≥ 0 from its centre.
