@@ -80,16 +80,10 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
         const long neighbour_sector = static_cast<long>(sector) + (angle > sector * step ? 1 : -1);
         const long half = measurer.bins().directions() / 2;
         other_axis = static_cast<int>(((neighbour_sector % half) + half) % half);
-        // Near a sector boundary, the rate at which the angle turns as the dummy moves across the
-        // direction (a finite difference over the cell radius) converts the margin into a distance.
-        if (angular_margin < 8 * corner / std::max(offset.norm(), corner)) {
-          const Vec3 across(-direction.y() * corner, direction.x() * corner, 0.0);
-          const Vec3 turned = measurer.direction(dummy.shape, other.shape, offset + across);
-          const double rate = std::abs(std::atan2(direction.x() * turned.y() - direction.y() * turned.x(), direction.dot(turned))) / corner;
-          angular_margin = rate > 0 ? angular_margin / rate : std::numeric_limits<double>::infinity();
-        } else {
-          angular_margin *= offset.norm();
-        }
+        // The angle to the sector boundary becomes a distance in the plane at the rate of a
+        // direction between centres, 1/|offset|; the gravitation direction turns at a similar
+        // rate, and measuring its own rate would cost one more direction per near pair.
+        angular_margin *= offset.norm();
       }
     }
     // Thresholds of this axis near [lo, hi] decide whether the exact distance is needed.
