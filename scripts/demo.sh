@@ -16,4 +16,6 @@ exemplar=data/svg/two-kinds.svg
   --proxy-out out/two-kinds-proxies.svg
 ./build/tools/shapeproc fit "$exemplar" --category-by fill -o out/two-kinds-model.json
 ./build/tools/shapeproc show out/two-kinds-model.json --plot out/two-kinds-interaction.svg
+# An output of four times the exemplar's area (twice each side), seed recorded in the SVG.
+./build/tools/shapeproc sample out/two-kinds-model.json --size 440,440 --seed 1 -o out/two-kinds-synthesis.svg
 echo "demo outputs are in out/"

@@ -120,6 +120,7 @@ std::string extension_of(const std::filesystem::path& path) {
 
 std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), 0, "no such file");
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(path.string(), 0, "is a directory, not a file");
   }

@@ -171,3 +171,30 @@ TEST(CliFit, BadInputAndOptions) {
 
 }  // namespace
 }  // namespace shapeproc::cli
+
+namespace shapeproc::cli {
+namespace {
+
+TEST(CliSample, SampleRecordsSeedAndParameters) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  ASSERT_EQ(run_cli({"fit", data("third-party/hero-patterns/bubbles.svg"), "--split-subpaths", "--quadrature", "8", "-o", model}).code, 0);
+  const std::string out = dir.file("out.svg").string();
+  const Result r = run_cli({"sample", model, "-o", out, "--size", "200,200", "--seed", "7", "--iterations", "3000",
+                            "--trace", dir.file("trace.csv").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string svg = testing::read_file(out);
+  EXPECT_NE(svg.find("&quot;seed&quot;:7"), std::string::npos);
+  EXPECT_NE(svg.find("viewBox=\"0 0 200 200\""), std::string::npos);
+  EXPECT_EQ(testing::read_file(dir.file("trace.csv")).rfind("step,elements,log_density\n", 0), 0u);
+  // Same seed, same output.
+  const std::string again = dir.file("again.svg").string();
+  ASSERT_EQ(run_cli({"sample", model, "-o", again, "--size", "200,200", "--seed", "7", "--iterations", "3000"}).code, 0);
+  const auto body = [](const std::string& text) { return text.substr(text.find("</metadata>")); };
+  EXPECT_EQ(body(testing::read_file(again)), body(svg));
+  expect_one_line_error(run_cli({"sample", model, "-o", out, "--size", "200"}), 2, "--size");
+  expect_one_line_error(run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1"}), 2, "no such file");
+}
+
+}  // namespace
+}  // namespace shapeproc::cli

@@ -1,0 +1,172 @@
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/model/neighbour_grid.hpp"
+#include "libshapeproc/sample/random.hpp"
+
+namespace shapeproc::sample {
+
+using geometry::Element;
+using geometry::Vec3;
+
+namespace {
+
+double domain_measure(const geometry::Box3& domain, int dimension) {
+  const Vec3 sizes = domain.sizes();
+  return dimension == 3 ? sizes.prod() : sizes.x() * sizes.y();
+}
+
+// The state: elements in a vector (ids are slots; removed slots are reused) and a grid.
+class Configuration {
+ public:
+  Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
+                const geometry::Box3& domain, int dimension, double reach, bool periodic)
+      : interaction_(interaction), measurer_(measurer), grid_(domain, dimension, reach, periodic) {}
+
+  int size() const { return static_cast<int>(alive_.size()); }
+  const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }
+  int slot_of_rank(std::size_t rank) const { return alive_[rank]; }
+
+  // log Σ log Γ(ξ, x_m) over the elements except `skip`; −∞ on a hard core (early exit).
+  double log_interaction(const Element& xi, int skip) const {
+    double total = 0.0;
+    bool forbidden = false;
+    grid_.for_each_candidate(xi.position, [&](int slot) {
+      if (forbidden || slot == skip) return;
+      const model::PairEffect effect = model::pair_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
+      if (effect.band == model::Interaction::kHardCore) {
+        forbidden = true;
+      } else if (effect.band >= 0) {
+        total += interaction_.log_gamma(xi.category, elements_[static_cast<std::size_t>(slot)].category, effect.axis, effect.band);
+      }
+    });
+    return forbidden ? -std::numeric_limits<double>::infinity() : total;
+  }
+
+  void add(const Element& e) {
+    int slot;
+    if (!free_.empty()) {
+      slot = free_.back();
+      free_.pop_back();
+      elements_[static_cast<std::size_t>(slot)] = e;
+    } else {
+      slot = static_cast<int>(elements_.size());
+      elements_.push_back(e);
+    }
+    position_in_alive_.resize(elements_.size(), -1);
+    position_in_alive_[static_cast<std::size_t>(slot)] = static_cast<int>(alive_.size());
+    alive_.push_back(slot);
+    grid_.insert(slot, e.position);
+  }
+
+  void remove(int slot) {
+    grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
+    const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
+    const int last = alive_.back();
+    alive_[static_cast<std::size_t>(rank)] = last;
+    position_in_alive_[static_cast<std::size_t>(last)] = rank;
+    alive_.pop_back();
+    position_in_alive_[static_cast<std::size_t>(slot)] = -1;
+    free_.push_back(slot);
+  }
+
+  std::vector<Element> elements() const {
+    std::vector<Element> out;
+    std::vector<int> slots = alive_;
+    std::sort(slots.begin(), slots.end());  // a deterministic order
+    for (int slot : slots) out.push_back(elements_[static_cast<std::size_t>(slot)]);
+    return out;
+  }
+
+ private:
+  const model::Interaction& interaction_;
+  const geometry::PairMeasurer& measurer_;
+  model::NeighbourGrid grid_;
+  std::vector<Element> elements_;
+  std::vector<int> alive_, free_, position_in_alive_;
+};
+
+}  // namespace
+
+long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain) {
+  double expected = 0.0;
+  for (const auto& c : model.categories) expected += c.beta * domain_measure(domain, model.dimension);
+  return std::max<long long>(20000, static_cast<long long>(std::ceil(200.0 * expected)));
+}
+
+SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Box3& domain,
+                                  const SamplerOptions& options) {
+  model::validate(model);
+  const int dimension = model.dimension;
+  const double measure = domain_measure(domain, dimension);
+  if (!(measure > 0)) throw std::invalid_argument("sample: the domain has zero size");
+
+  SampleResult result;
+  geometry::Scene& scene = result.scene;
+  scene = model.shape_space();
+  scene.window = domain;
+  const model::Interaction interaction(model);
+  const geometry::PairMeasurer measurer(scene, model.measurement_options(options.periodic));
+  double max_radius = 0.0;
+  for (std::size_t s = 0; s < scene.shapes.size(); ++s) max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
+  Configuration state(interaction, measurer, domain, dimension, interaction.range() + 2 * max_radius, options.periodic);
+
+  const int categories = static_cast<int>(model.categories.size());
+  std::vector<std::vector<int>> shapes_of(static_cast<std::size_t>(categories));
+  if (model.shapes.empty()) {
+    for (auto& list : shapes_of) list.push_back(0);  // the point shape
+  } else {
+    for (std::size_t s = 0; s < model.shapes.size(); ++s) shapes_of[static_cast<std::size_t>(model.shapes[s].category)].push_back(static_cast<int>(s));
+  }
+  std::vector<double> log_beta;
+  for (const auto& c : model.categories) log_beta.push_back(std::log(c.beta));
+  const double log_measure_categories = std::log(measure) + std::log(static_cast<double>(categories));
+
+  Random random(options.seed);
+  result.iterations = options.iterations > 0 ? options.iterations : default_iterations(model, domain);
+  double log_density = 0.0;  // unnormalised, tracked incrementally
+  for (long long step = 1; step <= result.iterations; ++step) {
+    const int n = state.size();
+    if (random.uniform() < 0.5) {
+      ++result.births_proposed;
+      Element xi;
+      for (int axis = 0; axis < dimension; ++axis) xi.position[axis] = random.uniform(domain.min()[axis], domain.max()[axis]);
+      xi.category = static_cast<int>(random.index(static_cast<std::uint64_t>(categories)));
+      const auto& shapes = shapes_of[static_cast<std::size_t>(xi.category)];
+      xi.shape = shapes[random.index(shapes.size())];
+      const double interaction_term = state.log_interaction(xi, -1);
+      const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + interaction_term;
+      const double log_ratio = log_lambda + log_measure_categories - std::log(n + 1.0);
+      if (std::isfinite(log_lambda) && std::log(random.uniform()) < log_ratio) {
+        state.add(xi);
+        log_density += log_lambda;
+        ++result.births_accepted;
+      }
+    } else {
+      ++result.deaths_proposed;
+      if (n > 0) {
+        const int slot = state.slot_of_rank(random.index(static_cast<std::uint64_t>(n)));
+        const Element& x = state.at(slot);
+        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + state.log_interaction(x, slot);
+        const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories - log_lambda;
+        if (std::log(random.uniform()) < log_ratio) {
+          log_density -= log_lambda;
+          state.remove(slot);
+          ++result.deaths_accepted;
+        }
+      }
+    }
+    if (options.trace_every > 0 && step % options.trace_every == 0) {
+      result.trace.push_back({step, state.size(), log_density});
+    }
+  }
+  scene.elements = state.elements();
+  return result;
+}
+
+}  // namespace shapeproc::sample
