@@ -37,6 +37,25 @@ nlohmann::json ReaderFlags::to_json() const {
   return j;
 }
 
+void add_measurement_kind_options(CLI::App& command, std::string& distance, std::string& direction) {
+  command.add_option("--distance", distance, "shape, centroid or hausdorff")
+      ->check(CLI::IsMember({"shape", "centroid", "hausdorff"}))
+      ->capture_default_str();
+  command.add_option("--direction", direction, "gravitation or centroid")
+      ->check(CLI::IsMember({"gravitation", "centroid"}))
+      ->capture_default_str();
+}
+
+geometry::DistanceKind distance_kind(const std::string& name) {
+  if (name == "centroid") return geometry::DistanceKind::centroid;
+  if (name == "hausdorff") return geometry::DistanceKind::hausdorff;
+  return geometry::DistanceKind::shape;
+}
+
+geometry::DirectionKind direction_kind(const std::string& name) {
+  return name == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+}
+
 io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,
                                const nlohmann::json& parameters) {
   const nlohmann::json record = {{"tool", "shapeproc"},

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 
@@ -24,6 +25,11 @@ struct ReaderFlags {
   io::ReaderOptions options() const;  // throws io::UsageError
   nlohmann::json to_json() const;
 };
+
+// --distance shape|centroid|hausdorff and --direction gravitation|centroid, and their values.
+void add_measurement_kind_options(CLI::App& command, std::string& distance, std::string& direction);
+geometry::DistanceKind distance_kind(const std::string& name);
+geometry::DirectionKind direction_kind(const std::string& name);
 
 // Provenance of an output: tool, version, subcommand, the full argument list and parameters.
 io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,

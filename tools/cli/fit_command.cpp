@@ -47,10 +47,8 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   options.edge = args.edge == "periodic" ? fit::EdgeTreatment::periodic
                  : args.edge == "border" ? fit::EdgeTreatment::border
                                          : fit::EdgeTreatment::none;
-  options.distance = args.distance == "centroid"    ? geometry::DistanceKind::centroid
-                     : args.distance == "hausdorff" ? geometry::DistanceKind::hausdorff
-                                                    : geometry::DistanceKind::shape;
-  options.direction = args.direction == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+  options.distance = distance_kind(args.distance);
+  options.direction = direction_kind(args.direction);
   options.quadrature = args.quadrature;
   options.shapes_per_location = args.shapes_per_location;
   options.refinement = args.refine;
@@ -97,12 +95,7 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   command->add_option("--edge", args->edge, "edge treatment: none, periodic or border")
       ->check(CLI::IsMember({"none", "periodic", "border"}))
       ->capture_default_str();
-  command->add_option("--distance", args->distance, "shape, centroid or hausdorff")
-      ->check(CLI::IsMember({"shape", "centroid", "hausdorff"}))
-      ->capture_default_str();
-  command->add_option("--direction", args->direction, "gravitation or centroid")
-      ->check(CLI::IsMember({"gravitation", "centroid"}))
-      ->capture_default_str();
+  add_measurement_kind_options(*command, args->distance, args->direction);
   command->add_option("--quadrature", args->quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 8 in 3D)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--shapes-per-location", args->shapes_per_location,

@@ -54,11 +54,8 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   const geometry::Scene scene = io::read_scene(args.input, reader);
 
   geometry::MeasurementOptions options;
-  options.distance = args.distance == "centroid"    ? geometry::DistanceKind::centroid
-                     : args.distance == "hausdorff" ? geometry::DistanceKind::hausdorff
-                                                    : geometry::DistanceKind::shape;
-  options.direction =
-      args.direction == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+  options.distance = distance_kind(args.distance);
+  options.direction = direction_kind(args.direction);
   options.directions = args.directions > 0 ? args.directions : (scene.dimension == 3 ? 12 : 8);
   options.periodic = args.periodic;
   options.proxy.tolerance = args.proxy_tolerance;
@@ -128,12 +125,7 @@ void add_measure_command(CLI::App& app, Action& action, const std::vector<std::s
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "pairs CSV (standard output when absent)");
   command->add_option("--range", args->range, "only pairs with distance below R (default: all pairs)");
-  command->add_option("--distance", args->distance, "shape, centroid or hausdorff")
-      ->check(CLI::IsMember({"shape", "centroid", "hausdorff"}))
-      ->capture_default_str();
-  command->add_option("--direction", args->direction, "gravitation or centroid")
-      ->check(CLI::IsMember({"gravitation", "centroid"}))
-      ->capture_default_str();
+  add_measurement_kind_options(*command, args->distance, args->direction);
   command->add_option("--directions", args->directions,
                       "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1 (default 12)");
   command->add_flag("--periodic", args->periodic, "the window is a torus (minimum-image offsets)");
