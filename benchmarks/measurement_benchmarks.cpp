@@ -53,27 +53,21 @@ Scene two_spheres(int triangles) {
   return fixtures::scene_of_meshes({mesh, mesh}, {{0, 0, 0}, {2.1, 0.3, 0.2}});
 }
 
-void BM_Distance3D(benchmark::State& state) {
+// d (what = 0) or o (what = 1) between the two spheres.
+void BM_Spheres(benchmark::State& state, int what) {
   const Scene scene = two_spheres(static_cast<int>(state.range(0)));
   MeasurementOptions options = exact_proxies();
   options.directions = 12;
   const PairMeasurer measurer(scene, options);
   const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
-  for (auto _ : state) benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
+  for (auto _ : state) {
+    if (what == 0) benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
+    else benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+  }
   state.counters["triangles"] = static_cast<double>(measurer.proxies3()[0].triangles.size());
 }
-BENCHMARK(BM_Distance3D)->Arg(50)->Arg(500);
-
-void BM_Direction3D(benchmark::State& state) {
-  const Scene scene = two_spheres(static_cast<int>(state.range(0)));
-  MeasurementOptions options = exact_proxies();
-  options.directions = 12;
-  const PairMeasurer measurer(scene, options);
-  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
-  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
-  state.counters["triangles"] = static_cast<double>(measurer.proxies3()[0].triangles.size());
-}
-BENCHMARK(BM_Direction3D)->Arg(50)->Arg(500);
+BENCHMARK_CAPTURE(BM_Spheres, distance3d, 0)->Arg(50)->Arg(500);
+BENCHMARK_CAPTURE(BM_Spheres, direction3d, 1)->Arg(50)->Arg(500);
 
 // 1,000 random 12-gons (radius 0.4 to 1) at density about 0.25 per unit area, each its own shape.
 Scene thousand_elements() {

@@ -127,9 +127,6 @@ MassModel2 make_mass_model(std::vector<Vec2> points, std::vector<double> weights
 MassModel3 make_mass_model(std::vector<Vec3> points, std::vector<double> weights) {
   return build<3>(std::move(points), std::move(weights));
 }
-Vec2 gravitation_force(const MassModel2& a, const MassModel2& b, const Vec2& offset, double theta) {
-  return force<2>(a, b, offset, theta);
-}
 Vec3 gravitation_force(const MassModel3& a, const MassModel3& b, const Vec3& offset, double theta) {
   return force<3>(a, b, offset, theta);
 }

@@ -58,7 +58,7 @@ Eigen::Matrix<double, D, 1> far_field_force(double mass_a, const Eigen::Matrix<d
 }
 
 // F(a, b) with b moved by `offset`. theta is the Barnes–Hut opening parameter (0 = exact sum).
-Vec2 gravitation_force(const MassModel2& a, const MassModel2& b, const Vec2& offset, double theta);
+// (2D regions use the exact boundary integral of region_gravitation.hpp instead.)
 Vec3 gravitation_force(const MassModel3& a, const MassModel3& b, const Vec3& offset, double theta);
 
 // The exact double sum over all point pairs (the reference for tests and for tiny models).

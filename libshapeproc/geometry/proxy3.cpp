@@ -138,23 +138,21 @@ Proxy3 make_proxy3(const Shape& shape, const ProxyOptions& options) {
     proxy.mass = make_mass_model(std::vector<Vec3>{proxy.solid.centroid}, {proxy.solid.volume});
     return proxy;
   }
-  if (points.empty()) {
-    for (const auto& t : proxy.triangles) {
-      const Vec3 &a = proxy.vertices[t[0]], &b = proxy.vertices[t[1]], &c = proxy.vertices[t[2]];
-      const double area = 0.5 * (b - a).cross(c - a).norm();
-      // Split into m^2 similar triangles so that samples are about a cell apart.
-      const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(area) / std::max(h, 1e-300))));
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m - i; ++j) {
-          // upright sub-triangle centroid, and the inverted one when it exists
-          points.push_back(a + ((i + 1.0 / 3) * (b - a) + (j + 1.0 / 3) * (c - a)) / m);
+  for (const auto& t : proxy.triangles) {
+    const Vec3 &a = proxy.vertices[t[0]], &b = proxy.vertices[t[1]], &c = proxy.vertices[t[2]];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    // Split into m^2 similar triangles so that samples are about a cell apart.
+    const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(area) / std::max(h, 1e-300))));
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m - i; ++j) {
+        // upright sub-triangle centroid, and the inverted one when it exists
+        points.push_back(a + ((i + 1.0 / 3) * (b - a) + (j + 1.0 / 3) * (c - a)) / m);
+        weights.push_back(area / (m * m) * std::max(h, 1e-300));
+        if (i + j + 1 < m) {
+          points.push_back(a + ((i + 2.0 / 3) * (b - a) + (j + 2.0 / 3) * (c - a)) / m);
           weights.push_back(area / (m * m) * std::max(h, 1e-300));
-          if (i + j + 1 < m) {
-            points.push_back(a + ((i + 2.0 / 3) * (b - a) + (j + 2.0 / 3) * (c - a)) / m);
-            weights.push_back(area / (m * m) * std::max(h, 1e-300));
-          }
         }
-    }
+      }
   }
   if (points.empty()) {
     points.push_back(proxy.box.center());
