@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
+#include "libshapeproc/fit/line_quadrature.hpp"
 #include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/model/interaction.hpp"
@@ -55,6 +56,7 @@ void check_options(const FitOptions& o) {
       }
     }
   }
+  if (o.lines && o.refinement > 0) throw std::invalid_argument("fit: --refine applies to cells, not to --quadrature-lines");
   if (o.quadrature < 0 || o.shapes_per_location < 0 || o.min_pairs_per_axis < 1) {
     throw std::invalid_argument("fit: quadrature, shapes per location and minimum pairs must be positive");
   }
@@ -84,6 +86,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   FitResult result;
   model::ShapeProcessModel& model = result.model;
   const int dimension = exemplar.dimension;
+  if (options.lines && dimension != 2) throw std::invalid_argument("fit: --quadrature-lines is for 2D exemplars");
   model.dimension = dimension;
   model.units = exemplar.units;
   model.measurement.distance = options.distance;
@@ -290,7 +293,8 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   }
   struct Dummy {
     Element element;
-    double weight;
+    double weight;       // of the dummy's cell
+    double line_weight;  // of the whole line through the cell, before the data points' share
   };
   std::vector<Dummy> dummies;
   for (int c = 0; c < categories; ++c) {
@@ -314,7 +318,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
         e.category = c;
         e.shape = shapes[static_cast<std::size_t>((static_cast<long>(cell) * m + r) % m_c)];
         e.position = centre;
-        dummies.push_back({e, weight});
+        dummies.push_back({e, weight, cell_measure / static_cast<double>(m) * count[0]});
       }
       for (int k : inside) {
         QuadraturePoint q;
@@ -326,40 +330,80 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     }
   }
   // Each dummy integrated over its cell against the data, on two threads (results do not
-  // depend on the thread count).
+  // depend on the thread count). With `lines` (2D), every row of cells becomes the line through
+  // the cell centres, integrated exactly along its length (line_quadrature.hpp).
   double max_radius = 0.0;
   for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
   const double cell_side = std::pow(cell_measure, 1.0 / dimension);  // cells are (nearly) square
   const int refinement = options.refinement;
-  model::NeighbourGrid grid(exemplar.window, dimension, range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * longest / cells_along,
-                            periodic);
-  for (std::size_t k = 0; k < n; ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
-  CellContext context{&interaction, &measurer, &exemplar.elements, &grid, dimension, Vec3::Zero()};
-  if (periodic) context.period = exemplar.window.sizes();
+  const bool lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> dummy_parts(dummies.size());
-  auto evaluate = [&](std::size_t begin, std::size_t step) {
-    for (std::size_t d = begin; d < dummies.size(); d += step) {
-      if (range <= 0) {
-        dummy_parts[d] = {CellPart{}};
-      } else {
-        dummy_parts[d] = integrate_cell_adaptive(context, dummies[d].element, cell_side, refinement);
-      }
-    }
-  };
   const std::size_t threads = std::max(1u, std::min(2u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
-  evaluate(0, threads);
-  for (std::thread& w : workers) w.join();
+  if (lines) {
+    LineContext context;
+    context.interaction = &interaction;
+    context.measurer = &measurer;
+    context.data = &exemplar.elements;
+    context.dimension = dimension;
+    if (periodic) context.period = exemplar.window.sizes();
+    context.tolerance = 1e-6 * longest;
+    // Dummies of a row are its cells left to right; the first of each (category, row, shape)
+    // carries the whole line, the others nothing.
+    const double row_length = sizes.x();
+    auto evaluate = [&](std::size_t begin, std::size_t step) {
+      for (std::size_t d = begin; d < dummies.size(); d += step) {
+        const Element& dummy = dummies[d].element;
+        const int column = static_cast<int>(std::floor((dummy.position.x() - region.min().x()) / sizes.x() * count[0]));
+        if (column != 0) continue;
+        Vec3 start = dummy.position;
+        start.x() = region.min().x();
+        for (LinePiece& piece : integrate_line(context, dummy.category, dummy.shape, start, row_length)) {
+          dummy_parts[d].push_back({piece.length / row_length, std::move(piece.counts)});
+        }
+      }
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
+    evaluate(0, threads);
+    for (std::thread& w : workers) w.join();
+  } else {
+    model::NeighbourGrid grid(exemplar.window, dimension,
+                              range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * longest / cells_along, periodic);
+    for (std::size_t k = 0; k < n; ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
+    CellContext context{&interaction, &measurer, &exemplar.elements, &grid, dimension, Vec3::Zero()};
+    if (periodic) context.period = exemplar.window.sizes();
+    auto evaluate = [&](std::size_t begin, std::size_t step) {
+      for (std::size_t d = begin; d < dummies.size(); d += step) {
+        if (range <= 0) {
+          dummy_parts[d] = {CellPart{}};
+        } else {
+          dummy_parts[d] = integrate_cell_adaptive(context, dummies[d].element, cell_side, refinement);
+        }
+      }
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
+    evaluate(0, threads);
+    for (std::thread& w : workers) w.join();
+  }
+  // Lines: the data points' share comes off every line of their category alike, so that the
+  // weights still sum to |W|.
+  std::vector<double> line_scale(static_cast<std::size_t>(categories), 1.0);
+  if (lines) {
+    const double measure = sizes.head(dimension).prod();
+    for (const QuadraturePoint& q : design.points) line_scale[static_cast<std::size_t>(q.category)] -= q.weight / measure;
+  }
   for (std::size_t d = 0; d < dummies.size(); ++d) {
     for (CellPart& part : dummy_parts[d]) {
       QuadraturePoint q;
-      q.weight = dummies[d].weight * part.fraction;
+      q.weight = lines ? dummies[d].line_weight * line_scale[static_cast<std::size_t>(dummies[d].element.category)] * part.fraction
+                       : dummies[d].weight * part.fraction;
       q.category = dummies[d].element.category;
       q.counts = std::move(part.counts);
       design.points.push_back(std::move(q));
     }
   }
+  result.quadrature_lines = lines;
   result.quadrature_points = static_cast<int>(design.points.size());
   // Points with the same category and statistics contribute w·exp(θ·t) with the same t: merge
   // them (most dummies see no neighbour or the same few), in a deterministic order.
@@ -413,7 +457,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       {"edge", to_string(options.edge)},
       {"quantiles", fixed_thresholds ? nlohmann::json() : nlohmann::json(options.quantiles)},
       {"thresholds", fixed_thresholds ? nlohmann::json(options.thresholds) : nlohmann::json()},
-      {"quadrature", {{"cells", result.quadrature_cells}, {"cells_along_longest_side", cells_along},
+      {"quadrature", {{"method", result.quadrature_lines ? "lines" : "cells"}, {"cells", result.quadrature_cells}, {"cells_along_longest_side", cells_along},
                       {"shapes_per_location", options.shapes_per_location}, {"refinement", options.refinement},
                       {"points", result.quadrature_points}}},
       {"data_points", result.data_points},

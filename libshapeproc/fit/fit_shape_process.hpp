@@ -33,6 +33,9 @@ struct FitOptions {
   // Levels of adaptive refinement of cells that a boundary may cross (each halves the cell;
   // costly: most cells of an anisotropic model are crossed by some sector boundary).
   int refinement = 0;
+  // 2D only: integrate each row of cells as a line, exactly along the row (line_quadrature.hpp);
+  // costlier than cells at the same resolution, see docs/fit.md.
+  bool lines = false;
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;
@@ -44,6 +47,7 @@ struct FitResult {
   int data_points = 0;        // data points in the LPL's sum
   int quadrature_points = 0;  // dummy and data points in the quadrature (λ > 0)
   int quadrature_cells = 0;
+  bool quadrature_lines = false;  // 2D: rows of cells integrated as exact lines
   std::vector<std::string> notes;  // fallbacks and special cases, one sentence each
   struct {
     double proxies = 0, measurements = 0, quadrature = 0, optimisation = 0;

@@ -30,6 +30,10 @@ class Interaction {
   double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
   double max_range(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_range; }
 
+  // δ_0 … δ_K of a pair's axis (the pair must interact).
+  const std::vector<double>& thresholds(int ca, int cb, int axis) const {
+    return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].thresholds;
+  }
   // Band of a pair at `distance` along `axis`: kHardCore, kBeyond or k in 0..K-1 (γ_{k+1}).
   int band(int ca, int cb, int axis, double distance) const;
   // θ index of a band (betas come first: θ[c] = log β_c).

@@ -82,6 +82,12 @@ TEST(Fit, TinyStraussMatchesTheExactMple) {
   const FitResult fit = fit_shape_process(scene, options);
   EXPECT_NEAR(fit.model.categories[0].beta / std::exp(b), 1.0, 1e-3);
   EXPECT_NEAR(fit.model.interactions[0].axes[0].gammas[0] / std::exp(g), 1.0, 1e-3);
+  // Lines, exact along each row: the same accuracy from 60 rows.
+  options.lines = true;
+  options.quadrature = 60;
+  const FitResult lines = fit_shape_process(scene, options);
+  EXPECT_NEAR(lines.model.categories[0].beta / std::exp(b), 1.0, 1e-3);
+  EXPECT_NEAR(lines.model.interactions[0].axes[0].gammas[0] / std::exp(g), 1.0, 1e-3);
 }
 
 Scene transformed(const Scene& scene, const Eigen::Matrix2d& linear, const Vec3& shift) {

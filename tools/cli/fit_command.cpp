@@ -27,6 +27,7 @@ struct FitArguments {
   int quadrature = 0;
   int shapes_per_location = 0;
   int refine = 0;
+  bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   ReaderFlags reader;
 };
@@ -52,6 +53,7 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   options.quadrature = args.quadrature;
   options.shapes_per_location = args.shapes_per_location;
   options.refinement = args.refine;
+  options.lines = args.lines;
   options.proxy_tolerance = args.proxy_tolerance;
   if (!(args.proxy_tolerance >= 0 && args.proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
   const io::ReaderOptions reader = args.reader.options();
@@ -101,6 +103,8 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   command->add_option("--shapes-per-location", args->shapes_per_location,
                       "shapes crossed with each quadrature location, in rotation (default: all)")
       ->check(CLI::NonNegativeNumber);
+  command->add_flag("--quadrature-lines", args->lines,
+                    "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");
   command->add_option("--refine", args->refine, "levels of adaptive refinement of quadrature cells near boundaries (default 0)")
       ->check(CLI::Range(0, 6));
   command->add_option("--proxy-tolerance", args->proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
