@@ -6,7 +6,7 @@ packages=(
   libeigen3-dev libboost-dev libcgal-dev libopenmesh-dev libpugixml-dev libsvgpp-dev
   libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev pkgconf
 )
 missing=()
 for p in "${packages[@]}"; do

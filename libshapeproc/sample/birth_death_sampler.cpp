@@ -91,11 +91,47 @@ class Configuration {
   std::vector<int> alive_, free_, position_in_alive_;
 };
 
+// Mean of a raster's values (the share of β the domain keeps), and the fraction inside a mask.
+double raster_mean(const render::Raster& r, bool threshold) {
+  double total = 0.0;
+  for (float v : r.values) total += threshold ? (v >= 0.5f ? 1.0 : 0.0) : v;
+  return r.values.empty() ? 0.0 : total / static_cast<double>(r.values.size());
+}
+
+// Whether the element's proxy lies inside the mask: its reference position and its outline at
+// half-pixel spacing.
+bool inside_mask(const render::Raster& mask, const geometry::Box3& domain, const geometry::PairMeasurer& measurer,
+                 const Element& e) {
+  const geometry::Vec2 at = e.position.head<2>();
+  if (mask.sample(domain, at) < 0.5f) return false;
+  const double pixel = 0.5 * std::min(domain.sizes().x() / mask.width, domain.sizes().y() / mask.height);
+  const geometry::Proxy2& proxy = measurer.proxies2()[static_cast<std::size_t>(e.shape)];
+  for (std::size_t k = 0; k < proxy.segment_start.size(); ++k) {
+    const geometry::Vec2 a = proxy.segment_start[k] + at, b = proxy.segment_end[k] + at;
+    const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / pixel)));
+    for (int i = 0; i <= steps; ++i) {
+      if (mask.sample(domain, a + (b - a) * (static_cast<double>(i) / steps)) < 0.5f) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
-long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain) {
+std::uint64_t chain_seed(std::uint64_t seed, int chain) {
+  if (chain == 0) return seed;
+  // SplitMix64 of (seed, chain): well-separated streams for neighbouring seeds and chains.
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(chain + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain, const SamplerOptions& options) {
   double expected = 0.0;
   for (const auto& c : model.categories) expected += c.beta * domain_measure(domain, model.dimension);
+  if (options.mask) expected *= raster_mean(*options.mask, true);
+  if (options.intensity) expected *= raster_mean(*options.intensity, false);
   return std::max<long long>(20000, static_cast<long long>(std::ceil(200.0 * expected)));
 }
 
@@ -103,6 +139,9 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
                                   const SamplerOptions& options) {
   model::validate(model);
   const int dimension = model.dimension;
+  if (dimension != 2 && (options.mask || options.intensity)) {
+    throw std::invalid_argument("sample: domain masks and intensity maps are for 2D models");
+  }
   const double measure = domain_measure(domain, dimension);
   if (!(measure > 0)) throw std::invalid_argument("sample: the domain has zero size");
 
@@ -128,7 +167,20 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
   const double log_measure_categories = std::log(measure) + std::log(static_cast<double>(categories));
 
   Random random(options.seed);
-  result.iterations = options.iterations > 0 ? options.iterations : default_iterations(model, domain);
+  result.iterations = options.iterations > 0 ? options.iterations : default_iterations(model, domain, options);
+  // log of the local factor of β at a location (−∞ outside the mask or where the map is black).
+  auto log_local = [&](const Element& e) {
+    double factor = 0.0;
+    if (options.intensity) {
+      const float v = options.intensity->sample(domain, e.position.head<2>());
+      if (!(v > 0.0f)) return -std::numeric_limits<double>::infinity();
+      factor = std::log(static_cast<double>(v));
+    }
+    if (options.mask && !inside_mask(*options.mask, domain, measurer, e)) return -std::numeric_limits<double>::infinity();
+    return factor;
+  };
+  const bool local = options.mask || options.intensity;
+  const long long progress_every = std::max<long long>(1, result.iterations / 100);
   double log_density = 0.0;  // unnormalised, tracked incrementally
   for (long long step = 1; step <= result.iterations; ++step) {
     const int n = state.size();
@@ -139,8 +191,9 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       xi.category = static_cast<int>(random.index(static_cast<std::uint64_t>(categories)));
       const auto& shapes = shapes_of[static_cast<std::size_t>(xi.category)];
       xi.shape = shapes[random.index(shapes.size())];
-      const double interaction_term = state.log_interaction(xi, -1);
-      const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + interaction_term;
+      const double local_term = local ? log_local(xi) : 0.0;
+      const double interaction_term = std::isfinite(local_term) ? state.log_interaction(xi, -1) : local_term;
+      const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + local_term + interaction_term;
       const double log_ratio = log_lambda + log_measure_categories - std::log(n + 1.0);
       if (std::isfinite(log_lambda) && std::log(random.uniform()) < log_ratio) {
         state.add(xi);
@@ -152,7 +205,8 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       if (n > 0) {
         const int slot = state.slot_of_rank(random.index(static_cast<std::uint64_t>(n)));
         const Element& x = state.at(slot);
-        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + state.log_interaction(x, slot);
+        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + (local ? log_local(x) : 0.0) +
+                                  state.log_interaction(x, slot);
         const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories - log_lambda;
         if (std::log(random.uniform()) < log_ratio) {
           log_density -= log_lambda;
@@ -164,6 +218,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
     if (options.trace_every > 0 && step % options.trace_every == 0) {
       result.trace.push_back({step, state.size(), log_density});
     }
+    if (options.progress && (step % progress_every == 0 || step == result.iterations)) options.progress(step, result.iterations);
   }
   scene.elements = state.elements();
   return result;

@@ -7,10 +7,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/render/raster.hpp"
 
 namespace shapeproc::sample {
 
@@ -20,6 +22,13 @@ struct SamplerOptions {
   std::uint64_t seed = 1;
   bool periodic = true;  // toroidal distances on the rectangular or box domain
   long long trace_every = 0;  // record the state every so many steps (0: no trace)
+  // 2D, stretched over the domain (x right, y down): a shape mask (inside where ≥ 0.5; every
+  // element must lie inside entirely, its proxy outline tested at half-pixel spacing) and an
+  // intensity map (β_c × value). Either may be null. β = 0 outside the mask.
+  const render::Raster* mask = nullptr;
+  const render::Raster* intensity = nullptr;
+  // Called now and then with the steps done so far (for a progress bar); may be empty.
+  std::function<void(long long done, long long total)> progress;
 };
 
 struct TracePoint {
@@ -36,10 +45,14 @@ struct SampleResult {
 };
 
 // Default number of steps for a model and domain (the rule above).
-long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain);
+long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain,
+                             const SamplerOptions& options = {});
+
+// Seed of chain `chain` of a run seeded `seed` (chain 0 keeps the seed).
+std::uint64_t chain_seed(std::uint64_t seed, int chain);
 
 // Samples the model on `domain` (a rectangle in 2D, a box in 3D). Throws std::invalid_argument on
-// an empty domain.
+// an empty domain, or a mask or intensity map given for a 3D model.
 SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Box3& domain,
                                   const SamplerOptions& options);
 

@@ -18,6 +18,8 @@ void add_convert_command(CLI::App& app, Action& action, const std::vector<std::s
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_show_command(CLI::App& app, Action& action);
 void add_sample_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_edit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 
 }  // namespace shapeproc::cli

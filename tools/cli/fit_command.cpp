@@ -10,6 +10,7 @@
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
+#include "tools/cli/flags.hpp"
 #include "tools/cli/model_summary.hpp"
 
 namespace shapeproc::cli {
@@ -18,17 +19,7 @@ namespace {
 
 struct FitArguments {
   std::string input, output;
-  int directions = 0;
-  std::string quantiles = "0,0.1,0.2";
-  std::string thresholds;
-  std::string edge = "none";
-  std::string distance = "shape";
-  std::string direction = "gravitation";
-  int quadrature = 0;
-  int shapes_per_location = 0;
-  int refine = 0;
-  bool lines = false;
-  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+  FitFlags fit;
   ReaderFlags reader;
 };
 
@@ -41,21 +32,7 @@ std::vector<double> number_list(const std::string& text, const char* option) {
 int run_fit(const FitArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
   if (io::extension_of(args.output) != "json") throw io::UsageError(args.output + ": the model is written as .json");
-  fit::FitOptions options;
-  options.directions = args.directions;
-  options.quantiles = number_list(args.quantiles, "--quantiles");
-  if (!args.thresholds.empty()) options.thresholds = number_list(args.thresholds, "--thresholds");
-  options.edge = args.edge == "periodic" ? fit::EdgeTreatment::periodic
-                 : args.edge == "border" ? fit::EdgeTreatment::border
-                                         : fit::EdgeTreatment::none;
-  options.distance = distance_kind(args.distance);
-  options.direction = direction_kind(args.direction);
-  options.quadrature = args.quadrature;
-  options.shapes_per_location = args.shapes_per_location;
-  options.refinement = args.refine;
-  options.lines = args.lines;
-  options.proxy_tolerance = args.proxy_tolerance;
-  if (!(args.proxy_tolerance >= 0 && args.proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
+  const fit::FitOptions options = args.fit.options();
   const io::ReaderOptions reader = args.reader.options();
   const geometry::Scene exemplar = io::read_scene(args.input, reader);
   fit::FitResult result;
@@ -68,8 +45,8 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   provenance["exemplar"] = args.input;
   provenance["arguments"] = arguments;
   provenance["reader"] = args.reader.to_json();
-  provenance["options"] = {{"directions", result.model.measurement.directions}, {"distance", args.distance},
-                           {"direction", args.direction}, {"proxy_tolerance", args.proxy_tolerance}};
+  provenance["options"] = args.fit.to_json();
+  provenance["options"]["directions"] = result.model.measurement.directions;
   result.model.fit_json = provenance.dump();
   io::write_model(result.model, args.output);
 
@@ -85,30 +62,58 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 }  // namespace
 
+void FitFlags::add_to(CLI::App& command) {
+  command.add_option("--directions", directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
+  auto* q = command.add_option("--quantiles", quantiles, "quantile orders of the thresholds")->capture_default_str();
+  auto* t = command.add_option("--thresholds", thresholds, "thresholds d0,d1,... for every pair and axis");
+  q->excludes(t);
+  command.add_option("--edge", edge, "edge treatment: none, periodic or border")
+      ->check(CLI::IsMember({"none", "periodic", "border"}))
+      ->capture_default_str();
+  add_measurement_kind_options(command, distance, direction);
+  command.add_option("--quadrature", quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 8 in 3D)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_option("--shapes-per-location", shapes_per_location,
+                     "shapes crossed with each quadrature location, in rotation (default: all)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_flag("--quadrature-lines", lines,
+                   "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");
+  command.add_option("--refine", refine, "levels of adaptive refinement of quadrature cells near boundaries (default 0)")
+      ->check(CLI::Range(0, 6));
+  command.add_option("--proxy-tolerance", proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
+      ->capture_default_str();
+}
+
+fit::FitOptions FitFlags::options() const {
+  fit::FitOptions o;
+  o.directions = directions;
+  o.quantiles = number_list(quantiles, "--quantiles");
+  if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");
+  o.edge = edge == "periodic" ? fit::EdgeTreatment::periodic : edge == "border" ? fit::EdgeTreatment::border : fit::EdgeTreatment::none;
+  o.distance = distance_kind(distance);
+  o.direction = direction_kind(direction);
+  o.quadrature = quadrature;
+  o.shapes_per_location = shapes_per_location;
+  o.refinement = refine;
+  o.lines = lines;
+  if (!(proxy_tolerance >= 0 && proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
+  o.proxy_tolerance = proxy_tolerance;
+  return o;
+}
+
+nlohmann::json FitFlags::to_json() const {
+  return {{"directions", directions}, {"quantiles", quantiles}, {"thresholds", thresholds}, {"edge", edge},
+          {"distance", distance}, {"direction", direction}, {"quadrature", quadrature},
+          {"shapes_per_location", shapes_per_location}, {"refine", refine}, {"lines", lines},
+          {"proxy_tolerance", proxy_tolerance}};
+}
+
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<FitArguments>();
   CLI::App* command = app.add_subcommand("fit", "Fit the shape-process model to an exemplar (maximum log pseudo-likelihood)");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "model file (.json)")->required();
-  command->add_option("--directions", args->directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
-  auto* quantiles = command->add_option("--quantiles", args->quantiles, "quantile orders of the thresholds")->capture_default_str();
-  auto* thresholds = command->add_option("--thresholds", args->thresholds, "thresholds d0,d1,... for every pair and axis");
-  quantiles->excludes(thresholds);
-  command->add_option("--edge", args->edge, "edge treatment: none, periodic or border")
-      ->check(CLI::IsMember({"none", "periodic", "border"}))
-      ->capture_default_str();
-  add_measurement_kind_options(*command, args->distance, args->direction);
-  command->add_option("--quadrature", args->quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 8 in 3D)")
-      ->check(CLI::NonNegativeNumber);
-  command->add_option("--shapes-per-location", args->shapes_per_location,
-                      "shapes crossed with each quadrature location, in rotation (default: all)")
-      ->check(CLI::NonNegativeNumber);
-  command->add_flag("--quadrature-lines", args->lines,
-                    "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");
-  command->add_option("--refine", args->refine, "levels of adaptive refinement of quadrature cells near boundaries (default 0)")
-      ->check(CLI::Range(0, 6));
-  command->add_option("--proxy-tolerance", args->proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
-      ->capture_default_str();
+  args->fit.add_to(*command);
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_fit(*args, arguments, out); };

@@ -58,8 +58,9 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
     out << '\n';
   }
   if (model.interactions.empty()) out << "\nno interaction: a Poisson process\n";
-  for (const model::PairInteraction& pair : model.interactions) {
-    out << "\ninteraction " << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
+  for (std::size_t index = 0; index < model.interactions.size(); ++index) {
+    const model::PairInteraction& pair = model.interactions[index];
+    out << "\npair " << index << ": interaction " << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
         << model.categories[static_cast<std::size_t>(pair.second)].name
         << "  (gamma ± se (exemplar pairs in the band); hard core below d0)\n";
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
@@ -67,7 +68,7 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
       out << "  axis " << i << "  " << std::setw(9) << direction_text(a.direction, model.dimension) << "  d0 "
           << std::setw(8) << g(a.thresholds.front());
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
-        out << "  | [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1]) << "): " << gamma_text(a, k);
+        out << "  | " << k + 1 << " [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1]) << "): " << gamma_text(a, k);
       }
       out << '\n';
     }

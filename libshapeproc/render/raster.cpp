@@ -1,0 +1,291 @@
+#include "libshapeproc/render/raster.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <cairo.h>
+
+#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/io/error.hpp"
+
+namespace shapeproc::render {
+
+using geometry::Box3;
+using geometry::Scene;
+using geometry::Vec2;
+using geometry::Vec3;
+
+namespace {
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using Context = std::unique_ptr<cairo_t, ContextDeleter>;
+
+struct Colour {
+  double r = 0, g = 0, b = 0;
+};
+
+// SVG colour values: #rgb, #rrggbb, rgb(r, g, b) and the common names; nullopt for none.
+std::optional<Colour> parse_colour(const std::string& text) {
+  static const std::map<std::string, Colour> names = {
+      {"black", {0, 0, 0}},          {"white", {1, 1, 1}},         {"red", {1, 0, 0}},         {"green", {0, 0.5, 0}},
+      {"blue", {0, 0, 1}},           {"yellow", {1, 1, 0}},        {"gray", {0.5, 0.5, 0.5}},  {"grey", {0.5, 0.5, 0.5}},
+      {"orange", {1, 0.65, 0}},      {"purple", {0.5, 0, 0.5}},    {"currentcolor", {0, 0, 0}}};
+  std::string s;
+  for (char c : text)
+    if (!std::isspace(static_cast<unsigned char>(c))) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (s.empty() || s == "none" || s == "transparent") return std::nullopt;
+  if (s[0] == '#') {
+    unsigned v = 0;
+    if (s.size() == 4 && std::sscanf(s.c_str() + 1, "%x", &v) == 1) {
+      return Colour{((v >> 8) & 0xF) / 15.0, ((v >> 4) & 0xF) / 15.0, (v & 0xF) / 15.0};
+    }
+    if (s.size() == 7 && std::sscanf(s.c_str() + 1, "%x", &v) == 1) {
+      return Colour{((v >> 16) & 0xFF) / 255.0, ((v >> 8) & 0xFF) / 255.0, (v & 0xFF) / 255.0};
+    }
+    return Colour{};
+  }
+  double r = 0, g = 0, b = 0;
+  if (std::sscanf(s.c_str(), "rgb(%lf,%lf,%lf)", &r, &g, &b) == 3) return Colour{r / 255, g / 255, b / 255};
+  const auto named = names.find(s);
+  return named != names.end() ? named->second : Colour{};
+}
+
+double number_or(const geometry::Style& style, const std::string& key, double fallback) {
+  const auto it = style.find(key);
+  if (it == style.end()) return fallback;
+  try {
+    return std::stod(it->second);
+  } catch (...) {
+    return fallback;
+  }
+}
+
+void add_path(cairo_t* cr, const geometry::Path2& path, const Vec2& offset) {
+  if (path.segments.empty()) return;
+  const Vec2 p = path.segments.front().start + offset;
+  cairo_move_to(cr, p.x(), p.y());
+  for (const geometry::Segment2& s : path.segments) {
+    if (s.cubic) {
+      const Vec2 a = s.control1 + offset, b = s.control2 + offset, e = s.end + offset;
+      cairo_curve_to(cr, a.x(), a.y(), b.x(), b.y(), e.x(), e.y());
+    } else {
+      const Vec2 e = s.end + offset;
+      cairo_line_to(cr, e.x(), e.y());
+    }
+  }
+  if (path.closed) cairo_close_path(cr);
+}
+
+cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::ostream*>(closure);
+  out->write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(length));
+  return *out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+// Maps scene coordinates of `box` onto a width x height surface.
+void set_view(cairo_t* cr, const Box3& box, int width, int height) {
+  const Vec3 size = box.sizes();
+  cairo_scale(cr, width / std::max(1e-300, size.x()), height / std::max(1e-300, size.y()));
+  cairo_translate(cr, -box.min().x(), -box.min().y());
+}
+
+void draw_2d(cairo_t* cr, const Scene& scene, const RenderOptions& options, double pixel) {
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    const geometry::Element& e = scene.elements[i];
+    const bool red = i < options.highlight.size() && options.highlight[i];
+    const Vec2 offset = e.position.head<2>();
+    const geometry::Shape& shape = scene.shapes.at(static_cast<std::size_t>(e.shape));
+    if (std::holds_alternative<geometry::PointShape>(shape.geometry)) {
+      cairo_arc(cr, offset.x(), offset.y(), 2.5 * pixel, 0, 2 * 3.14159265358979323846);
+      if (red) cairo_set_source_rgb(cr, 0.85, 0.1, 0.1); else cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_fill(cr);
+      continue;
+    }
+    const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry);
+    if (!planar) continue;
+    for (const geometry::Drawable2& d : planar->parts) {
+      const double opacity = number_or(d.style, "opacity", 1.0);
+      cairo_new_path(cr);
+      for (const geometry::Path2& path : d.paths) add_path(cr, path, offset);
+      const auto fill = d.style.count("fill") ? parse_colour(d.style.at("fill")) : std::optional<Colour>(Colour{});
+      const auto stroke = d.style.count("stroke") ? parse_colour(d.style.at("stroke")) : std::nullopt;
+      if (fill) {
+        const Colour c = red ? Colour{0.85, 0.1, 0.1} : *fill;
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, opacity * number_or(d.style, "fill-opacity", 1.0));
+        cairo_set_fill_rule(cr, d.fill_rule == geometry::FillRule::evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+        if (stroke) cairo_fill_preserve(cr); else cairo_fill(cr);
+      }
+      if (stroke) {
+        const Colour c = red ? Colour{0.85, 0.1, 0.1} : *stroke;
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, opacity * number_or(d.style, "stroke-opacity", 1.0));
+        cairo_set_line_width(cr, std::max(pixel, number_or(d.style, "stroke-width", 1.0)));
+        cairo_stroke(cr);
+      }
+      cairo_new_path(cr);
+    }
+  }
+}
+
+void draw_3d(cairo_t* cr, const Scene& scene, const RenderOptions& options, double pixel) {
+  struct Face {
+    std::array<Vec3, 3> p;
+    double depth;
+    bool red;
+  };
+  std::vector<Face> faces;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    const geometry::Element& e = scene.elements[i];
+    const auto* mesh = std::get_if<geometry::MeshShape>(&scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
+    if (!mesh) continue;
+    const bool red = i < options.highlight.size() && options.highlight[i];
+    for (const auto& t : mesh->mesh.triangles) {
+      Face f;
+      for (int k = 0; k < 3; ++k) f.p[static_cast<std::size_t>(k)] = mesh->mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] + e.position;
+      f.depth = (f.p[0].z() + f.p[1].z() + f.p[2].z()) / 3;
+      f.red = red;
+      faces.push_back(f);
+    }
+  }
+  // Viewer on +z looking down: far (low z) faces first.
+  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.depth < b.depth; });
+  const Vec3 light = Vec3(-0.4, -0.5, 1.0).normalized();
+  for (const Face& f : faces) {
+    Vec3 normal = (f.p[1] - f.p[0]).cross(f.p[2] - f.p[0]);
+    if (normal.norm() == 0) continue;
+    normal.normalize();
+    const double shade = 0.25 + 0.75 * std::abs(normal.dot(light));
+    cairo_move_to(cr, f.p[0].x(), f.p[0].y());
+    cairo_line_to(cr, f.p[1].x(), f.p[1].y());
+    cairo_line_to(cr, f.p[2].x(), f.p[2].y());
+    cairo_close_path(cr);
+    if (f.red) cairo_set_source_rgb(cr, 0.9 * shade, 0.15 * shade, 0.15 * shade);
+    else cairo_set_source_rgb(cr, 0.55 * shade, 0.65 * shade, 0.8 * shade);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgba(cr, 0, 0, 0, 0.15);
+    cairo_set_line_width(cr, 0.3 * pixel);
+    cairo_stroke(cr);
+  }
+}
+
+}  // namespace
+
+float Raster::sample(const Box3& box, const Vec2& p) const {
+  if (width <= 0 || height <= 0) return 0.0f;
+  const Vec3 size = box.sizes();
+  const double fx = (p.x() - box.min().x()) / size.x() * width;
+  const double fy = (p.y() - box.min().y()) / size.y() * height;
+  if (!(fx >= 0 && fy >= 0 && fx < width && fy < height)) return 0.0f;
+  return at(static_cast<int>(fx), static_cast<int>(fy));
+}
+
+Raster read_grayscale_png(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path.string(), 0, "no such file");
+  Surface surface(cairo_image_surface_create_from_png(path.string().c_str()));
+  const cairo_status_t status = cairo_surface_status(surface.get());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw io::InputError(path.string(), 0, std::string("not a readable PNG image (") + cairo_status_to_string(status) + ")");
+  }
+  cairo_surface_flush(surface.get());
+  Raster raster;
+  raster.width = cairo_image_surface_get_width(surface.get());
+  raster.height = cairo_image_surface_get_height(surface.get());
+  if (raster.width <= 0 || raster.height <= 0) throw io::InputError(path.string(), 0, "the image is empty");
+  const cairo_format_t format = cairo_image_surface_get_format(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  raster.values.resize(static_cast<std::size_t>(raster.width) * static_cast<std::size_t>(raster.height));
+  for (int y = 0; y < raster.height; ++y) {
+    for (int x = 0; x < raster.width; ++x) {
+      double value = 0.0;
+      if (format == CAIRO_FORMAT_ARGB32 || format == CAIRO_FORMAT_RGB24) {
+        std::uint32_t pixel;
+        std::memcpy(&pixel, data + y * stride + 4 * x, 4);
+        // Cairo stores colour premultiplied by alpha: this is luminance × alpha.
+        value = (0.2126 * ((pixel >> 16) & 0xFF) + 0.7152 * ((pixel >> 8) & 0xFF) + 0.0722 * (pixel & 0xFF)) / 255.0;
+      } else if (format == CAIRO_FORMAT_A8) {
+        value = data[y * stride + x] / 255.0;
+      } else {
+        throw io::InputError(path.string(), 0, "unsupported PNG pixel format");
+      }
+      raster.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(raster.width) + static_cast<std::size_t>(x)] =
+          static_cast<float>(value);
+    }
+  }
+  return raster;
+}
+
+Raster rasterize_filled(const Scene& scene, const Box3& box, int width, int height) {
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_A8, width, height));
+  Context cr(cairo_create(surface.get()));
+  set_view(cr.get(), box, width, height);
+  cairo_set_source_rgba(cr.get(), 0, 0, 0, 1);
+  for (const geometry::Element& e : scene.elements) {
+    const auto* planar = std::get_if<geometry::PlanarShape>(&scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
+    if (!planar) continue;
+    for (const geometry::Drawable2& d : planar->parts) {
+      if (!d.filled()) continue;
+      cairo_new_path(cr.get());
+      for (const geometry::Path2& path : d.paths) add_path(cr.get(), path, e.position.head<2>());
+      cairo_set_fill_rule(cr.get(), d.fill_rule == geometry::FillRule::evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+      cairo_fill(cr.get());
+    }
+  }
+  cairo_surface_flush(surface.get());
+  Raster raster;
+  raster.width = width;
+  raster.height = height;
+  raster.values.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      raster.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+          static_cast<float>(data[y * stride + x] / 255.0);
+  return raster;
+}
+
+void write_png(const Scene& scene, const std::filesystem::path& path, const RenderOptions& options) {
+  Box3 box = scene.window;
+  if (box.isEmpty()) {
+    for (std::size_t i = 0; i < scene.elements.size(); ++i) box.extend(geometry::bounding_box(scene.placed_shape(i)));
+  }
+  const Vec3 size = box.sizes();
+  const double longest = std::max(size.x(), size.y());
+  if (!(longest > 0)) throw std::invalid_argument("render: the scene has an empty window");
+  const int width = std::max(1, static_cast<int>(std::lround(options.long_side * size.x() / longest)));
+  const int height = std::max(1, static_cast<int>(std::lround(options.long_side * size.y() / longest)));
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+  Context cr(cairo_create(surface.get()));
+  cairo_set_source_rgb(cr.get(), 1, 1, 1);
+  cairo_paint(cr.get());
+  set_view(cr.get(), box, width, height);
+  const double pixel = longest / options.long_side;
+  if (scene.dimension == 3) draw_3d(cr.get(), scene, options, pixel); else draw_2d(cr.get(), scene, options, pixel);
+  if (options.draw_window) {
+    cairo_rectangle(cr.get(), box.min().x(), box.min().y(), size.x(), size.y());
+    cairo_set_source_rgb(cr.get(), 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr.get(), 2 * pixel);
+    cairo_stroke(cr.get());
+  }
+  cairo_surface_flush(surface.get());
+  io::write_file_atomically(path, [&](std::ostream& out) {
+    const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &out);
+    if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
+  });
+}
+
+}  // namespace shapeproc::render

@@ -1,0 +1,50 @@
+// Option groups shared by subcommands: the fit's options (fit, synthesize) and the sampler's
+// (sample, synthesize).
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/geometry/proxy.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::cli {
+
+struct FitFlags {
+  int directions = 0;
+  std::string quantiles = "0,0.1,0.2";
+  std::string thresholds;
+  std::string edge = "none";
+  std::string distance = "shape";
+  std::string direction = "gravitation";
+  int quadrature = 0;
+  int shapes_per_location = 0;
+  int refine = 0;
+  bool lines = false;
+  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+
+  void add_to(CLI::App& command);
+  fit::FitOptions options() const;  // throws io::UsageError
+  nlohmann::json to_json() const;
+};
+
+struct SampleFlags {
+  std::string size, domain, intensity, boundary, trace, png;
+  long long iterations = 0;
+  std::uint64_t seed = 1;
+  int chains = 1, threads = 0;
+
+  void add_to(CLI::App& command);
+  // Samples `model` into `output` (suffixed per chain), with the outputs' provenance; prints a
+  // line per chain. Returns the exit code.
+  int run(const model::ShapeProcessModel& model, const std::string& output, const std::string& command,
+          const std::vector<std::string>& arguments, nlohmann::json parameters, std::ostream& out) const;
+};
+
+}  // namespace shapeproc::cli
