@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/render/raster.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -82,6 +84,142 @@ TEST(BirthDeath, SameSeedSameOutput) {
   const SampleResult c = sample_shape_process(m, domain, options);
   EXPECT_TRUE(c.scene.elements.size() != a.scene.elements.size() ||
               c.scene.elements.front().position != a.scene.elements.front().position);
+}
+
+// A hard-core point process on the unit torus with δ0 = 0.6: no three points fit, and
+//   P(n) ∝ β^n / n! ∫ 1{no pair closer than δ0} = 1, β, β² A / 2
+// with A = 1 − |torus disc of radius 0.6| (computed here on a fine grid). The sampler's final
+// counts over many seeds follow it (chi-square, 2 degrees of freedom).
+TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
+  model::ShapeProcessModel m = poisson_points(10.0);
+  model::PairInteraction pair;
+  model::AxisParameters axis;
+  axis.thresholds = {0.6};
+  pair.axes.push_back(axis);
+  m.interactions.push_back(pair);
+  const int grid = 2000;
+  double blocked = 0.0;
+  for (int i = 0; i < grid; ++i)
+    for (int j = 0; j < grid; ++j) {
+      const double x = (i + 0.5) / grid - 0.5, y = (j + 0.5) / grid - 0.5;
+      if (x * x + y * y < 0.36) blocked += 1.0 / (static_cast<double>(grid) * grid);
+    }
+  const double area = 1.0 - blocked;
+  const double weights[3] = {1.0, 10.0, 50.0 * area};
+  const double total = weights[0] + weights[1] + weights[2];
+  const Box3 domain(Vec3(0, 0, 0), Vec3(1, 1, 0));
+  const int runs = 600;
+  int observed[3] = {0, 0, 0};
+  for (int seed = 1; seed <= runs; ++seed) {
+    SamplerOptions options;
+    options.seed = static_cast<std::uint64_t>(seed);
+    options.iterations = 400;
+    const std::size_t n = sample_shape_process(m, domain, options).scene.elements.size();
+    ASSERT_LE(n, 2u);
+    ++observed[n];
+  }
+  double chi2 = 0.0;
+  for (int n = 0; n < 3; ++n) {
+    const double expected = runs * weights[n] / total;
+    chi2 += (observed[n] - expected) * (observed[n] - expected) / expected;
+  }
+  EXPECT_LT(chi2, 13.8) << "P(chi2_2 > 13.8) = 0.001; observed " << observed[0] << " " << observed[1] << " " << observed[2];
+}
+
+render::Raster raster(int width, int height, float (*value)(int, int)) {
+  render::Raster r;
+  r.width = width;
+  r.height = height;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) r.values.push_back(value(x, y));
+  return r;
+}
+
+TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
+  const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
+  // A ring: inside between radii 20 and 38 of the 80 x 80 domain's centre (1 pixel per unit).
+  const render::Raster mask = raster(80, 80, [](int x, int y) {
+    const double r = std::hypot(x + 0.5 - 40, y + 0.5 - 40);
+    return r >= 20 && r <= 38 ? 1.0f : 0.0f;
+  });
+  const Box3 domain(Vec3(0, 0, 0), Vec3(80, 80, 0));
+  SamplerOptions options;
+  options.seed = 3;
+  options.periodic = false;
+  options.mask = &mask;
+  options.iterations = 40000;
+  const SampleResult result = sample_shape_process(m, domain, options);
+  ASSERT_GT(result.scene.elements.size(), 20u);
+  const geometry::PairMeasurer measurer(result.scene, m.measurement_options(false));
+  for (const geometry::Element& e : result.scene.elements) {
+    const geometry::Proxy2& proxy = measurer.proxies2()[static_cast<std::size_t>(e.shape)];
+    for (std::size_t k = 0; k < proxy.segment_start.size(); ++k) {
+      for (double t = 0; t <= 1.0; t += 0.05) {
+        const geometry::Vec2 p = e.position.head<2>() + proxy.segment_start[k] + t * (proxy.segment_end[k] - proxy.segment_start[k]);
+        const double r = std::hypot(p.x() - 40, p.y() - 40);
+        EXPECT_TRUE(r >= 19.5 && r <= 38.5) << "element at " << e.position.transpose() << " reaches radius " << r;
+      }
+    }
+  }
+}
+
+TEST(BirthDeath, IntensityMapScalesTheDensity) {
+  // Left half 0.25, right half 0.75: of a Poisson pattern's points, 3/4 fall on the right.
+  const model::ShapeProcessModel m = poisson_points(0.05);
+  const render::Raster map = raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; });
+  const Box3 domain(Vec3(0, 0, 0), Vec3(40, 40, 0));
+  int left = 0, right = 0;
+  for (int seed = 1; seed <= 60; ++seed) {
+    SamplerOptions options;
+    options.seed = static_cast<std::uint64_t>(seed);
+    options.intensity = &map;
+    options.iterations = 6000;
+    for (const geometry::Element& e : sample_shape_process(m, domain, options).scene.elements) (e.position.x() < 20 ? left : right)++;
+  }
+  const double n = left + right;
+  EXPECT_NEAR(n / 60, 0.05 * 1600 * 0.5, 4 * std::sqrt(40.0 / 60));
+  EXPECT_NEAR(right / n, 0.75, 4 * std::sqrt(0.75 * 0.25 / n));
+}
+
+// Fit → sample → refit: an anisotropic Strauss-type point process (mild inhibition along x,
+// strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus, refitted with its own thresholds: every
+// parameter within 3 standard errors of the truth.
+TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
+  model::ShapeProcessModel truth = poisson_points(0.02);
+  truth.measurement.directions = 4;
+  truth.measurement.direction = geometry::DirectionKind::centroid;
+  model::PairInteraction pair;
+  model::AxisParameters along_x, along_y;
+  along_x.direction = Vec3::UnitX();
+  along_x.thresholds = {0.0, 4.0, 8.0};
+  along_x.gammas = {0.6, 0.9};
+  along_y.direction = Vec3::UnitY();
+  along_y.thresholds = {0.0, 4.0, 8.0};
+  along_y.gammas = {0.2, 0.5};
+  pair.axes = {along_x, along_y};
+  truth.interactions.push_back(pair);
+  const Box3 domain(Vec3(0, 0, 0), Vec3(300, 300, 0));
+  SamplerOptions options;
+  options.seed = 2024;
+  const SampleResult sampled = sample_shape_process(truth, domain, options);
+  ASSERT_GT(sampled.scene.elements.size(), 700u);
+
+  fit::FitOptions fit_options;
+  fit_options.directions = 4;
+  fit_options.direction = geometry::DirectionKind::centroid;
+  fit_options.thresholds = {0.0, 4.0, 8.0};
+  fit_options.edge = fit::EdgeTreatment::periodic;
+  fit_options.quadrature = 128;
+  const fit::FitResult refit = fit::fit_shape_process(sampled.scene, fit_options);
+  const auto& beta = refit.model.categories[0];
+  EXPECT_NEAR(beta.beta, 0.02, 3 * beta.beta_standard_error);
+  for (std::size_t a = 0; a < 2; ++a) {
+    const auto& fitted = refit.model.interactions[0].axes[a];
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_NEAR(fitted.gammas[k], truth.interactions[0].axes[a].gammas[k], 3 * fitted.gamma_standard_errors[k])
+          << "axis " << a << " band " << k + 1;
+    }
+  }
 }
 
 }  // namespace

@@ -186,7 +186,8 @@ TEST(CliSample, SampleRecordsSeedAndParameters) {
   const std::string svg = testing::read_file(out);
   EXPECT_NE(svg.find("&quot;seed&quot;:7"), std::string::npos);
   EXPECT_NE(svg.find("viewBox=\"0 0 200 200\""), std::string::npos);
-  EXPECT_EQ(testing::read_file(dir.file("trace.csv")).rfind("step,elements,log_density\n", 0), 0u);
+  const std::string trace = testing::read_file(dir.file("trace.csv"));
+  EXPECT_EQ(trace.rfind("# shapeproc sample seed 7 chain 1\nstep,elements,log_density\n", 0), 0u) << trace.substr(0, 80);
   // Same seed, same output.
   const std::string again = dir.file("again.svg").string();
   ASSERT_EQ(run_cli({"sample", model, "-o", again, "--size", "200,200", "--seed", "7", "--iterations", "3000"}).code, 0);
@@ -194,6 +195,78 @@ TEST(CliSample, SampleRecordsSeedAndParameters) {
   EXPECT_EQ(body(testing::read_file(again)), body(svg));
   expect_one_line_error(run_cli({"sample", model, "-o", out, "--size", "200"}), 2, "--size");
   expect_one_line_error(run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1"}), 2, "no such file");
+}
+
+TEST(CliSample, ChainsDomainsMapsAndPictures) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code, 0);
+  // Chains: suffixed outputs, the same whatever the thread count.
+  for (const char* threads : {"1", "2"}) {
+    const Result r = run_cli({"sample", model, "-o", dir.file(std::string("t") + threads + ".csv").string(), "--size", "300,300",
+                              "--chains", "2", "--threads", threads, "--iterations", "4000", "--seed", "9"});
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  const auto body = [](const std::string& text) { return text.substr(text.find("\nx,") == std::string::npos ? 0 : text.find("\nx,")); };
+  EXPECT_EQ(body(testing::read_file(dir.file("t1-1.csv"))), body(testing::read_file(dir.file("t2-1.csv"))));
+  EXPECT_EQ(body(testing::read_file(dir.file("t1-2.csv"))), body(testing::read_file(dir.file("t2-2.csv"))));
+  EXPECT_NE(body(testing::read_file(dir.file("t1-1.csv"))), body(testing::read_file(dir.file("t1-2.csv"))));
+  // A star-shaped domain and a gradient map, with a PNG rendering.
+  const std::string star = dir.file("star.svg").string(), png = dir.file("star.png").string();
+  const Result shaped = run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain", data("maps/star.svg"),
+                                 "--intensity", data("maps/gradient.png"), "--png", png, "--iterations", "20000"});
+  ASSERT_EQ(shaped.code, 0) << shaped.err;
+  EXPECT_EQ(testing::read_file(png).substr(0, 4), "\x89PNG");
+  EXPECT_NE(testing::read_file(star).find("star.svg"), std::string::npos);  // the domain is recorded
+  // Bad domains and combinations.
+  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain", data("maps/star.svg"), "--boundary", "torus"}),
+                        2, "--boundary torus");
+  const std::string not_png = dir.write("fake.png", "not a png").string();
+  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("x.svg").string(), "--size", "40,40", "--intensity", not_png}), 2,
+                        "fake.png");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
+  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "40,40", "--domain", data("svg/dots-random.csv")}), 2,
+                        "--domain");
+}
+
+TEST(CliEdit, EditsAreAppliedValidatedAndRecorded) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string(), edited = dir.file("e.json").string();
+  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code, 0);
+  const Result r = run_cli({"edit", model, "-o", edited, "--gamma", "0:*:1=0.25", "--beta", "default=0.002", "--scale-thresholds", "2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json before = nlohmann::json::parse(testing::read_file(model));
+  const nlohmann::json after = nlohmann::json::parse(testing::read_file(edited));
+  EXPECT_DOUBLE_EQ(after["categories"][0]["beta"].get<double>(), 0.002);
+  for (std::size_t a = 0; a < 4; ++a) {
+    EXPECT_DOUBLE_EQ(after["interaction"][0]["axes"][a]["gammas"][0].get<double>(), 0.25);
+    EXPECT_DOUBLE_EQ(after["interaction"][0]["axes"][a]["gammas"][1].get<double>(),
+                     before["interaction"][0]["axes"][a]["gammas"][1].get<double>());
+    EXPECT_DOUBLE_EQ(after["interaction"][0]["axes"][a]["thresholds"][2].get<double>(),
+                     2 * before["interaction"][0]["axes"][a]["thresholds"][2].get<double>());
+  }
+  EXPECT_NE(testing::read_file(edited).find("scale-thresholds 2"), std::string::npos);
+  const Result iso = run_cli({"edit", model, "-o", edited, "--isotropic"});
+  ASSERT_EQ(iso.code, 0) << iso.err;
+  EXPECT_EQ(nlohmann::json::parse(testing::read_file(edited))["interaction"][0]["axes"].size(), 1u);
+  const std::string untouched = dir.file("u.json").string();
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:9:1=1"}), 2, "axis '9'");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:0:1=-1"}), 2, "invalid");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--beta", "nobody=1"}), 2, "category");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--threshold", "0:0=3"}), 2, "PAIR:AXIS:INDEX");
+  EXPECT_FALSE(std::filesystem::exists(untouched));
+}
+
+TEST(CliSynthesize, FitsThenSamples) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("out.svg").string(), model = dir.file("m.json").string();
+  const Result r = run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", out,
+                            "--model", model, "--size", "400,400", "--seed", "4", "--iterations", "10000"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("pair 1:"), std::string::npos);
+  EXPECT_NE(r.out.find("sampled"), std::string::npos);
+  EXPECT_NE(testing::read_file(out).find("&quot;seed&quot;:4"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(model));
 }
 
 }  // namespace
