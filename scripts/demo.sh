@@ -14,8 +14,10 @@ exemplar=data/svg/two-kinds.svg
 ./build/tools/shapeproc convert data/mesh/pebbles.obj -o out/pebbles.ply
 ./build/tools/shapeproc measure "$exemplar" --category-by fill --range 20 -o out/two-kinds-pairs.csv \
   --proxy-out out/two-kinds-proxies.svg
-./build/tools/shapeproc fit "$exemplar" --category-by fill -o out/two-kinds-model.json
+./build/tools/shapeproc convert "$exemplar" --category-by fill -o out/two-kinds.png
+# The main job: fit the exemplar, then sample an output of four times its area (twice each side);
+# the seed and every parameter are recorded in the SVG.
+./build/tools/shapeproc synthesize "$exemplar" --category-by fill --model out/two-kinds-model.json \
+  --size 440,440 --seed 1 -o out/two-kinds-synthesis.svg --png out/two-kinds-synthesis.png
 ./build/tools/shapeproc show out/two-kinds-model.json --plot out/two-kinds-interaction.svg
-# An output of four times the exemplar's area (twice each side), seed recorded in the SVG.
-./build/tools/shapeproc sample out/two-kinds-model.json --size 440,440 --seed 1 -o out/two-kinds-synthesis.svg
 echo "demo outputs are in out/"

@@ -32,20 +32,36 @@ class Configuration {
   const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }
   int slot_of_rank(std::size_t rank) const { return alive_[rank]; }
 
-  // log Σ log Γ(ξ, x_m) over the elements except `skip`; −∞ on a hard core (early exit).
+  // log Σ log Γ(ξ, x_m) over the elements except `skip`; −∞ on a hard core. Two passes: the
+  // distances first (cheap, with the pair's reach as cut-off), so that a hard-core violation
+  // rejects before any direction is computed; then the axes of the neighbours in range.
   double log_interaction(const Element& xi, int skip) const {
-    double total = 0.0;
+    near_.clear();
     bool forbidden = false;
     grid_.for_each_candidate(xi.position, [&](int slot) {
       if (forbidden || slot == skip) return;
-      const model::PairEffect effect = model::pair_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
-      if (effect.band == model::Interaction::kHardCore) {
+      const Element& other = elements_[static_cast<std::size_t>(slot)];
+      if (!interaction_.interacts(xi.category, other.category)) return;
+      const double reach = interaction_.max_range(xi.category, other.category);
+      const geometry::Measurement m = measurer_.measure_distance(xi, other, reach);
+      if (m.distance >= reach) return;
+      if (m.distance < interaction_.min_hard_core(xi.category, other.category)) {
         forbidden = true;
-      } else if (effect.band >= 0) {
-        total += interaction_.log_gamma(xi.category, elements_[static_cast<std::size_t>(slot)].category, effect.axis, effect.band);
+        return;
       }
+      near_.push_back({slot, m.distance, m.offset});
     });
-    return forbidden ? -std::numeric_limits<double>::infinity() : total;
+    if (forbidden) return -std::numeric_limits<double>::infinity();
+    double total = 0.0;
+    for (const Near& n : near_) {
+      const Element& other = elements_[static_cast<std::size_t>(n.slot)];
+      const int known = measurer_.axis_from_boxes(xi.shape, other.shape, n.offset);
+      const int axis = known >= 0 ? known : measurer_.bins().axis_of(measurer_.direction(xi.shape, other.shape, n.offset));
+      const int band = interaction_.band(xi.category, other.category, axis, n.distance);
+      if (band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
+      if (band >= 0) total += interaction_.log_gamma(xi.category, other.category, axis, band);
+    }
+    return total;
   }
 
   void add(const Element& e) {
@@ -89,6 +105,12 @@ class Configuration {
   model::NeighbourGrid grid_;
   std::vector<Element> elements_;
   std::vector<int> alive_, free_, position_in_alive_;
+  struct Near {
+    int slot;
+    double distance;
+    Vec3 offset;
+  };
+  mutable std::vector<Near> near_;  // scratch of log_interaction
 };
 
 // Mean of a raster's values (the share of β the domain keeps), and the fraction inside a mask.

@@ -116,9 +116,9 @@ TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
     expect_one_line_error(run_cli(c.args), 2, c.message);
     EXPECT_EQ(testing::read_file(out_svg), previous);
   }
-  const std::string out_png = dir.file("out.png").string();
-  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg"), "-o", out_png}), 2, "unknown output format");
-  EXPECT_FALSE(std::filesystem::exists(out_png));
+  const std::string out_bmp = dir.file("out.bmp").string();
+  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg"), "-o", out_bmp}), 2, "unknown output format");
+  EXPECT_FALSE(std::filesystem::exists(out_bmp));
   // Nothing else was left in the directory (no temporary files).
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {

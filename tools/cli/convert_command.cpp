@@ -2,6 +2,8 @@
 #include <memory>
 
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/text.hpp"
+#include "libshapeproc/render/raster.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 
@@ -18,10 +20,10 @@ struct ConvertArguments {
 void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* command = app.add_subcommand(
-      "convert", "Read an exemplar (SVG, OBJ, PLY, OFF, STL, CSV) and write it as SVG, OBJ, PLY or "
-                 "CSV, chosen by the extension of -o");
+      "convert", "Read an exemplar (SVG, OBJ, PLY, OFF, STL, CSV) and write it as SVG, OBJ, PLY, "
+                 "CSV or a PNG picture, chosen by the extension of -o");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
-  command->add_option("-o,--output", args->output, "output file (.svg, .obj, .ply, .csv)")->required();
+  command->add_option("-o,--output", args->output, "output file (.svg, .obj, .ply, .csv, .png)")->required();
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
@@ -30,7 +32,11 @@ void add_convert_command(CLI::App& app, Action& action, const std::vector<std::s
       nlohmann::json parameters = {{"input", args->input},
                                    {"output", args->output},
                                    {"reader", args->reader.to_json()}};
-      io::write_scene(scene, args->output, make_provenance("convert", arguments, parameters));
+      if (io::extension_of(args->output) == "png") {
+        render::write_png(scene, args->output);
+      } else {
+        io::write_scene(scene, args->output, make_provenance("convert", arguments, parameters));
+      }
       out << "wrote " << args->output << ": " << scene.elements.size() << " elements, "
           << scene.categories.size() << " categories\n";
       return 0;

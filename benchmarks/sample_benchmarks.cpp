@@ -1,0 +1,59 @@
+// Sampler throughput on the shipped exemplars (run ./build/benchmarks/sample_benchmarks): each
+// exemplar is fitted once at the defaults, then 50,000 birth-death steps are run on a domain of
+// four times its area (the paper's Table 1 reports 50,000 iterations in 16.8–195.9 s in 2D).
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+
+namespace {
+
+std::string data(const char* relative) { return std::string(SHAPEPROC_DATA_DIR) + "/" + relative; }
+
+struct Fitted {
+  shapeproc::model::ShapeProcessModel model;
+  shapeproc::geometry::Box3 domain;
+};
+
+const Fitted& fitted(const char* file, const char* category_by, bool split) {
+  static std::map<std::string, std::unique_ptr<Fitted>> cache;
+  auto& entry = cache[file];
+  if (!entry) {
+    shapeproc::io::ReaderOptions reader;
+    reader.split_subpaths = split;
+    if (category_by) reader.category_by = shapeproc::io::CategoryRule::parse(category_by);
+    const auto exemplar = shapeproc::io::read_scene(data(file), reader);
+    entry = std::make_unique<Fitted>();
+    entry->model = shapeproc::fit::fit_shape_process(exemplar, {}).model;
+    const auto size = exemplar.window.sizes();
+    entry->domain = shapeproc::geometry::Box3(shapeproc::geometry::Vec3::Zero(), 2 * size);
+  }
+  return *entry;
+}
+
+void BM_Sample50k(benchmark::State& state, const char* file, const char* category_by, bool split) {
+  const Fitted& f = fitted(file, category_by, split);
+  shapeproc::sample::SamplerOptions options;
+  options.iterations = 50000;
+  std::size_t elements = 0;
+  for (auto _ : state) {
+    const auto result = shapeproc::sample::sample_shape_process(f.model, f.domain, options);
+    elements = result.scene.elements.size();
+    benchmark::DoNotOptimize(elements);
+  }
+  state.counters["elements"] = static_cast<double>(elements);
+  state.counters["proposals/s"] = benchmark::Counter(static_cast<double>(state.iterations() * 50000), benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(BM_Sample50k, dots_random, "svg/dots-random.svg", nullptr, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, dashes_rows, "svg/dashes-rows.svg", nullptr, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, crescents_grid, "svg/crescents-grid.svg", nullptr, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, two_kinds, "svg/two-kinds.svg", "fill", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, rings, "svg/rings.svg", nullptr, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, bubbles, "third-party/hero-patterns/bubbles.svg", nullptr, true)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+BENCHMARK_MAIN();
