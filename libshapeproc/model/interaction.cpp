@@ -56,22 +56,37 @@ double Interaction::log_gamma(int ca, int cb, int axis, int band) const {
   return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].log_gammas[static_cast<std::size_t>(band)];
 }
 
-PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
-                       const geometry::Element& xi, const geometry::Element& neighbour) {
+PairEffect pair_distance_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                                const geometry::Element& xi, const geometry::Element& neighbour) {
   PairEffect effect;
   if (!interaction.interacts(xi.category, neighbour.category)) return effect;
   const double reach = interaction.max_range(xi.category, neighbour.category);
   if (!(reach > 0)) return effect;
   const geometry::Measurement m = measurer.measure_distance(xi, neighbour, reach);
   effect.distance = m.distance;
+  effect.offset = m.offset;
   if (m.distance >= reach) return effect;
   if (m.distance < interaction.min_hard_core(xi.category, neighbour.category)) {
     effect.band = Interaction::kHardCore;
     return effect;
   }
-  const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, m.offset);
-  effect.axis = known >= 0 ? known : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, m.offset));
-  effect.band = interaction.band(xi.category, neighbour.category, effect.axis, m.distance);
+  effect.axis_pending = true;
+  return effect;
+}
+
+void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer, const geometry::Element& xi,
+                 const geometry::Element& neighbour, PairEffect& effect) {
+  if (!effect.axis_pending) return;
+  const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, effect.offset);
+  effect.axis = known >= 0 ? known : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, effect.offset));
+  effect.band = interaction.band(xi.category, neighbour.category, effect.axis, effect.distance);
+  effect.axis_pending = false;
+}
+
+PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                       const geometry::Element& xi, const geometry::Element& neighbour) {
+  PairEffect effect = pair_distance_effect(interaction, measurer, xi, neighbour);
+  decide_axis(interaction, measurer, xi, neighbour, effect);
   return effect;
 }
 

@@ -71,12 +71,21 @@ struct PairEffect {
   int band = Interaction::kBeyond;
   int axis = 0;
   double distance = std::numeric_limits<double>::infinity();
+  geometry::Vec3 offset = geometry::Vec3::Zero();  // the neighbour's image relative to ξ
+  bool axis_pending = false;                       // in range: the axis (and band) are still to decide
 };
 
 // Measures ξ against one neighbour, lazily: the direction is computed only when the distance
-// leaves the axis to decide.
+// leaves the axis to decide. The same in two stages, for callers that want every distance before
+// any direction (the sampler rejects on a hard core first): pair_distance_effect decides beyond
+// range and hard core below the pair's smallest δ_0 and otherwise leaves `axis_pending`, which
+// decide_axis then settles.
 PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
                        const geometry::Element& xi, const geometry::Element& neighbour);
+PairEffect pair_distance_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                                const geometry::Element& xi, const geometry::Element& neighbour);
+void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer, const geometry::Element& xi,
+                 const geometry::Element& neighbour, PairEffect& effect);
 
 // t(ξ, x) restricted to interactions: sorted (θ index, count) pairs and the hard-core flag.
 struct InteractionCounts {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/model/neighbour_grid.hpp"
@@ -40,26 +41,17 @@ class Configuration {
     bool forbidden = false;
     grid_.for_each_candidate(xi.position, [&](int slot) {
       if (forbidden || slot == skip) return;
-      const Element& other = elements_[static_cast<std::size_t>(slot)];
-      if (!interaction_.interacts(xi.category, other.category)) return;
-      const double reach = interaction_.max_range(xi.category, other.category);
-      const geometry::Measurement m = measurer_.measure_distance(xi, other, reach);
-      if (m.distance >= reach) return;
-      if (m.distance < interaction_.min_hard_core(xi.category, other.category)) {
-        forbidden = true;
-        return;
-      }
-      near_.push_back({slot, m.distance, m.offset});
+      const model::PairEffect effect = model::pair_distance_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
+      if (effect.band == model::Interaction::kHardCore) forbidden = true;
+      if (effect.axis_pending) near_.emplace_back(slot, effect);
     });
     if (forbidden) return -std::numeric_limits<double>::infinity();
     double total = 0.0;
-    for (const Near& n : near_) {
-      const Element& other = elements_[static_cast<std::size_t>(n.slot)];
-      const int known = measurer_.axis_from_boxes(xi.shape, other.shape, n.offset);
-      const int axis = known >= 0 ? known : measurer_.bins().axis_of(measurer_.direction(xi.shape, other.shape, n.offset));
-      const int band = interaction_.band(xi.category, other.category, axis, n.distance);
-      if (band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
-      if (band >= 0) total += interaction_.log_gamma(xi.category, other.category, axis, band);
+    for (auto& [slot, effect] : near_) {
+      const Element& other = elements_[static_cast<std::size_t>(slot)];
+      model::decide_axis(interaction_, measurer_, xi, other, effect);
+      if (effect.band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
+      if (effect.band >= 0) total += interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
     }
     return total;
   }
@@ -105,12 +97,7 @@ class Configuration {
   model::NeighbourGrid grid_;
   std::vector<Element> elements_;
   std::vector<int> alive_, free_, position_in_alive_;
-  struct Near {
-    int slot;
-    double distance;
-    Vec3 offset;
-  };
-  mutable std::vector<Near> near_;  // scratch of log_interaction
+  mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
 };
 
 // Mean of a raster's values (the share of β the domain keeps), and the fraction inside a mask.
