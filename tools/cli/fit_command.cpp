@@ -32,22 +32,7 @@ std::vector<double> number_list(const std::string& text, const char* option) {
 int run_fit(const FitArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
   if (io::extension_of(args.output) != "json") throw io::UsageError(args.output + ": the model is written as .json");
-  const fit::FitOptions options = args.fit.options();
-  const io::ReaderOptions reader = args.reader.options();
-  const geometry::Scene exemplar = io::read_scene(args.input, reader);
-  fit::FitResult result;
-  try {
-    result = fit::fit_shape_process(exemplar, options);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(args.input, 0, e.what());
-  }
-  nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
-  provenance["exemplar"] = args.input;
-  provenance["arguments"] = arguments;
-  provenance["reader"] = args.reader.to_json();
-  provenance["options"] = args.fit.to_json();
-  provenance["options"]["directions"] = result.model.measurement.directions;
-  result.model.fit_json = provenance.dump();
+  const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments);
   io::write_model(result.model, args.output);
 
   print_model_summary(result.model, out);
@@ -61,6 +46,26 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 }
 
 }  // namespace
+
+fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, const ReaderFlags& reader,
+                            const std::vector<std::string>& arguments) {
+  const fit::FitOptions options = flags.options();
+  const geometry::Scene exemplar = io::read_scene(input, reader.options());
+  fit::FitResult result;
+  try {
+    result = fit::fit_shape_process(exemplar, options);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(input, 0, e.what());
+  }
+  nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
+  provenance["exemplar"] = input;
+  provenance["arguments"] = arguments;
+  provenance["reader"] = reader.to_json();
+  provenance["options"] = flags.to_json();
+  provenance["options"]["directions"] = result.model.measurement.directions;
+  result.model.fit_json = provenance.dump();
+  return result;
+}
 
 void FitFlags::add_to(CLI::App& command) {
   command.add_option("--directions", directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");

@@ -13,6 +13,7 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "tools/cli/common.hpp"
 
 namespace shapeproc::cli {
 
@@ -33,6 +34,11 @@ struct FitFlags {
   fit::FitOptions options() const;  // throws io::UsageError
   nlohmann::json to_json() const;
 };
+
+// Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
+// reader and fit options. Fit failures become io::InputError naming the exemplar.
+fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, const ReaderFlags& reader,
+                            const std::vector<std::string>& arguments);
 
 struct SampleFlags {
   std::string size, domain, intensity, boundary, trace, png;

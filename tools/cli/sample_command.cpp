@@ -215,20 +215,7 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
       if (!args->model.empty() && io::extension_of(args->model) != "json") throw io::UsageError(args->model + ": the model is written as .json");
-      const fit::FitOptions options = args->fit.options();
-      const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
-      fit::FitResult fitted;
-      try {
-        fitted = fit::fit_shape_process(exemplar, options);
-      } catch (const std::invalid_argument& e) {
-        throw io::InputError(args->input, 0, e.what());
-      }
-      nlohmann::json provenance = nlohmann::json::parse(fitted.model.fit_json);
-      provenance["exemplar"] = args->input;
-      provenance["arguments"] = arguments;
-      provenance["reader"] = args->reader.to_json();
-      provenance["options"] = args->fit.to_json();
-      fitted.model.fit_json = provenance.dump();
+      const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments);
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
       print_model_summary(fitted.model, out);
       out << '\n';
