@@ -338,7 +338,14 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   const int refinement = options.refinement;
   const bool lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> dummy_parts(dummies.size());
-  const std::size_t threads = std::max(1u, std::min(2u, std::thread::hardware_concurrency()));
+  // Runs evaluate(begin, step) on up to two threads, each taking every step-th dummy.
+  const auto on_threads = [](const auto& evaluate) {
+    const std::size_t threads = std::max(1u, std::min(2u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
+    evaluate(0, threads);
+    for (std::thread& w : workers) w.join();
+  };
   if (lines) {
     LineContext context;
     context.interaction = &interaction;
@@ -362,10 +369,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
         }
       }
     };
-    std::vector<std::thread> workers;
-    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
-    evaluate(0, threads);
-    for (std::thread& w : workers) w.join();
+    on_threads(evaluate);
   } else {
     model::NeighbourGrid grid(exemplar.window, dimension,
                               range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * longest / cells_along, periodic);
@@ -381,10 +385,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
         }
       }
     };
-    std::vector<std::thread> workers;
-    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
-    evaluate(0, threads);
-    for (std::thread& w : workers) w.join();
+    on_threads(evaluate);
   }
   // Lines: the data points' share comes off every line of their category alike, so that the
   // weights still sum to |W|.
