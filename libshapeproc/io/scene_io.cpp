@@ -1,5 +1,9 @@
 #include "libshapeproc/io/scene_io.hpp"
 
+#include <fstream>
+
+#include <pugixml.hpp>
+
 #include "libshapeproc/io/atomic_file.hpp"
 #include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/io/error.hpp"
@@ -45,6 +49,34 @@ void write_scene(const geometry::Scene& scene, const std::filesystem::path& file
   } else {
     throw UsageError(file.string() + ": unknown output format '." + ext + "' (expected .svg, .obj, .ply or .csv)");
   }
+}
+
+std::string read_provenance(const std::filesystem::path& file) {
+  const std::string ext = extension_of(file);
+  if (ext == "svg") {
+    pugi::xml_document document;
+    if (!document.load_file(file.c_str())) return {};
+    for (pugi::xml_node node : document.document_element().children()) {
+      if (std::string(node.name()) == "metadata" && std::string(node.attribute("id").value()) == "shapeproc") {
+        return node.child_value();
+      }
+    }
+    return {};
+  }
+  if (ext == "obj" || ext == "ply") {
+    const std::string marker = ext == "obj" ? "# provenance " : "comment provenance ";
+    std::ifstream in(file);
+    std::string line;
+    for (int n = 0; n < 64 && std::getline(in, line); ++n) {
+      if (line.rfind(marker, 0) == 0) return line.substr(marker.size());
+    }
+    return {};
+  }
+  if (ext == "csv") {
+    std::ifstream in(file.string() + ".json");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  return {};
 }
 
 }  // namespace shapeproc::io

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/io/reader_options.hpp"
@@ -17,5 +18,9 @@ geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOption
 // an unknown extension or a format that cannot hold the scene's dimension.
 void write_scene(const geometry::Scene& scene, const std::filesystem::path& file,
                  const Provenance& provenance);
+
+// The provenance record a shapeproc output carries (SVG <metadata id="shapeproc">, the OBJ/PLY
+// provenance comment, a CSV's JSON sidecar), or an empty string when the file has none.
+std::string read_provenance(const std::filesystem::path& file);
 
 }  // namespace shapeproc::io

@@ -266,14 +266,15 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
   const Vec3 size = box.sizes();
   const double longest = std::max(size.x(), size.y());
   if (!(longest > 0)) throw std::invalid_argument("render: the scene has an empty window");
-  const int width = std::max(1, static_cast<int>(std::lround(options.long_side * size.x() / longest)));
-  const int height = std::max(1, static_cast<int>(std::lround(options.long_side * size.y() / longest)));
+  const double scale = options.scale > 0 ? options.scale : options.long_side / longest;
+  const int width = std::max(1, static_cast<int>(std::lround(scale * size.x())));
+  const int height = std::max(1, static_cast<int>(std::lround(scale * size.y())));
   Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   Context cr(cairo_create(surface.get()));
   cairo_set_source_rgb(cr.get(), 1, 1, 1);
   cairo_paint(cr.get());
   set_view(cr.get(), box, width, height);
-  const double pixel = longest / options.long_side;
+  const double pixel = 1.0 / scale;
   if (scene.dimension == 3) draw_3d(cr.get(), scene, options, pixel); else draw_2d(cr.get(), scene, options, pixel);
   if (options.draw_window) {
     cairo_rectangle(cr.get(), box.min().x(), box.min().y(), size.x(), size.y());

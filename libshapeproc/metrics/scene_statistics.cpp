@@ -1,0 +1,291 @@
+#include "libshapeproc/metrics/scene_statistics.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "libshapeproc/sample/random.hpp"
+
+namespace shapeproc::metrics {
+
+using geometry::Vec3;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Area (2D) or volume (3D) of a ball of radius r.
+double ball_measure(int dimension, double r) {
+  return dimension == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
+}
+
+// Sorts (value, weight) pairs by value, merges equal values and normalises the weights.
+Distribution make_distribution(std::vector<std::pair<double, double>> samples, int count) {
+  Distribution d;
+  d.samples = count;
+  std::sort(samples.begin(), samples.end());
+  double total = 0.0;
+  for (const auto& s : samples) total += s.second;
+  if (!(total > 0)) return d;
+  for (const auto& s : samples) {
+    if (!d.values.empty() && d.values.back() == s.first) {
+      d.weights.back() += s.second / total;
+    } else {
+      d.values.push_back(s.first);
+      d.weights.push_back(s.second / total);
+    }
+  }
+  return d;
+}
+
+// #{j : borders[j] >= t} from the sorted borders.
+class AtRisk {
+ public:
+  explicit AtRisk(std::vector<double> borders) : sorted_(std::move(borders)) { std::sort(sorted_.begin(), sorted_.end()); }
+  double operator()(double t) const {
+    return static_cast<double>(sorted_.end() - std::lower_bound(sorted_.begin(), sorted_.end(), t));
+  }
+
+ private:
+  std::vector<double> sorted_;
+};
+
+// Distance from an element's proxy box to the window's boundary (0 when it reaches outside).
+double border_distance(const geometry::Box3& window, const geometry::Box3& box, int dimension) {
+  double b = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < dimension; ++k) {
+    b = std::min({b, box.min()[k] - window.min()[k], window.max()[k] - box.max()[k]});
+  }
+  return std::max(0.0, b);
+}
+
+geometry::Box3 proxy_box(const geometry::PairMeasurer& measurer, int shape) {
+  if (measurer.dimension() == 2) return geometry::lift(measurer.proxies2().at(static_cast<std::size_t>(shape)).box);
+  return measurer.proxies3().at(static_cast<std::size_t>(shape)).box;
+}
+
+// Reference measure of the g(r) estimator: per distance bin, the mean over ordered pairs of
+// distinct elements (i, j) of the measure of offsets u with d(s_i, s_j, u) in the bin. Exact for
+// points; Monte Carlo otherwise (offsets uniform in the ball where d < R is possible).
+std::vector<double> offset_measure(const geometry::Scene& scene, const geometry::PairMeasurer& measurer, double range,
+                                   int bins, const StatisticsOptions& options) {
+  const int dim = scene.dimension;
+  const double width = range / bins;
+  std::vector<double> measure(static_cast<std::size_t>(bins), 0.0);
+  bool points = true;
+  for (std::size_t s = 0; s < scene.shapes.size(); ++s) points = points && measurer.radius(static_cast<int>(s)) == 0.0;
+  if (points) {
+    for (int k = 0; k < bins; ++k) measure[k] = ball_measure(dim, (k + 1) * width) - ball_measure(dim, k * width);
+    return measure;
+  }
+  const std::size_t n = scene.elements.size();
+  sample::Random random(options.seed);
+  const int samples = options.offset_samples > 0 ? options.offset_samples : (dim == 2 ? 1 << 16 : 1 << 13);
+  for (int m = 0; m < samples; ++m) {
+    const std::size_t i = random.index(n);
+    std::size_t j = random.index(n - 1);
+    if (j >= i) ++j;
+    const int a = scene.elements[i].shape, b = scene.elements[j].shape;
+    const double reach = measurer.radius(a) + measurer.radius(b) + range;
+    // Uniform in the ball of radius `reach` by rejection from its cube.
+    Vec3 u = Vec3::Zero();
+    do {
+      for (int k = 0; k < dim; ++k) u[k] = reach * (2.0 * random.uniform() - 1.0);
+    } while (u.squaredNorm() > reach * reach);
+    // The boxes' bounds often settle the bin without the exact distance.
+    const auto [low, high] = measurer.distance_bounds(a, b, u);
+    if (low >= range) continue;
+    int k = std::min(bins - 1, static_cast<int>(low / width));
+    if (high >= range || std::min(bins - 1, static_cast<int>(high / width)) != k) {
+      const double d = measurer.distance(a, b, u, range);
+      if (d >= range) continue;
+      k = std::min(bins - 1, static_cast<int>(d / width));
+    }
+    measure[k] += ball_measure(dim, reach) / samples;
+  }
+  return measure;
+}
+
+}  // namespace
+
+double Distribution::mean() const {
+  double m = 0.0;
+  for (std::size_t i = 0; i < values.size(); ++i) m += values[i] * weights[i];
+  return values.empty() ? std::numeric_limits<double>::quiet_NaN() : m;
+}
+
+double Distribution::cdf(double r) const {
+  double c = 0.0;
+  for (std::size_t i = 0; i < values.size() && values[i] <= r; ++i) c += weights[i];
+  return std::min(1.0, c);
+}
+
+double wasserstein1(const Distribution& a, const Distribution& b) {
+  if (a.empty() || b.empty()) return std::numeric_limits<double>::quiet_NaN();
+  // Walk the merged breakpoints; between two of them both CDFs are constant.
+  std::size_t i = 0, j = 0;
+  double fa = 0.0, fb = 0.0, last = std::min(a.values.front(), b.values.front()), area = 0.0;
+  while (i < a.values.size() || j < b.values.size()) {
+    const double next = std::min(i < a.values.size() ? a.values[i] : std::numeric_limits<double>::infinity(),
+                                 j < b.values.size() ? b.values[j] : std::numeric_limits<double>::infinity());
+    area += std::abs(fa - fb) * (next - last);
+    last = next;
+    while (i < a.values.size() && a.values[i] == next) fa += a.weights[i++];
+    while (j < b.values.size() && b.values[j] == next) fb += b.weights[j++];
+  }
+  return area;
+}
+
+Distribution censored_distribution(const std::vector<double>& values, const std::vector<double>& borders, double range) {
+  const AtRisk at_risk(borders);
+  std::vector<std::pair<double, double>> samples;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double t = std::min(values[i], range);
+    if (t > borders[i]) continue;  // censored: an unseen element could be nearer
+    samples.emplace_back(t, 1.0 / at_risk(t));
+  }
+  const int count = static_cast<int>(samples.size());
+  return make_distribution(std::move(samples), count);
+}
+
+int SceneStatistics::elements() const { return std::accumulate(counts.begin(), counts.end(), 0); }
+
+SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (scene.elements.empty()) throw std::invalid_argument("the scene has no elements");
+  if (!(options.range >= 0) || options.correlation_bins < 1) throw std::invalid_argument("bad statistics options");
+  const std::size_t n = scene.elements.size();
+  const int dim = scene.dimension;
+
+  SceneStatistics stats;
+  stats.dimension = dim;
+  stats.periodic = options.measurement.periodic;
+  stats.window_measure = scene.window_measure();
+  if (!(stats.window_measure > 0)) throw std::invalid_argument("the window has no area");
+  stats.mean_spacing = std::pow(stats.window_measure / static_cast<double>(n), 1.0 / dim);
+  const double range = options.range > 0 ? options.range : stats.mean_spacing;
+  stats.range = range;
+  for (const geometry::Category& c : scene.categories) stats.categories.push_back(c.name);
+  stats.counts.assign(stats.categories.size(), 0);
+  for (const geometry::Element& e : scene.elements) ++stats.counts.at(static_cast<std::size_t>(e.category));
+  for (int c : stats.counts) stats.intensity.push_back(c / stats.window_measure);
+
+  geometry::MeasurementOptions measurement = options.measurement;
+  measurement.distance = geometry::DistanceKind::shape;
+  const geometry::PairMeasurer measurer(scene, measurement);
+  const std::vector<geometry::PairRecord> pairs = measurer.all_pairs(scene.elements, range);
+  const int axes = measurer.bins().axis_count();
+
+  // Distance of each element to the window's edge (infinite on a torus).
+  std::vector<double> borders(n, std::numeric_limits<double>::infinity());
+  if (!stats.periodic) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const geometry::Element& e = scene.elements[i];
+      geometry::Box3 box = proxy_box(measurer, e.shape);
+      box.translate(e.position);
+      borders[i] = border_distance(scene.window, box, dim);
+    }
+  }
+
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> nearest(n, inf);
+  for (const geometry::PairRecord& p : pairs) {
+    nearest[p.i] = std::min(nearest[p.i], p.measurement.distance);
+    nearest[p.j] = std::min(nearest[p.j], p.measurement.distance);
+  }
+  if (!stats.periodic) {
+    stats.edge = options.edge;
+    if (options.edge == EdgeTreatment::automatic) {
+      std::size_t observed = 0;
+      for (std::size_t i = 0; i < n; ++i) observed += std::min(nearest[i], range) <= borders[i] ? 1 : 0;
+      stats.edge = 2 * observed >= n ? EdgeTreatment::border : EdgeTreatment::none;
+    }
+    if (stats.edge == EdgeTreatment::none) borders.assign(n, inf);
+  }
+  const AtRisk at_risk(borders);
+
+  stats.collisions.colliding.assign(n, false);
+  std::vector<std::vector<double>> nearest_axis(static_cast<std::size_t>(axes), std::vector<double>(n, inf));
+  std::vector<std::pair<double, double>> all_pairs;
+  std::vector<std::vector<std::pair<double, double>>> axis_pairs(static_cast<std::size_t>(axes));
+  std::vector<double> correlation_counts(static_cast<std::size_t>(options.correlation_bins), 0.0);
+  const double width = range / options.correlation_bins;
+  for (const geometry::PairRecord& p : pairs) {
+    const double d = p.measurement.distance;
+    const int axis = p.measurement.axis;
+    if (d <= 0.0) {
+      stats.collisions.pairs.emplace_back(p.i, p.j);
+      stats.collisions.colliding[p.i] = stats.collisions.colliding[p.j] = true;
+    }
+    for (const int e : {p.i, p.j}) {
+      nearest_axis[axis][e] = std::min(nearest_axis[axis][e], d);
+      if (d > borders[e]) continue;  // this end is too close to the edge to see all neighbours at d
+      const double w = 1.0 / at_risk(d);
+      all_pairs.emplace_back(d, w);
+      axis_pairs[axis].emplace_back(d, w);
+      correlation_counts[std::min(options.correlation_bins - 1, static_cast<int>(d / width))] += w;
+    }
+  }
+  stats.collisions.elements = static_cast<int>(std::count(stats.collisions.colliding.begin(), stats.collisions.colliding.end(), true));
+
+  auto pair_statistics = [&](DirectionalStatistics& out, std::vector<std::pair<double, double>> samples) {
+    double total = 0.0;
+    for (const auto& s : samples) total += s.second;
+    out.neighbours = total;
+    const int count = static_cast<int>(samples.size());
+    out.pairs = make_distribution(std::move(samples), count);
+  };
+  stats.all.nearest = censored_distribution(nearest, borders, range);
+  pair_statistics(stats.all, std::move(all_pairs));
+  for (int k = 0; k < axes; ++k) {
+    DirectionalStatistics a;
+    a.direction = measurer.bins().axis_direction(k);
+    a.nearest = censored_distribution(nearest_axis[k], borders, range);
+    pair_statistics(a, std::move(axis_pairs[k]));
+    stats.axes.push_back(std::move(a));
+  }
+
+  // g(r): the edge-corrected mean number of neighbours per distance bin over the number a
+  // binomial pattern of the same elements would give, (n - 1) / |W| times the offset measure.
+  const std::vector<double> reference = n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options)
+                                              : std::vector<double>(static_cast<std::size_t>(options.correlation_bins), 0.0);
+  const double density = static_cast<double>(n - 1) / stats.window_measure;
+  for (int k = 0; k < options.correlation_bins; ++k) {
+    stats.correlation_r.push_back((k + 0.5) * width);
+    const double expected = density * reference[k];
+    stats.correlation.push_back(expected > 0 ? correlation_counts[k] / expected : std::numeric_limits<double>::quiet_NaN());
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+Comparison compare(const SceneStatistics& scene, const SceneStatistics& reference) {
+  if (scene.axes.size() != reference.axes.size() || std::abs(scene.range - reference.range) > 1e-9 * reference.range) {
+    throw std::invalid_argument("statistics computed with different ranges or direction bins cannot be compared");
+  }
+  Comparison c;
+  c.scale = reference.mean_nearest();
+  // Packed exemplars (touching elements) have a mean nearest distance near 0; fall back on the
+  // spacing so that the ratio stays meaningful.
+  if (!(c.scale > 1e-3 * reference.mean_spacing)) c.scale = reference.mean_spacing;
+  auto distances = [&](const DirectionalStatistics& a, const DirectionalStatistics& b) {
+    return DistributionDistances{wasserstein1(a.nearest, b.nearest) / c.scale, wasserstein1(a.pairs, b.pairs) / c.scale};
+  };
+  c.all = distances(scene.all, reference.all);
+  for (std::size_t k = 0; k < scene.axes.size(); ++k) c.axes.push_back(distances(scene.axes[k], reference.axes[k]));
+  for (std::size_t k = 0; k < scene.categories.size(); ++k) {
+    double ratio = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t r = 0; r < reference.categories.size(); ++r) {
+      if (reference.categories[r] == scene.categories[k] && reference.intensity[r] > 0) {
+        ratio = scene.intensity[k] / reference.intensity[r];
+      }
+    }
+    c.intensity_ratio.push_back(ratio);
+  }
+  return c;
+}
+
+}  // namespace shapeproc::metrics
