@@ -276,6 +276,18 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
   set_view(cr.get(), box, width, height);
   const double pixel = 1.0 / scale;
   if (scene.dimension == 3) draw_3d(cr.get(), scene, options, pixel); else draw_2d(cr.get(), scene, options, pixel);
+  // Highlighted elements also get a red ring, visible whatever their own colours.
+  for (std::size_t i = 0; i < scene.elements.size() && i < options.highlight.size(); ++i) {
+    if (!options.highlight[i]) continue;
+    const geometry::Element& e = scene.elements[i];
+    const Box3 shape_box = geometry::bounding_box(scene.shapes.at(static_cast<std::size_t>(e.shape)));
+    const double radius = 0.5 * shape_box.sizes().head<2>().norm() + 4 * pixel;
+    cairo_new_path(cr.get());
+    cairo_arc(cr.get(), e.position.x(), e.position.y(), radius, 0, 2 * 3.14159265358979323846);
+    cairo_set_source_rgba(cr.get(), 0.85, 0.1, 0.1, 0.9);
+    cairo_set_line_width(cr.get(), 2 * pixel);
+    cairo_stroke(cr.get());
+  }
   if (options.draw_window) {
     cairo_rectangle(cr.get(), box.min().x(), box.min().y(), size.x(), size.y());
     cairo_set_source_rgb(cr.get(), 0.6, 0.6, 0.6);

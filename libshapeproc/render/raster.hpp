@@ -32,7 +32,7 @@ Raster rasterize_filled(const geometry::Scene& scene, const geometry::Box3& box,
 struct RenderOptions {
   int long_side = 800;                // pixels along the longer side of the window
   double scale = 0.0;                 // pixels per unit length; when positive, replaces long_side
-  std::vector<bool> highlight;        // per element: draw in red (collisions); may be empty
+  std::vector<bool> highlight;        // per element: draw in red with a red ring (collisions); may be empty
   bool draw_window = true;            // the window's outline, in grey
 };
 

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include "libshapeproc/render/raster.hpp"
 
 #include "tests/test_support.hpp"
 
@@ -267,6 +270,93 @@ TEST(CliSynthesize, FitsThenSamples) {
   EXPECT_NE(r.out.find("sampled"), std::string::npos);
   EXPECT_NE(testing::read_file(out).find("&quot;seed&quot;:4"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(model));
+}
+
+TEST(CliStats, TextJsonAndComparisons) {
+  const testing::TempDir dir;
+  const Result text = run_cli({"stats", data("svg/dots-random.svg")});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("30 elements"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("collisions  0 pairs"), std::string::npos) << text.out;
+
+  // Against itself: every distance is 0.
+  const Result self = run_cli({"stats", data("svg/dots-random.svg"), "--against", data("svg/dots-random.svg"), "--json"});
+  ASSERT_EQ(self.code, 0) << self.err;
+  const nlohmann::json j = nlohmann::json::parse(self.out);
+  EXPECT_EQ(j["elements"], 30);
+  EXPECT_EQ(j["boundary"], "open");
+  EXPECT_DOUBLE_EQ(j["all"]["w1"]["nearest"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j["neighbourhood_distance"]["mean"].get<double>(), 0.0);
+  EXPECT_EQ(j["axes"].size(), 4u);
+
+  // A sampled output knows it lives on a torus.
+  const std::string out = dir.file("out.svg").string();
+  ASSERT_EQ(run_cli({"synthesize", data("svg/dots-random.svg"), "--quadrature", "8", "-o", out, "--size", "300,300",
+                     "--seed", "2", "--iterations", "20000"}).code, 0);
+  const Result output = run_cli({"stats", out, "--against", data("svg/dots-random.svg"), "--json"});
+  ASSERT_EQ(output.code, 0) << output.err;
+  const nlohmann::json o = nlohmann::json::parse(output.out);
+  EXPECT_EQ(o["boundary"], "torus");
+  EXPECT_EQ(o["collisions"]["pairs"], 0);
+  EXPECT_GT(o["all"]["w1"]["nearest"].get<double>(), 0.0);
+
+  expect_one_line_error(run_cli({"stats", dir.file("none.svg").string()}), 2, "none.svg");
+  expect_one_line_error(run_cli({"stats", data("svg/dots-random.svg"), "--edge", "sideways"}), 2, "--edge");
+  expect_one_line_error(run_cli({"stats", data("svg/dots-random.svg"), "--against", data("mesh/pebbles.obj")}), 2, "3D");
+}
+
+// Mean and spread of a PNG's grey levels: a blank picture has no spread.
+double grey_spread(const std::filesystem::path& png) {
+  const render::Raster r = render::read_grayscale_png(png);
+  double sum = 0.0, squares = 0.0;
+  for (const float v : r.values) {
+    sum += v;
+    squares += static_cast<double>(v) * v;
+  }
+  const double n = static_cast<double>(r.values.size());
+  return std::sqrt(std::max(0.0, squares / n - (sum / n) * (sum / n)));
+}
+
+TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("out.svg").string(), model = dir.file("m.json").string();
+  ASSERT_EQ(run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", out,
+                     "--model", model, "--size", "300,300", "--seed", "4", "--iterations", "20000"}).code, 0);
+  const std::filesystem::path report = dir.file("report");
+  const Result r = run_cli({"report", data("svg/two-kinds.svg"), out, "--category-by", "fill", "--model", model, "-o",
+                            report.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("0 colliding pairs"), std::string::npos) << r.out;
+
+  pugi::xml_document html;
+  const pugi::xml_parse_result parsed = html.load_file((report / "index.html").c_str());
+  ASSERT_TRUE(parsed) << parsed.description();
+  EXPECT_STREQ(html.document_element().name(), "html");
+  int charts = 0;
+  for (const pugi::xpath_node& n : html.select_nodes("//svg")) {
+    ++charts;
+    EXPECT_STREQ(n.node().attribute("xmlns").value(), "http://www.w3.org/2000/svg");
+  }
+  EXPECT_GE(charts, 3 + 4 + 1);  // G, pairs, g, four axes, the interaction function
+  std::vector<std::string> images;
+  for (const pugi::xpath_node& n : html.select_nodes("//img")) images.push_back(n.node().attribute("src").value());
+  ASSERT_EQ(images, (std::vector<std::string>{"exemplar.png", "output-1.png"}));
+  for (const std::string& image : images) EXPECT_GT(grey_spread(report / image), 0.05) << image;
+  // Both pictures share one scale: the 300-wide output is 300 / 220 times the exemplar's width.
+  const render::Raster exemplar = render::read_grayscale_png(report / "exemplar.png");
+  const render::Raster output = render::read_grayscale_png(report / "output-1.png");
+  EXPECT_NEAR(static_cast<double>(output.width) / exemplar.width, 300.0 / 220.0, 0.01);
+  pugi::xml_document plot;
+  ASSERT_TRUE(plot.load_file((report / "interaction.svg").c_str()));
+  const nlohmann::json metrics = nlohmann::json::parse(testing::read_file(report / "metrics.json"));
+  EXPECT_EQ(metrics["outputs"].size(), 1u);
+
+  // A missing output: one line naming it, and no report.
+  const std::filesystem::path other = dir.file("other");
+  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"), dir.file("missing.svg").string(), "-o", other.string()}),
+                        2, "missing.svg");
+  EXPECT_FALSE(std::filesystem::exists(other));
+  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"), out, "-o", out}), 2, "not a directory");
 }
 
 }  // namespace

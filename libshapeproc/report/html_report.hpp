@@ -1,0 +1,46 @@
+// A self-contained HTML report comparing an exemplar with synthesised outputs (docs/report.md):
+// pictures at one scale with colliding elements in red, the interaction function, per-axis
+// distance CDFs, G(r) and g(r), a metrics table and timings. No network: charts are inline SVG,
+// pictures are PNGs beside index.html (rendered with Cairo).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/metrics/neighbourhood_distance.hpp"
+#include "libshapeproc/metrics/scene_statistics.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::report {
+
+struct ReportScene {
+  std::string label;  // the file name as the user gave it
+  const geometry::Scene* scene = nullptr;
+  const metrics::SceneStatistics* statistics = nullptr;
+  const metrics::Comparison* comparison = nullptr;                // outputs only
+  const metrics::NeighbourhoodDistance* neighbourhood = nullptr;  // outputs only
+  std::string note;  // how it was made (seed, steps, boundary), when known
+};
+
+struct Report {
+  ReportScene exemplar;
+  std::vector<ReportScene> outputs;
+  const model::ShapeProcessModel* model = nullptr;  // optional
+  std::string model_label;
+  std::string command;                                  // the command that wrote the report
+  std::vector<std::pair<std::string, double>> timings;  // stage, seconds
+};
+
+// Writes `directory`/index.html and the pictures exemplar.png, output-1.png, … (and
+// interaction.svg with a model). Creates the directory; every file is written atomically.
+// Throws std::invalid_argument when a scene or its statistics are missing.
+void write_report(const Report& report, const std::filesystem::path& directory);
+
+// The pixels per unit length at which the report draws its scenes: the exemplar's longer side at
+// most 420 px and the largest output's at most 840 px, one scale for all.
+double picture_scale(const Report& report);
+
+}  // namespace shapeproc::report

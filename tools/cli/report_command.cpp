@@ -1,0 +1,132 @@
+// shapeproc report EXEMPLAR OUTPUT... -o DIR [--model model.json]: index.html, pictures and
+// metrics.json comparing outputs with their exemplar.
+#include <chrono>
+#include <memory>
+#include <sstream>
+
+#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/report/html_report.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/cli/stats_command.hpp"
+
+namespace shapeproc::cli {
+
+namespace {
+
+// "seed 1, 38474 steps, torus" from a shapeproc output's provenance.
+std::string note_from_provenance(const nlohmann::json& provenance) {
+  if (!provenance.is_object() || !provenance.contains("parameters") || !provenance["parameters"].is_object()) return {};
+  const nlohmann::json& p = provenance["parameters"];
+  std::ostringstream s;
+  s << "shapeproc " << provenance.value("command", std::string("?"));
+  if (p.contains("seed")) s << ", seed " << p["seed"].dump();
+  if (p.contains("chain") && p.value("chains", 1) > 1) s << ", chain " << p["chain"].dump();
+  if (p.contains("iterations")) s << ", " << p["iterations"].dump() << " steps";
+  if (p.contains("boundary")) s << ", " << p.value("boundary", std::string());
+  if (p.contains("domain")) s << ", domain " << p.value("domain", std::string());
+  if (p.contains("intensity")) s << ", intensity map " << p.value("intensity", std::string());
+  return s.str();
+}
+
+std::string join(const std::vector<std::string>& arguments) {
+  std::string out;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    if (i > 0) out += ' ';
+    out += i == 0 ? "shapeproc" : arguments[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
+  struct ReportArguments {
+    std::string exemplar, directory, model;
+    std::vector<std::string> outputs;
+    MetricFlags metrics;
+    ReaderFlags reader;
+  };
+  auto args = std::make_shared<ReportArguments>();
+  CLI::App* command = app.add_subcommand(
+      "report", "Write DIR/index.html (self-contained) with pictures, distance charts and metrics comparing outputs "
+                "with their exemplar, and DIR/metrics.json");
+  command->add_option("EXEMPLAR", args->exemplar, "the exemplar")->required();
+  command->add_option("OUTPUTS", args->outputs, "outputs to compare with it")->required();
+  command->add_option("-o,--output", args->directory, "report directory")->required();
+  command->add_option("--model", args->model, "the fitted model: its interaction function is drawn, its axes used");
+  args->metrics.add_to(*command);
+  args->reader.add_to(*command);
+  command->callback([&action, args, arguments] {
+    action = [args, arguments](std::ostream& out) {
+      const auto start = std::chrono::steady_clock::now();
+      std::unique_ptr<model::ShapeProcessModel> model;
+      MetricFlags flags = args->metrics;
+      if (!args->model.empty()) {
+        model = std::make_unique<model::ShapeProcessModel>(io::read_model(args->model));
+        if (flags.directions == 0) flags.directions = model->measurement.directions;
+        if (flags.direction == "gravitation" && model->measurement.direction == geometry::DirectionKind::centroid) {
+          flags.direction = "centroid";
+        }
+      }
+      if (std::filesystem::exists(args->directory) && !std::filesystem::is_directory(args->directory)) {
+        throw io::UsageError(args->directory + ": exists and is not a directory");
+      }
+      const EvaluatedScene exemplar =
+          read_evaluated_scene(args->exemplar, args->reader, flags.boundary == "torus" ? "auto" : flags.boundary);
+      const Evaluation exemplar_eval = evaluate(exemplar, flags);
+      std::vector<EvaluatedScene> outputs;
+      std::vector<Evaluation> evals;
+      for (const std::string& file : args->outputs) {
+        outputs.push_back(read_evaluated_scene(file, args->reader, flags.boundary));
+        evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
+      }
+
+      report::Report r;
+      r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics, nullptr, nullptr, ""};
+      for (std::size_t i = 0; i < outputs.size(); ++i) {
+        r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics, &*evals[i].comparison,
+                             &*evals[i].neighbourhood, note_from_provenance(outputs[i].provenance)});
+      }
+      r.model = model.get();
+      r.model_label = args->model;
+      r.command = join(arguments);
+      if (model && !model->fit_json.empty()) {
+        const nlohmann::json fit = nlohmann::json::parse(model->fit_json, nullptr, false);
+        if (fit.is_object() && fit.contains("seconds") && fit["seconds"].is_object()) {
+          for (const auto& [stage, seconds] : fit["seconds"].items()) {
+            if (seconds.is_number()) r.timings.emplace_back("fit: " + stage, seconds.get<double>());
+          }
+        }
+      }
+      r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);
+      for (std::size_t i = 0; i < evals.size(); ++i) {
+        r.timings.emplace_back("metrics: output " + std::to_string(i + 1), evals[i].statistics.seconds);
+      }
+
+      nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
+                                {"outputs", nlohmann::json::array()},
+                                {"options", flags.to_json()}};
+      for (std::size_t i = 0; i < outputs.size(); ++i) metrics["outputs"].push_back(evaluation_json(outputs[i], evals[i]));
+      std::filesystem::create_directories(args->directory);
+      io::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
+                                [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
+      r.timings.emplace_back("reading and metrics, in total",
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      report::write_report(r, args->directory);
+      out << "wrote " << (std::filesystem::path(args->directory) / "index.html").string() << " ("
+          << outputs.size() + 1 << " pictures, metrics.json)\n";
+      for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const Evaluation& e = evals[i];
+        out << "  " << args->outputs[i] << ": " << e.statistics.elements() << " elements, "
+            << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest " << e.comparison->all.nearest
+            << ", W1 pairs " << e.comparison->all.pairs << ", neighbourhood distance " << e.neighbourhood->normalised
+            << " a²\n";
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace shapeproc::cli
