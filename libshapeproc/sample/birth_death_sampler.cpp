@@ -83,6 +83,13 @@ class Configuration {
     free_.push_back(slot);
   }
 
+  void move(int slot, const Vec3& position) {
+    Element& e = elements_[static_cast<std::size_t>(slot)];
+    grid_.remove(slot, e.position);
+    e.position = position;
+    grid_.insert(slot, position);
+  }
+
   std::vector<Element> elements() const {
     std::vector<Element> out;
     std::vector<int> slots = alive_;
@@ -99,13 +106,6 @@ class Configuration {
   std::vector<int> alive_, free_, position_in_alive_;
   mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
 };
-
-// Mean of a raster's values (the share of β the domain keeps), and the fraction inside a mask.
-double raster_mean(const render::Raster& r, bool threshold) {
-  double total = 0.0;
-  for (float v : r.values) total += threshold ? (v >= 0.5f ? 1.0 : 0.0) : v;
-  return r.values.empty() ? 0.0 : total / static_cast<double>(r.values.size());
-}
 
 // Whether the element's proxy lies inside the mask: its reference position and its outline at
 // half-pixel spacing.
@@ -125,6 +125,31 @@ bool inside_mask(const render::Raster& mask, const geometry::Box3& domain, const
   return true;
 }
 
+// The automatic rule's test on the counts recorded so far: the second half of the run, cut into
+// ten batches; the means of its two quarters must differ by at most max(1, 1% of the mean) plus
+// two standard errors from the batch means (a trend inflates the difference faster than the
+// batches' spread).
+bool is_stationary(const std::vector<int>& counts) {
+  const std::size_t half = counts.size() / 2, length = counts.size() - half;
+  if (length < 100) return false;
+  constexpr int kBatches = 10;
+  std::vector<double> batch(kBatches, 0.0);
+  const std::size_t per_batch = length / kBatches;
+  for (int b = 0; b < kBatches; ++b) {
+    for (std::size_t i = 0; i < per_batch; ++i) batch[b] += counts[half + b * per_batch + i];
+    batch[b] /= static_cast<double>(per_batch);
+  }
+  double first = 0.0, second = 0.0, mean = 0.0;
+  for (int b = 0; b < kBatches; ++b) {
+    (b < kBatches / 2 ? first : second) += batch[b] / (kBatches / 2);
+    mean += batch[b] / kBatches;
+  }
+  double variance = 0.0;
+  for (double m : batch) variance += (m - mean) * (m - mean) / (kBatches - 1);
+  const double standard_error = std::sqrt(variance * (2.0 / (kBatches / 2)));
+  return std::abs(second - first) <= std::max(1.0, 0.01 * mean) + 2.0 * standard_error;
+}
+
 }  // namespace
 
 std::uint64_t chain_seed(std::uint64_t seed, int chain) {
@@ -134,14 +159,6 @@ std::uint64_t chain_seed(std::uint64_t seed, int chain) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
-}
-
-long long default_iterations(const model::ShapeProcessModel& model, const geometry::Box3& domain, const SamplerOptions& options) {
-  double expected = 0.0;
-  for (const auto& c : model.categories) expected += c.beta * domain_measure(domain, model.dimension);
-  if (options.mask) expected *= raster_mean(*options.mask, true);
-  if (options.intensity) expected *= raster_mean(*options.intensity, false);
-  return std::max<long long>(20000, static_cast<long long>(std::ceil(200.0 * expected)));
 }
 
 SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Box3& domain,
@@ -176,7 +193,13 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
   const double log_measure_categories = std::log(measure) + std::log(static_cast<double>(categories));
 
   Random random(options.seed);
-  result.iterations = options.iterations > 0 ? options.iterations : default_iterations(model, domain, options);
+  const bool automatic = options.iterations <= 0;
+  if (!(options.shift_probability >= 0 && options.shift_probability < 1) || !(options.shift_radius >= 0)) {
+    throw std::invalid_argument("sample: the shift probability must be in [0, 1) and the shift radius >= 0");
+  }
+  const double shift_radius = options.shift_radius > 0 ? options.shift_radius
+                              : interaction.range() > 0 ? 0.5 * interaction.range()
+                                                        : 0.05 * domain.sizes().head(dimension).minCoeff();
   // log of the local factor of β at a location (−∞ outside the mask or where the map is black).
   auto log_local = [&](const Element& e) {
     double factor = 0.0;
@@ -189,11 +212,46 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
     return factor;
   };
   const bool local = options.mask || options.intensity;
-  const long long progress_every = std::max<long long>(1, result.iterations / 100);
+  const long long progress_every = automatic ? 10000 : std::max<long long>(1, options.iterations / 100);
+  // The automatic rule (see SamplerOptions::iterations): the count every kStride steps.
+  constexpr long long kMinimumSteps = 20000, kStride = 10, kStepsPerElement = 1000;
+  std::vector<int> counts;
+  long long next_check = kMinimumSteps;
   double log_density = 0.0;  // unnormalised, tracked incrementally
-  for (long long step = 1; step <= result.iterations; ++step) {
+  long long step = 1;
+  for (;; ++step) {
     const int n = state.size();
-    if (random.uniform() < 0.5) {
+    const double move = random.uniform();
+    if (move < options.shift_probability) {
+      ++result.shifts_proposed;
+      if (n > 0) {
+        const int slot = state.slot_of_rank(random.index(static_cast<std::uint64_t>(n)));
+        const Element old = state.at(slot);
+        Vec3 offset = Vec3::Zero();
+        do {
+          for (int axis = 0; axis < dimension; ++axis) offset[axis] = shift_radius * (2.0 * random.uniform() - 1.0);
+        } while (offset.squaredNorm() > shift_radius * shift_radius);
+        Element moved = old;
+        moved.position += offset;
+        bool inside = true;
+        for (int axis = 0; axis < dimension; ++axis) {
+          const double low = domain.min()[axis], size = domain.sizes()[axis];
+          double& x = moved.position[axis];
+          if (options.periodic) x -= size * std::floor((x - low) / size);
+          else inside = inside && x >= low && x <= domain.max()[axis];
+        }
+        const double local_term = !inside ? -std::numeric_limits<double>::infinity() : local ? log_local(moved) : 0.0;
+        const double new_term = std::isfinite(local_term) ? local_term + state.log_interaction(moved, slot) : local_term;
+        if (std::isfinite(new_term)) {
+          const double old_term = (local ? log_local(old) : 0.0) + state.log_interaction(old, slot);
+          if (std::log(random.uniform()) < new_term - old_term) {
+            state.move(slot, moved.position);
+            log_density += new_term - old_term;
+            ++result.shifts_accepted;
+          }
+        }
+      }
+    } else if ((move - options.shift_probability) < 0.5 * (1.0 - options.shift_probability)) {
       ++result.births_proposed;
       Element xi;
       for (int axis = 0; axis < dimension; ++axis) xi.position[axis] = random.uniform(domain.min()[axis], domain.max()[axis]);
@@ -227,8 +285,23 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
     if (options.trace_every > 0 && step % options.trace_every == 0) {
       result.trace.push_back({step, state.size(), log_density});
     }
-    if (options.progress && (step % progress_every == 0 || step == result.iterations)) options.progress(step, result.iterations);
+    if (!automatic) {
+      if (options.progress && (step % progress_every == 0 || step == options.iterations)) options.progress(step, options.iterations);
+      if (step >= options.iterations) break;
+      continue;
+    }
+    if (options.progress && step % progress_every == 0) options.progress(step, 0);
+    if (step % kStride == 0) counts.push_back(state.size());
+    if (step < next_check) continue;
+    if (step >= kStepsPerElement * state.size() && is_stationary(counts)) break;
+    if (step >= options.max_iterations) {
+      result.stationary = false;
+      break;
+    }
+    next_check = std::min(options.max_iterations, std::max(step + 10000, step + step / 4));
   }
+  result.iterations = step;
+  if (options.progress && automatic) options.progress(step, step);
   scene.elements = state.elements();
   return result;
 }

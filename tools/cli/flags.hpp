@@ -8,6 +8,8 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "libshapeproc/sample/birth_death_sampler.hpp"
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
@@ -45,6 +47,8 @@ struct SampleFlags {
   long long iterations = 0;
   std::uint64_t seed = 1;
   int chains = 1, threads = 0;
+  double shift_probability = sample::SamplerOptions{}.shift_probability;
+  double shift_radius = 0.0;
 
   void add_to(CLI::App& command);
   // Samples `model` into `output` (suffixed per chain), with the outputs' provenance; prints a

@@ -59,7 +59,12 @@ void SampleFlags::add_to(CLI::App& command) {
   command.add_option("--size", size, "domain W,H (2D) or W,H,D (3D), in the model's units")->required();
   command.add_option("--domain", domain, "2D domain shape: an SVG (its filled shapes) or a grayscale PNG mask (white = inside), stretched over --size");
   command.add_option("--intensity", intensity, "2D intensity map: grayscale PNG stretched over --size, scales beta (white = 1)");
-  command.add_option("--iterations", iterations, "steps per chain (default: 200 per expected element, at least 20,000)")
+  command.add_option("--iterations", iterations, "steps per chain (default: until the element count is stationary, see docs/sample.md)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_option("--shift-probability", shift_probability, "share of steps that shift an element (0: birth-death only)")
+      ->check(CLI::Range(0.0, 0.95))
+      ->capture_default_str();
+  command.add_option("--shift-radius", shift_radius, "largest shift (default: half the interaction range)")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--seed", seed, "random seed")->capture_default_str();
   command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")->check(CLI::Range(1, 1000));
@@ -94,25 +99,31 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   base.periodic = boundary.empty() ? domain.empty() : boundary == "torus";
   base.mask = mask ? &*mask : nullptr;
   base.intensity = map ? &*map : nullptr;
-  const long long steps = iterations > 0 ? iterations : sample::default_iterations(model, box, base);
-  if (!trace.empty()) base.trace_every = std::max<long long>(1, steps / 1000);
+  base.shift_probability = shift_probability;
+  base.shift_radius = shift_radius;
+  if (!trace.empty()) base.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
 
-  // A progress bar on a terminal, over all chains.
+  // A progress bar on a terminal, over all chains; with the automatic rule (unknown length), a
+  // count of the steps done.
   const bool terminal = isatty(fileno(stderr)) != 0;
   std::atomic<long long> done{0};
   std::mutex print;
-  int last_percent = -1;
-  const long long total = steps * chains;
+  long long last_shown = -1;
+  const long long total = iterations * chains;
   auto report = [&](long long add) {
     const long long now = done += add;
-    const int percent = static_cast<int>(100 * now / std::max<long long>(1, total));
     std::lock_guard<std::mutex> lock(print);
-    if (percent == last_percent) return;
-    last_percent = percent;
-    const int filled = percent / 4;
-    std::fprintf(stderr, "\rsampling [%s%s] %3d%%", std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(25 - filled), ' ').c_str(), percent);
-    if (now >= total) std::fprintf(stderr, "\n");
+    if (total > 0) {
+      const long long percent = 100 * now / total;
+      if (percent == last_shown) return;
+      last_shown = percent;
+      const int filled = static_cast<int>(percent / 4);
+      std::fprintf(stderr, "\rsampling [%s%s] %3lld%%", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                   std::string(static_cast<std::size_t>(25 - filled), ' ').c_str(), percent);
+      if (now >= total) std::fprintf(stderr, "\n");
+    } else {
+      std::fprintf(stderr, "\rsampling: %lld steps (until the element count is stationary)", now);
+    }
     std::fflush(stderr);
   };
 
@@ -145,12 +156,15 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   for (int t = 1; t < thread_count; ++t) pool.emplace_back(worker);
   worker();
   for (std::thread& t : pool) t.join();
+  if (terminal && total == 0) std::fprintf(stderr, "\n");
   for (const std::string& e : errors)
     if (!e.empty()) throw io::UsageError(e);
 
   parameters["size"] = *sizes;
   parameters["seed"] = seed;
-  parameters["iterations"] = steps;
+  parameters["iterations"] = iterations > 0 ? nlohmann::json(iterations) : nlohmann::json("stationary");
+  parameters["shift_probability"] = shift_probability;
+  if (shift_radius > 0) parameters["shift_radius"] = shift_radius;
   parameters["boundary"] = base.periodic ? "torus" : "open";
   parameters["chains"] = chains;
   if (!domain.empty()) parameters["domain"] = domain;
@@ -160,6 +174,7 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
     nlohmann::json chain_parameters = parameters;
     chain_parameters["chain"] = c + 1;
     chain_parameters["chain_seed"] = sample::chain_seed(seed, c);
+    chain_parameters["steps"] = result.iterations;
     const std::string file = suffixed(output, c, chains);
     io::write_scene(result.scene, file, make_provenance(command_name, arguments, chain_parameters));
     if (!trace.empty()) {
@@ -171,8 +186,13 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
     if (!png.empty()) render::write_png(result.scene, suffixed(png, c, chains));
     out << "sampled " << result.scene.elements.size() << " elements in " << result.iterations << " steps ("
         << seconds[static_cast<std::size_t>(c)] << " s; births accepted " << result.births_accepted << "/"
-        << result.births_proposed << ", deaths " << result.deaths_accepted << "/" << result.deaths_proposed << "), seed "
-        << sample::chain_seed(seed, c) << "\nwrote " << file;
+        << result.births_proposed << ", deaths " << result.deaths_accepted << "/" << result.deaths_proposed << ", shifts "
+        << result.shifts_accepted << "/" << result.shifts_proposed << "), seed " << sample::chain_seed(seed, c) << '\n';
+    if (!result.stationary) {
+      out << "warning: the element count was still changing after " << result.iterations
+          << " steps; the output may not be at equilibrium (give --iterations)\n";
+    }
+    out << "wrote " << file;
     if (!png.empty()) out << " and " << suffixed(png, c, chains);
     out << '\n';
   }
