@@ -20,4 +20,7 @@ exemplar=data/svg/two-kinds.svg
 ./build/tools/shapeproc synthesize "$exemplar" --category-by fill --model out/two-kinds-model.json \
   --size 440,440 --seed 1 -o out/two-kinds-synthesis.svg --png out/two-kinds-synthesis.png
 ./build/tools/shapeproc show out/two-kinds-model.json --plot out/two-kinds-interaction.svg
-echo "demo outputs are in out/"
+# Exemplar and output side by side, with the metrics: open out/report/index.html.
+./build/tools/shapeproc report "$exemplar" out/two-kinds-synthesis.svg --category-by fill \
+  --model out/two-kinds-model.json -o out/report
+echo "demo outputs are in out/; the report is out/report/index.html"
