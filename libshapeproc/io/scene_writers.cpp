@@ -12,20 +12,6 @@ using geometry::Scene;
 
 namespace {
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string path_data(const geometry::Path2& path) {
   std::string d;
   auto point = [&](const geometry::Vec2& p) {

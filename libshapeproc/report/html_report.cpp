@@ -8,6 +8,7 @@
 
 #include "libshapeproc/io/atomic_file.hpp"
 #include "libshapeproc/io/interaction_plot.hpp"
+#include "libshapeproc/io/text.hpp"
 #include "libshapeproc/render/raster.hpp"
 
 namespace shapeproc::report {
@@ -20,19 +21,7 @@ const char* const kOutputColours[] = {"#d95f02", "#1b9e77", "#7570b3", "#e7298a"
 std::string output_colour(std::size_t i) { return kOutputColours[i % (sizeof kOutputColours / sizeof *kOutputColours)]; }
 
 // The page is well-formed XML (XHTML syntax), so that it can be checked by an XML parser.
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& text) { return io::xml_escape(text); }
 
 std::string num(double v, int precision = 4) {
   if (!std::isfinite(v)) return "–";

@@ -73,8 +73,7 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       if (std::filesystem::exists(args->directory) && !std::filesystem::is_directory(args->directory)) {
         throw io::UsageError(args->directory + ": exists and is not a directory");
       }
-      const EvaluatedScene exemplar =
-          read_evaluated_scene(args->exemplar, args->reader, flags.boundary == "torus" ? "auto" : flags.boundary);
+      const EvaluatedScene exemplar = read_exemplar(args->exemplar, args->reader, flags);
       const Evaluation exemplar_eval = evaluate(exemplar, flags);
       std::vector<EvaluatedScene> outputs;
       std::vector<Evaluation> evals;

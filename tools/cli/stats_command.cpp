@@ -147,6 +147,10 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
   return e;
 }
 
+EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader, const MetricFlags& flags) {
+  return read_evaluated_scene(file, reader, flags.boundary == "torus" ? "auto" : flags.boundary);
+}
+
 void MetricFlags::add_to(CLI::App& command) {
   command.add_option("--boundary", boundary, "auto (a shapeproc output's own boundary, else open), torus or open")
       ->check(CLI::IsMember({"auto", "torus", "open"}))
@@ -283,8 +287,7 @@ void add_stats_command(CLI::App& app, Action& action) {
       std::optional<EvaluatedScene> reference;
       std::optional<metrics::SceneStatistics> reference_statistics;
       if (!args->against.empty()) {
-        // The exemplar is open unless --boundary says torus for both or its own record says so.
-        reference = read_evaluated_scene(args->against, args->reader, args->metrics.boundary == "torus" ? "auto" : args->metrics.boundary);
+        reference = read_exemplar(args->against, args->reader, args->metrics);
         reference_statistics = metrics::compute_statistics(reference->scene, args->metrics.options(*reference, 0.0));
       }
       const EvaluatedScene scene = read_evaluated_scene(args->scene, args->reader, args->metrics.boundary);

@@ -26,6 +26,11 @@ struct EvaluatedScene {
 // shapeproc output's provenance (open for anything else).
 EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader, const std::string& boundary);
 
+struct MetricFlags;
+// The exemplar side of a comparison: open, unless its own provenance says torus (`--boundary`
+// names the outputs' boundary, not the exemplar's).
+EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader, const MetricFlags& flags);
+
 struct MetricFlags {
   std::string boundary = "auto";
   std::string edge = "auto";
