@@ -212,6 +212,12 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
     return factor;
   };
   const bool local = options.mask || options.intensity;
+  // log λ(e | x) − log β_c: the local factor and the interactions with every element but `skip`
+  // (−∞ outside the mask or on a hard core; the interactions are not looked at then).
+  auto log_lambda_over_beta = [&](const Element& e, int skip) {
+    const double local_term = local ? log_local(e) : 0.0;
+    return std::isfinite(local_term) ? local_term + state.log_interaction(e, skip) : local_term;
+  };
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, options.iterations / 100);
   // The automatic rule (see SamplerOptions::iterations): the count every kStride steps.
   constexpr long long kMinimumSteps = 20000, kStride = 10, kStepsPerElement = 1000;
@@ -240,10 +246,9 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
           if (options.periodic) x -= size * std::floor((x - low) / size);
           else inside = inside && x >= low && x <= domain.max()[axis];
         }
-        const double local_term = !inside ? -std::numeric_limits<double>::infinity() : local ? log_local(moved) : 0.0;
-        const double new_term = std::isfinite(local_term) ? local_term + state.log_interaction(moved, slot) : local_term;
+        const double new_term = inside ? log_lambda_over_beta(moved, slot) : -std::numeric_limits<double>::infinity();
         if (std::isfinite(new_term)) {
-          const double old_term = (local ? log_local(old) : 0.0) + state.log_interaction(old, slot);
+          const double old_term = log_lambda_over_beta(old, slot);
           if (std::log(random.uniform()) < new_term - old_term) {
             state.move(slot, moved.position);
             log_density += new_term - old_term;
@@ -258,9 +263,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       xi.category = static_cast<int>(random.index(static_cast<std::uint64_t>(categories)));
       const auto& shapes = shapes_of[static_cast<std::size_t>(xi.category)];
       xi.shape = shapes[random.index(shapes.size())];
-      const double local_term = local ? log_local(xi) : 0.0;
-      const double interaction_term = std::isfinite(local_term) ? state.log_interaction(xi, -1) : local_term;
-      const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + local_term + interaction_term;
+      const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
       const double log_ratio = log_lambda + log_measure_categories - std::log(n + 1.0);
       if (std::isfinite(log_lambda) && std::log(random.uniform()) < log_ratio) {
         state.add(xi);
@@ -272,8 +275,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       if (n > 0) {
         const int slot = state.slot_of_rank(random.index(static_cast<std::uint64_t>(n)));
         const Element& x = state.at(slot);
-        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + (local ? log_local(x) : 0.0) +
-                                  state.log_interaction(x, slot);
+        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + log_lambda_over_beta(x, slot);
         const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories - log_lambda;
         if (std::log(random.uniform()) < log_ratio) {
           log_density -= log_lambda;

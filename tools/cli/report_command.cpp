@@ -23,7 +23,8 @@ std::string note_from_provenance(const nlohmann::json& provenance) {
   s << "shapeproc " << provenance.value("command", std::string("?"));
   if (p.contains("seed")) s << ", seed " << p["seed"].dump();
   if (p.contains("chain") && p.value("chains", 1) > 1) s << ", chain " << p["chain"].dump();
-  if (p.contains("iterations")) s << ", " << p["iterations"].dump() << " steps";
+  if (p.contains("steps")) s << ", " << p["steps"].dump() << " steps";
+  if (p.value("iterations", nlohmann::json()) == "stationary") s << " (until stationary)";
   if (p.contains("boundary")) s << ", " << p.value("boundary", std::string());
   if (p.contains("domain")) s << ", domain " << p.value("domain", std::string());
   if (p.contains("intensity")) s << ", intensity map " << p.value("intensity", std::string());
