@@ -22,7 +22,16 @@ double domain_measure(const geometry::Box3& domain, int dimension) {
   return dimension == 3 ? sizes.prod() : sizes.x() * sizes.y();
 }
 
-// The state: elements in a vector (ids are slots; removed slots are reused) and a grid.
+// One interaction of an element with a neighbour: the neighbour's slot and log Γ of the pair.
+struct Link {
+  int slot;
+  double log_gamma;
+};
+
+// The state: elements in a vector (ids are slots; removed slots are reused), a grid, and for every
+// element its links (the neighbours it interacts with and log Γ of each pair) and the log of its
+// local factor. The links make a death, and the old position of a shift, cost a sum instead of a
+// new measurement of every neighbour: log λ(x | x \ x) − log β_c = local + Σ links.
 class Configuration {
  public:
   Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
@@ -33,11 +42,13 @@ class Configuration {
   const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }
   int slot_of_rank(std::size_t rank) const { return alive_[rank]; }
 
-  // log Σ log Γ(ξ, x_m) over the elements except `skip`; −∞ on a hard core. Two passes: the
-  // distances first (cheap, with the pair's reach as cut-off), so that a hard-core violation
-  // rejects before any direction is computed; then the axes of the neighbours in range.
-  double log_interaction(const Element& xi, int skip) const {
+  // Σ log Γ(ξ, x_m) over the elements except `skip`, −∞ on a hard core; `links` receives the
+  // pairs that interact. Two passes: the distances first (cheap, with the pair's reach as
+  // cut-off), so that a hard-core violation rejects before any direction is computed; then the
+  // axes of the neighbours in range.
+  double log_interaction(const Element& xi, int skip, std::vector<Link>& links) const {
     near_.clear();
+    links.clear();
     bool forbidden = false;
     grid_.for_each_candidate(xi.position, [&](int slot) {
       if (forbidden || slot == skip) return;
@@ -51,12 +62,24 @@ class Configuration {
       const Element& other = elements_[static_cast<std::size_t>(slot)];
       model::decide_axis(interaction_, measurer_, xi, other, effect);
       if (effect.band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
-      if (effect.band >= 0) total += interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
+      if (effect.band >= 0) {
+        const double value = interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
+        links.push_back({slot, value});
+        total += value;
+      }
     }
     return total;
   }
 
-  void add(const Element& e) {
+  // log λ(x | x \ x) − log β_c of an element of the configuration, from its links.
+  double log_lambda_over_beta(int slot) const {
+    double total = local_[static_cast<std::size_t>(slot)];
+    for (const Link& link : links_[static_cast<std::size_t>(slot)]) total += link.log_gamma;
+    return total;
+  }
+
+  // Adds `e` with its local term and the links log_interaction found for it.
+  void add(const Element& e, double local, const std::vector<Link>& links) {
     int slot;
     if (!free_.empty()) {
       slot = free_.back();
@@ -65,15 +88,19 @@ class Configuration {
     } else {
       slot = static_cast<int>(elements_.size());
       elements_.push_back(e);
+      links_.emplace_back();
+      local_.push_back(0.0);
     }
     position_in_alive_.resize(elements_.size(), -1);
     position_in_alive_[static_cast<std::size_t>(slot)] = static_cast<int>(alive_.size());
     alive_.push_back(slot);
     grid_.insert(slot, e.position);
+    link(slot, local, links);
   }
 
   void remove(int slot) {
     grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
+    unlink(slot);
     const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
     const int last = alive_.back();
     alive_[static_cast<std::size_t>(rank)] = last;
@@ -83,11 +110,14 @@ class Configuration {
     free_.push_back(slot);
   }
 
-  void move(int slot, const Vec3& position) {
+  // Moves an element to `position`, with its new local term and links.
+  void move(int slot, const Vec3& position, double local, const std::vector<Link>& links) {
     Element& e = elements_[static_cast<std::size_t>(slot)];
     grid_.remove(slot, e.position);
     e.position = position;
     grid_.insert(slot, position);
+    unlink(slot);
+    link(slot, local, links);
   }
 
   std::vector<Element> elements() const {
@@ -99,11 +129,29 @@ class Configuration {
   }
 
  private:
+  void link(int slot, double local, const std::vector<Link>& links) {
+    local_[static_cast<std::size_t>(slot)] = local;
+    links_[static_cast<std::size_t>(slot)] = links;
+    for (const Link& l : links) links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.log_gamma});
+  }
+
+  void unlink(int slot) {
+    for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
+      std::vector<Link>& back = links_[static_cast<std::size_t>(l.slot)];
+      const auto it = std::find_if(back.begin(), back.end(), [&](const Link& b) { return b.slot == slot; });
+      *it = back.back();
+      back.pop_back();
+    }
+    links_[static_cast<std::size_t>(slot)].clear();
+  }
+
   const model::Interaction& interaction_;
   const geometry::PairMeasurer& measurer_;
   model::NeighbourGrid grid_;
   std::vector<Element> elements_;
   std::vector<int> alive_, free_, position_in_alive_;
+  std::vector<std::vector<Link>> links_;  // per slot
+  std::vector<double> local_;             // per slot: log of the local factor of β
   mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
 };
 
@@ -212,11 +260,15 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
     return factor;
   };
   const bool local = options.mask || options.intensity;
-  // log λ(e | x) − log β_c: the local factor and the interactions with every element but `skip`
-  // (−∞ outside the mask or on a hard core; the interactions are not looked at then).
+  // log λ(e | x) − log β_c for a proposed position: the local factor, then (when it is finite)
+  // the interactions with every element but `skip`, whose links go to `links`. −∞ outside the
+  // mask or on a hard core.
+  std::vector<Link> links;
+  double local_term = 0.0;  // the local part of the last evaluation
   auto log_lambda_over_beta = [&](const Element& e, int skip) {
-    const double local_term = local ? log_local(e) : 0.0;
-    return std::isfinite(local_term) ? local_term + state.log_interaction(e, skip) : local_term;
+    local_term = local ? log_local(e) : 0.0;
+    links.clear();
+    return std::isfinite(local_term) ? local_term + state.log_interaction(e, skip, links) : local_term;
   };
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, options.iterations / 100);
   // The automatic rule (see SamplerOptions::iterations): the count every kStride steps.
@@ -248,9 +300,9 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
         }
         const double new_term = inside ? log_lambda_over_beta(moved, slot) : -std::numeric_limits<double>::infinity();
         if (std::isfinite(new_term)) {
-          const double old_term = log_lambda_over_beta(old, slot);
+          const double old_term = state.log_lambda_over_beta(slot);
           if (std::log(random.uniform()) < new_term - old_term) {
-            state.move(slot, moved.position);
+            state.move(slot, moved.position, local_term, links);
             log_density += new_term - old_term;
             ++result.shifts_accepted;
           }
@@ -266,7 +318,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       const double log_lambda = log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
       const double log_ratio = log_lambda + log_measure_categories - std::log(n + 1.0);
       if (std::isfinite(log_lambda) && std::log(random.uniform()) < log_ratio) {
-        state.add(xi);
+        state.add(xi, local_term, links);
         log_density += log_lambda;
         ++result.births_accepted;
       }
@@ -275,7 +327,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
       if (n > 0) {
         const int slot = state.slot_of_rank(random.index(static_cast<std::uint64_t>(n)));
         const Element& x = state.at(slot);
-        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + log_lambda_over_beta(x, slot);
+        const double log_lambda = log_beta[static_cast<std::size_t>(x.category)] + state.log_lambda_over_beta(slot);
         const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories - log_lambda;
         if (std::log(random.uniform()) < log_ratio) {
           log_density -= log_lambda;
