@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -66,37 +68,39 @@ struct BoxTree {
   }
 };
 
-// Smallest `distance(i, j)` over primitives i of `a` and j of `b`, where `b` is moved by `offset`
-// (boxes of b are compared translated). Branch and bound on box distances; returns `cutoff` when
-// nothing is closer than `cutoff`, and stops early once a pair at distance 0 is found.
-// `distance(i, j)` must return the true distance of the two primitives (b's one translated).
-template <int D, class PrimitiveDistance>
-double closest_pair_distance(const BoxTree<D>& a, const BoxTree<D>& b,
-                             const typename BoxTree<D>::Vec& offset, double cutoff,
-                             PrimitiveDistance&& distance) {
-  if (a.empty() || b.empty()) return cutoff;
-  double best = cutoff;
+// Smallest `squared_distance(i, j)` over primitives i of `a` and j of `b`, where `b` is moved by
+// `offset` (boxes of b are compared translated). Branch and bound on box distances; returns
+// `squared_cutoff` when nothing is closer, and stops early once a pair at distance 0 is found.
+// `squared_distance(i, j)` must return the true squared distance of the two primitives (b's one
+// translated).
+template <int D, class PrimitiveSquaredDistance>
+double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
+                                     const typename BoxTree<D>::Vec& offset, double squared_cutoff,
+                                     PrimitiveSquaredDistance&& squared_distance) {
+  if (a.empty() || b.empty()) return squared_cutoff;
+  double best = squared_cutoff;
   struct Pending {
     int na, nb;
     double lower;  // squared box distance
   };
-  // Depth-first with an explicit stack; children visited nearest first.
-  std::vector<Pending> stack;
-  stack.reserve(64);
+  // Depth-first with an explicit stack (on the stack frame: a depth-first search of two
+  // balanced trees holds at most one pending pair per level), children visited nearest first.
+  constexpr int kCapacity = 128;
+  Pending stack[kCapacity];
+  int top = 0;
   auto box_distance2 = [&](int na, int nb) {
     return a.nodes[na].box.squaredExteriorDistance(b.nodes[nb].box.translated(offset));
   };
-  stack.push_back({0, 0, box_distance2(0, 0)});
-  while (!stack.empty()) {
-    const Pending p = stack.back();
-    stack.pop_back();
-    if (p.lower >= best * best) continue;
+  stack[top++] = {0, 0, box_distance2(0, 0)};
+  while (top > 0) {
+    const Pending p = stack[--top];
+    if (p.lower >= best) continue;
     const auto& node_a = a.nodes[p.na];
     const auto& node_b = b.nodes[p.nb];
     if (node_a.count > 0 && node_b.count > 0) {
       for (int i = node_a.first; i < node_a.first + node_a.count; ++i) {
         for (int j = node_b.first; j < node_b.first + node_b.count; ++j) {
-          const double d = distance(a.order[i], b.order[j]);
+          const double d = squared_distance(a.order[i], b.order[j]);
           if (d < best) {
             best = d;
             if (best <= 0.0) return 0.0;
@@ -117,10 +121,23 @@ double closest_pair_distance(const BoxTree<D>& a, const BoxTree<D>& b,
       second = {p.na, node_b.first + 1, box_distance2(p.na, node_b.first + 1)};
     }
     if (first.lower < second.lower) std::swap(first, second);
-    stack.push_back(first);   // farther one below
-    stack.push_back(second);  // nearer one on top
+    if (top + 2 > kCapacity) throw std::length_error("closest_pair_squared_distance: trees too deep");
+    stack[top++] = first;   // farther one below
+    stack[top++] = second;  // nearer one on top
   }
   return best;
+}
+
+// The same with `distance(i, j)` returning plain distances, and the result a distance
+// (sqrt of a rounded square gives the value back exactly, so nothing is lost).
+template <int D, class PrimitiveDistance>
+double closest_pair_distance(const BoxTree<D>& a, const BoxTree<D>& b,
+                             const typename BoxTree<D>::Vec& offset, double cutoff,
+                             PrimitiveDistance&& distance) {
+  return std::sqrt(closest_pair_squared_distance<D>(a, b, offset, cutoff * cutoff, [&](int i, int j) {
+    const double d = distance(i, j);
+    return d * d;
+  }));
 }
 
 }  // namespace shapeproc::geometry

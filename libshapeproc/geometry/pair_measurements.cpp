@@ -128,10 +128,10 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
         if (pb.inside(polyline.points.front() - t)) return 0.0;
       }
     }
-    return closest_pair_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff, [&](int i, int j) {
-      return segment_segment_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
-                                      pb.segment_end[j] + t);
-    });
+    return std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, [&](int i, int j) {
+      return segment_segment_squared_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
+                                              pb.segment_end[j] + t);
+    }));
   }
   const Proxy3& pa = proxies3_[a];
   const Proxy3& pb = proxies3_[b];

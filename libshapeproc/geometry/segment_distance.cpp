@@ -5,19 +5,23 @@
 
 namespace shapeproc::geometry {
 
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+double point_segment_squared_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double length2 = ab.squaredNorm();
-  if (length2 == 0.0) return (p - a).norm();
+  if (length2 == 0.0) return (p - a).squaredNorm();
   const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
-  return (a + t * ab - p).norm();
+  return (a + t * ab - p).squaredNorm();
+}
+
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  return std::sqrt(point_segment_squared_distance(p, a, b));
 }
 
 namespace {
 double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 }  // namespace
 
-double segment_segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+double segment_segment_squared_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   // Proper or touching intersection: the end points of each segment lie on opposite sides (or on)
   // the other's line, and the segments are not collinear-and-apart.
   const double d1 = cross(d - c, a - c);
@@ -27,8 +31,12 @@ double segment_segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, con
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
     return 0.0;
   }
-  return std::min(std::min(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
-                  std::min(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+  return std::min(std::min(point_segment_squared_distance(a, c, d), point_segment_squared_distance(b, c, d)),
+                  std::min(point_segment_squared_distance(c, a, b), point_segment_squared_distance(d, a, b)));
+}
+
+double segment_segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  return std::sqrt(segment_segment_squared_distance(a, b, c, d));
 }
 
 }  // namespace shapeproc::geometry
