@@ -85,7 +85,10 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       source[s] = p.source_segments;
       simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
       mass[s] = p.mass.start.size();
-      radii_.push_back(std::max(p.box.min().norm(), p.box.max().norm()));
+      // Farthest corner of the box from the reference position (the origin).
+      double r = 0.0;
+      for (int corner = 0; corner < 4; ++corner) r = std::max(r, p.box.corner(static_cast<Box2::CornerType>(corner)).norm());
+      radii_.push_back(r);
     } else {
       proxies3_.push_back(make_proxy3(shape, options.proxy));
       const Proxy3& p = proxies3_.back();
@@ -280,8 +283,17 @@ Measurement PairMeasurer::measure_distance(const Element& first, const Element& 
   Measurement m;
   const Vec3 base = second.position - first.position;
   m.offset = base;
+  // Every distance kind but Hausdorff is at least |offset| − r_a − r_b (0 for centroids): images
+  // farther than the cut-off plus that reach are not measured.
+  const double reach = options_.distance == DistanceKind::centroid ? 0.0
+                       : options_.distance == DistanceKind::shape ? radii_[first.shape] + radii_[second.shape]
+                                                                  : kNoCutoff;
+  auto too_far = [&](const Vec3& offset, double limit) {
+    const double r = limit + reach;
+    return std::isfinite(r) && offset.squaredNorm() >= r * r;
+  };
   if (!options_.periodic) {
-    m.distance = distance(first.shape, second.shape, base, cutoff);
+    m.distance = too_far(base, cutoff) ? cutoff : distance(first.shape, second.shape, base, cutoff);
   } else {
     // Minimum image: the nearest of the 3^dim translates (k = 0 first, so ties keep it).
     m.distance = cutoff;
@@ -292,6 +304,7 @@ Measurement PairMeasurer::measure_distance(const Element& first, const Element& 
         for (int kz = 0; kz <= 2 * nz; ++kz) {
           const Vec3 k(kx == 2 ? -1 : kx, ky == 2 ? -1 : ky, kz == 2 ? -1 : kz);
           const Vec3 image = base + k.cwiseProduct(period_);
+          if (too_far(image, m.distance)) continue;
           const double d = distance(first.shape, second.shape, image, m.distance);
           if (d < m.distance || (!found && d <= m.distance && d < cutoff)) {
             m.distance = d;
