@@ -68,15 +68,24 @@ struct BoxTree {
   }
 };
 
+// The identity bound of closest_pair_squared_distance: the exact minimum is searched.
+struct ExactMinimum {
+  double operator()(double best) const { return best; }
+};
+
 // Smallest `squared_distance(i, j)` over primitives i of `a` and j of `b`, where `b` is moved by
 // `offset` (boxes of b are compared translated). Branch and bound on box distances; returns
 // `squared_cutoff` when nothing is closer, and stops early once a pair at distance 0 is found.
 // `squared_distance(i, j)` must return the true squared distance of the two primitives (b's one
 // translated).
-template <int D, class PrimitiveSquaredDistance>
+//
+// `prune(best)` (≤ best, not decreasing in best) lets callers that only need to know an interval
+// stop early: pairs of boxes at least prune(best) apart are skipped, so the true minimum lies in
+// [prune(result), result].
+template <int D, class PrimitiveSquaredDistance, class Prune = ExactMinimum>
 double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
                                      const typename BoxTree<D>::Vec& offset, double squared_cutoff,
-                                     PrimitiveSquaredDistance&& squared_distance) {
+                                     PrimitiveSquaredDistance&& squared_distance, Prune&& prune = Prune{}) {
   if (a.empty() || b.empty()) return squared_cutoff;
   double best = squared_cutoff;
   struct Pending {
@@ -92,9 +101,10 @@ double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
     return a.nodes[na].box.squaredExteriorDistance(b.nodes[nb].box.translated(offset));
   };
   stack[top++] = {0, 0, box_distance2(0, 0)};
+  double bound = prune(best);
   while (top > 0) {
     const Pending p = stack[--top];
-    if (p.lower >= best) continue;
+    if (p.lower >= bound) continue;
     const auto& node_a = a.nodes[p.na];
     const auto& node_b = b.nodes[p.nb];
     if (node_a.count > 0 && node_b.count > 0) {
@@ -104,6 +114,7 @@ double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
           if (d < best) {
             best = d;
             if (best <= 0.0) return 0.0;
+            bound = prune(best);
           }
         }
       }

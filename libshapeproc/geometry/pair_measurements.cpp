@@ -1,6 +1,7 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -114,16 +115,40 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
   }
 }
 
-double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff) const {
+double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff,
+                                    const std::vector<double>* breakpoints) const {
   if (dimension_ == 2) {
     const Proxy2& pa = proxies2_[a];
     const Proxy2& pb = proxies2_[b];
     const Vec2 t = offset.head<2>();
     const Box2 moved = pb.box.translated(t);
     if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
+    auto segments = [&](int i, int j) {
+      return segment_segment_squared_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
+                                              pb.segment_end[j] + t);
+    };
+    double outline;       // distance between the outlines (or a value of its interval)
+    double first_positive = 0.0;  // the smallest positive breakpoint: below it 0 is in the same interval
+    if (breakpoints == nullptr || breakpoints->empty()) {
+      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments));
+    } else {
+      const std::vector<double>& b = *breakpoints;
+      const auto positive = std::upper_bound(b.begin(), b.end(), 0.0);
+      first_positive = positive == b.end() ? kNoCutoff : *positive;
+      // Prune below the breakpoint under the best distance so far: nothing there can move the
+      // result into another interval.
+      auto floor = [&](double best_squared) {
+        const double best = std::sqrt(best_squared);
+        const auto above = std::upper_bound(b.begin(), b.end(), best);
+        if (above == b.begin()) return 0.0;
+        const double low = *(above - 1);
+        return low * low;
+      };
+      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments, floor));
+    }
     // One shape inside the other's filled region (their outlines not crossing): one vertex of
-    // every polyline decides. Crossing outlines are found below.
-    if (pa.box.intersects(moved)) {
+    // every polyline decides. Needed only when 0 lies in another interval than the outlines' gap.
+    if (outline > 0.0 && outline >= first_positive && pa.box.intersects(moved)) {
       for (const auto& polyline : pb.polylines) {
         if (pa.inside(polyline.points.front() + t)) return 0.0;
       }
@@ -131,10 +156,7 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
         if (pb.inside(polyline.points.front() - t)) return 0.0;
       }
     }
-    return std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, [&](int i, int j) {
-      return segment_segment_squared_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
-                                              pb.segment_end[j] + t);
-    }));
+    return outline;
   }
   const Proxy3& pa = proxies3_[a];
   const Proxy3& pb = proxies3_[b];
@@ -173,11 +195,12 @@ double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const 
   return worst;
 }
 
-double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff) const {
+double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff,
+                              const std::vector<double>* breakpoints) const {
   // Canonical order, so that d(b, a) == d(a, b) bit for bit.
-  if (a > b || (a == b && lexicographically_negative(offset))) return distance(b, a, -offset, cutoff);
+  if (a > b || (a == b && lexicographically_negative(offset))) return distance(b, a, -offset, cutoff, breakpoints);
   switch (options_.distance) {
-    case DistanceKind::shape: return shape_distance(a, b, offset, cutoff);
+    case DistanceKind::shape: return shape_distance(a, b, offset, cutoff, breakpoints);
     case DistanceKind::centroid: return std::min(cutoff, offset.norm());
     case DistanceKind::hausdorff: return std::min(cutoff, hausdorff_distance(a, b, offset));
   }
@@ -279,7 +302,8 @@ Measurement PairMeasurer::measure(const Element& first, const Element& second, d
   return m;
 }
 
-Measurement PairMeasurer::measure_distance(const Element& first, const Element& second, double cutoff) const {
+Measurement PairMeasurer::measure_distance(const Element& first, const Element& second, double cutoff,
+                                           const std::vector<double>* breakpoints) const {
   Measurement m;
   const Vec3 base = second.position - first.position;
   m.offset = base;
@@ -293,25 +317,33 @@ Measurement PairMeasurer::measure_distance(const Element& first, const Element& 
     return std::isfinite(r) && offset.squaredNorm() >= r * r;
   };
   if (!options_.periodic) {
-    m.distance = too_far(base, cutoff) ? cutoff : distance(first.shape, second.shape, base, cutoff);
-  } else {
-    // Minimum image: the nearest of the 3^dim translates (k = 0 first, so ties keep it).
-    m.distance = cutoff;
-    const int nz = dimension_ == 3 ? 1 : 0;
-    bool found = false;
-    for (int kx = 0; kx < 3; ++kx)
-      for (int ky = 0; ky < 3; ++ky)
-        for (int kz = 0; kz <= 2 * nz; ++kz) {
-          const Vec3 k(kx == 2 ? -1 : kx, ky == 2 ? -1 : ky, kz == 2 ? -1 : kz);
-          const Vec3 image = base + k.cwiseProduct(period_);
-          if (too_far(image, m.distance)) continue;
-          const double d = distance(first.shape, second.shape, image, m.distance);
-          if (d < m.distance || (!found && d <= m.distance && d < cutoff)) {
-            m.distance = d;
-            m.offset = image;
-            found = true;
-          }
-        }
+    m.distance = too_far(base, cutoff) ? cutoff : distance(first.shape, second.shape, base, cutoff, breakpoints);
+    return m;
+  }
+  // Minimum image: the nearest of the 3^dim translates (k = 0 first, so ties keep it).
+  const int nz = dimension_ == 3 ? 1 : 0;
+  std::array<Vec3, 27> images;
+  int count = 0;
+  for (int kx = 0; kx < 3; ++kx)
+    for (int ky = 0; ky < 3; ++ky)
+      for (int kz = 0; kz <= 2 * nz; ++kz) {
+        const Vec3 k(kx == 2 ? -1 : kx, ky == 2 ? -1 : ky, kz == 2 ? -1 : kz);
+        const Vec3 image = base + k.cwiseProduct(period_);
+        if (!too_far(image, cutoff)) images[static_cast<std::size_t>(count++)] = image;
+      }
+  // Intervals are enough to compare images only when one image is in play.
+  const std::vector<double>* coarse = count == 1 ? breakpoints : nullptr;
+  m.distance = cutoff;
+  bool found = false;
+  for (int i = 0; i < count; ++i) {
+    const Vec3& image = images[static_cast<std::size_t>(i)];
+    if (too_far(image, m.distance)) continue;
+    const double d = distance(first.shape, second.shape, image, m.distance, coarse);
+    if (d < m.distance || (!found && d <= m.distance && d < cutoff)) {
+      m.distance = d;
+      m.offset = image;
+      found = true;
+    }
   }
   return m;
 }

@@ -61,7 +61,13 @@ class PairMeasurer {
 
   // d between shape `a` at the origin and shape `b` at `offset` (no periodic images), or `cutoff`
   // when d >= cutoff.
-  double distance(int a, int b, const Vec3& offset, double cutoff = kNoCutoff) const;
+  //
+  // With `breakpoints` (ascending distances, the cut-off among them), callers say that only the
+  // interval [b_k, b_k+1) holding d matters (a model's thresholds): the result is then a value of
+  // that interval, not necessarily d itself, and the closest-pair search stops as soon as the
+  // interval is decided. Shape distances in 2D use them; other kinds return d.
+  double distance(int a, int b, const Vec3& offset, double cutoff = kNoCutoff,
+                  const std::vector<double>* breakpoints = nullptr) const;
   // Unit direction of the relative orientation, exactly antisymmetric:
   // direction(b, a, -offset) == -direction(a, b, offset).
   Vec3 direction(int a, int b, const Vec3& offset) const;
@@ -73,7 +79,10 @@ class PairMeasurer {
   // The distance part of measure(): distance and the image offset, no direction (direction and
   // axis left at their defaults). Callers that need the direction only for some distances use
   // this, then direction(first.shape, second.shape, offset).
-  Measurement measure_distance(const Element& first, const Element& second, double cutoff = kNoCutoff) const;
+  // With `breakpoints`, as for distance(), the distance is a value of the interval holding d
+  // (when several periodic images come within the cut-off, they are measured exactly).
+  Measurement measure_distance(const Element& first, const Element& second, double cutoff = kNoCutoff,
+                               const std::vector<double>* breakpoints = nullptr) const;
 
   // Cheap bounds lo <= d(a, b, offset) <= hi for the shape distance (no periodic images): lo from
   // the proxies' boxes, hi between the two proxies' extreme vertices along the offset.
@@ -100,7 +109,7 @@ class PairMeasurer {
   double radius(int shape) const { return radii_.at(static_cast<std::size_t>(shape)); }
 
  private:
-  double shape_distance(int a, int b, const Vec3& offset, double cutoff) const;
+  double shape_distance(int a, int b, const Vec3& offset, double cutoff, const std::vector<double>* breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
 

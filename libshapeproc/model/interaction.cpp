@@ -24,10 +24,13 @@ Interaction::Interaction(const ShapeProcessModel& model) : categories_(static_ca
       }
       parameters_ += static_cast<int>(a.gammas.size());
       pair.min_hard_core = std::min(pair.min_hard_core, a.thresholds.front());
+      pair.breakpoints.insert(pair.breakpoints.end(), a.thresholds.begin(), a.thresholds.end());
       pair.max_range = std::max(pair.max_range, a.thresholds.back());
       pair.axes.push_back(std::move(axis));
     }
     if (source.axes.empty()) pair.min_hard_core = 0.0;
+    std::sort(pair.breakpoints.begin(), pair.breakpoints.end());
+    pair.breakpoints.erase(std::unique(pair.breakpoints.begin(), pair.breakpoints.end()), pair.breakpoints.end());
     range_ = std::max(range_, pair.max_range);
     pair_index_[static_cast<std::size_t>(source.first * categories_ + source.second)] = static_cast<int>(pairs_.size());
     pair_index_[static_cast<std::size_t>(source.second * categories_ + source.first)] = static_cast<int>(pairs_.size());
@@ -62,7 +65,8 @@ PairEffect pair_distance_effect(const Interaction& interaction, const geometry::
   if (!interaction.interacts(xi.category, neighbour.category)) return effect;
   const double reach = interaction.max_range(xi.category, neighbour.category);
   if (!(reach > 0)) return effect;
-  const geometry::Measurement m = measurer.measure_distance(xi, neighbour, reach);
+  const geometry::Measurement m =
+      measurer.measure_distance(xi, neighbour, reach, &interaction.breakpoints(xi.category, neighbour.category));
   effect.distance = m.distance;
   effect.offset = m.offset;
   if (m.distance >= reach) return effect;

@@ -29,6 +29,9 @@ class Interaction {
   // max_range it does not interact. Between, the axis decides.
   double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
   double max_range(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_range; }
+  // Every threshold of every axis of a pair, ascending and distinct: a distance's band in every
+  // axis depends only on which interval between them holds it.
+  const std::vector<double>& breakpoints(int ca, int cb) const { return pairs_[pair_of(ca, cb)].breakpoints; }
 
   // δ_0 … δ_K of a pair's axis (the pair must interact).
   const std::vector<double>& thresholds(int ca, int cb, int axis) const {
@@ -55,6 +58,7 @@ class Interaction {
   struct Pair {
     std::vector<Axis> axes;
     double min_hard_core = 0.0, max_range = 0.0;
+    std::vector<double> breakpoints;
   };
   int pair_of(int ca, int cb) const { return pair_index_[static_cast<std::size_t>(ca * categories_ + cb)]; }
 
@@ -66,7 +70,9 @@ class Interaction {
   std::vector<Location> locations_;
 };
 
-// What one neighbour does to ξ.
+// What one neighbour does to ξ. `distance` is a value of the interval between the pair's
+// breakpoints that holds the shape distance (the distance itself for other kinds): enough for
+// every band.
 struct PairEffect {
   int band = Interaction::kBeyond;
   int axis = 0;

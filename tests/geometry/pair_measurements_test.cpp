@@ -1,5 +1,6 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -108,6 +109,50 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
       EXPECT_DOUBLE_EQ(d, measurer.measure(scene.elements[j], scene.elements[i]).distance);
       const double cut = measurer.measure(scene.elements[i], scene.elements[j], 1.0).distance;
       EXPECT_DOUBLE_EQ(cut, std::min(d, 1.0));
+    }
+  }
+}
+
+// With breakpoints the distance may be any value of the interval that holds the exact one.
+TEST(ShapeDistance, BreakpointsDecideTheIntervalOfTheExactDistance) {  // NOLINT
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> position(-6, 6);
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  for (int i = 0; i < 24; ++i) {
+    shapes.push_back(random_polygon(rng, 5 + i % 30, 2.0));
+    positions.emplace_back(position(rng), position(rng));
+  }
+  shapes.push_back(ring(3, 2));  // holds small shapes in its hole, or in its body
+  positions.emplace_back(0.0, 0.0);
+  shapes.push_back(disc(0.3));
+  positions.emplace_back(0.2, 0.1);
+  shapes.push_back(disc(0.2));
+  positions.emplace_back(2.5, 0.0);
+  for (const bool periodic : {false, true}) {
+    const Box3 window(Vec3(-7, -7, 0), Vec3(7, 7, 0));
+    const Scene scene = scene_of(shapes, positions, window);
+    MeasurementOptions options;
+    options.proxy.tolerance = 0.0;
+    options.periodic = periodic;
+    const PairMeasurer measurer(scene, options);
+    for (const std::vector<double>& breakpoints :
+         {std::vector<double>{0.0, 0.5, 1.0, 3.0}, std::vector<double>{0.2, 0.25, 2.0}, std::vector<double>{1.5}}) {
+      const double cutoff = breakpoints.back();
+      auto interval = [&](double d) { return std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin(); };
+      int inside_interval = 0;
+      for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+        for (std::size_t j = 0; j < scene.elements.size(); ++j) {
+          if (i == j) continue;
+          const Measurement exact = measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff);
+          const Measurement coarse = measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff, &breakpoints);
+          EXPECT_EQ(interval(coarse.distance), interval(exact.distance)) << i << " " << j << " " << exact.distance;
+          EXPECT_LE(coarse.distance, cutoff);
+          if (coarse.distance != exact.distance) ++inside_interval;
+        }
+      }
+      // The interval form does stop early (otherwise it would return the exact distances).
+      EXPECT_GT(inside_interval, 0);
     }
   }
 }
