@@ -36,7 +36,9 @@ class Configuration {
  public:
   Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
                 const geometry::Box3& domain, int dimension, double reach, bool periodic)
-      : interaction_(interaction), measurer_(measurer), grid_(domain, dimension, reach, periodic) {}
+      : interaction_(interaction), measurer_(measurer), grid_(domain, dimension, reach, periodic) {
+    if (periodic) period_.head(dimension) = domain.sizes().head(dimension);
+  }
 
   int size() const { return static_cast<int>(alive_.size()); }
   const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }
@@ -49,13 +51,29 @@ class Configuration {
   double log_interaction(const Element& xi, int skip, std::vector<Link>& links) const {
     near_.clear();
     links.clear();
-    bool forbidden = false;
+    // Candidates nearest first (by the minimum-image distance of reference positions), so that a
+    // hard core, most likely with the nearest, rejects after few measurements.
+    candidates_.clear();
     grid_.for_each_candidate(xi.position, [&](int slot) {
-      if (forbidden || slot == skip) return;
-      const model::PairEffect effect = model::pair_distance_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
-      if (effect.band == model::Interaction::kHardCore) forbidden = true;
-      if (effect.axis_pending) near_.emplace_back(slot, effect);
+      if (slot == skip) return;
+      const Element& other = elements_[static_cast<std::size_t>(slot)];
+      if (!interaction_.interacts(xi.category, other.category)) return;
+      Vec3 t = other.position - xi.position;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (period_[axis] > 0) t[axis] -= period_[axis] * std::round(t[axis] / period_[axis]);
+      }
+      candidates_.emplace_back(t.squaredNorm(), slot);
     });
+    std::sort(candidates_.begin(), candidates_.end());
+    bool forbidden = false;
+    for (const auto& [squared, slot] : candidates_) {
+      const model::PairEffect effect = model::pair_distance_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
+      if (effect.band == model::Interaction::kHardCore) {
+        forbidden = true;
+        break;
+      }
+      if (effect.axis_pending) near_.emplace_back(slot, effect);
+    }
     if (forbidden) return -std::numeric_limits<double>::infinity();
     double total = 0.0;
     for (auto& [slot, effect] : near_) {
@@ -152,6 +170,8 @@ class Configuration {
   std::vector<int> alive_, free_, position_in_alive_;
   std::vector<std::vector<Link>> links_;  // per slot
   std::vector<double> local_;             // per slot: log of the local factor of β
+  Vec3 period_ = Vec3::Zero();            // the torus's sizes (0: open)
+  mutable std::vector<std::pair<double, int>> candidates_;       // scratch of log_interaction: (squared distance, slot)
   mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
 };
 
