@@ -102,6 +102,14 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       radii_.push_back(r);
     }
   }
+  // One table of 325 complex numbers per pair of shapes (a ≤ b): up to 64 shapes (10 MB).
+  constexpr std::size_t kMaximumExpansionShapes = 64;
+  if (dimension_ == 2 && options_.direction == DirectionKind::gravitation && scene.shapes.size() <= kMaximumExpansionShapes) {
+    const std::size_t n = scene.shapes.size();
+    expansions_ = std::make_shared<ExpansionCache>();
+    expansions_->tables.resize(n * n);
+    expansions_->once = std::make_unique<std::once_flag[]>(n * n);
+  }
   if (!scene.elements.empty()) {
     for (const Element& e : scene.elements) {
       statistics_.source_per_element += static_cast<double>(source.at(e.shape));
@@ -211,7 +219,7 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
   Vec3 force = Vec3::Zero();
   double scale = 0.0;
   if (dimension_ == 2) {
-    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>());
+    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), expansion(a, b));
     force.head<2>() = f;
     scale = proxies2_[a].mass.area * proxies2_[b].mass.area;
   } else {
@@ -230,6 +238,14 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
     return offset.norm() > 0 ? Vec3(offset.normalized()) : Vec3(Vec3::UnitX());
   }
   return force / norm;
+}
+
+const PairExpansion* PairMeasurer::expansion(int a, int b) const {
+  if (!expansions_) return nullptr;
+  const std::size_t index = static_cast<std::size_t>(a) * proxies2_.size() + static_cast<std::size_t>(b);
+  std::call_once(expansions_->once[index],
+                 [&] { expansions_->tables[index] = pair_expansion(proxies2_[a].mass, proxies2_[b].mass); });
+  return &expansions_->tables[index];
 }
 
 std::pair<double, double> PairMeasurer::distance_bounds(int a, int b, const Vec3& offset) const {

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -112,6 +114,14 @@ class PairMeasurer {
   double shape_distance(int a, int b, const Vec3& offset, double cutoff, const std::vector<double>* breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
+  // The mutual-potential table of shapes a ≤ b (2D regions), built on first use; nullptr when
+  // the shape space is too large to keep one per pair.
+  const PairExpansion* expansion(int a, int b) const;
+
+  struct ExpansionCache {
+    std::vector<PairExpansion> tables;          // a * shapes + b, a ≤ b
+    std::unique_ptr<std::once_flag[]> once;     // one per table
+  };
 
   int dimension_;
   MeasurementOptions options_;
@@ -121,6 +131,7 @@ class PairMeasurer {
   std::vector<Proxy3> proxies3_;
   std::vector<double> radii_;
   ProxyStatistics statistics_;
+  std::shared_ptr<ExpansionCache> expansions_;  // shared by copies; empty in 3D
 };
 
 }  // namespace shapeproc::geometry

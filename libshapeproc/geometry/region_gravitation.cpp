@@ -2,8 +2,13 @@
 
 #include "libshapeproc/geometry/gravitation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
+#include <vector>
+
+#include "libshapeproc/geometry/segment_distance.hpp"
 
 namespace shapeproc::geometry {
 
@@ -65,6 +70,109 @@ double edge_term(const Vec2& x, const Vec2& a, const Vec2& u, double length, con
   return h * inverse_distance_integral(s, std::abs(h), length);
 }
 
+using Complex = std::complex<double>;
+
+// Gauss–Legendre nodes on [0, 1] and weights summing to 1, n points (Newton's method on P_n).
+struct GaussTable {
+  std::vector<double> x, w;
+};
+
+GaussTable gauss_legendre(int n) {
+  constexpr double kPi = 3.14159265358979323846;
+  GaussTable table;
+  for (int i = 0; i < n; ++i) {
+    double t = std::cos(kPi * (i + 0.75) / (n + 0.5));
+    double derivative = 1.0;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      double p0 = 1.0, p1 = t;  // P_0, P_1, then up to P_n by the three-term recurrence
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      derivative = n * (t * p1 - p0) / (t * t - 1);
+      const double step = p1 / derivative;
+      t -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    table.x.push_back(0.5 * (1 - t));
+    table.w.push_back(1.0 / ((1 - t * t) * derivative * derivative));  // 2/((1−t²)P'²), halved
+  }
+  return table;
+}
+
+// α_k = C(2k, k) / 4^k and the binomial coefficients up to kMomentOrder.
+struct ExpansionConstants {
+  std::array<double, kMomentOrder + 1> alpha{};
+  std::array<std::array<double, kMomentOrder + 1>, kMomentOrder + 1> binomial{};
+  GaussTable moment_rule = gauss_legendre(kMomentOrder / 2 + 1);  // exact for degree kMomentOrder + 1
+  ExpansionConstants() {
+    alpha[0] = 1.0;
+    for (int k = 1; k <= kMomentOrder; ++k) alpha[k] = alpha[k - 1] * (2 * k - 1) / (2 * k);
+    for (int n = 0; n <= kMomentOrder; ++n) {
+      binomial[n][0] = binomial[n][n] = 1.0;
+      for (int k = 1; k < n; ++k) binomial[n][k] = binomial[n - 1][k - 1] + binomial[n - 1][k];
+    }
+  }
+};
+
+const ExpansionConstants& constants() {
+  static const ExpansionConstants table;
+  return table;
+}
+
+constexpr double kExpansionTolerance = 1e-6;
+
+// Smallest order p with `growth(p)` s^{p+1} below the tolerance, or -1 beyond kMomentOrder.
+template <class Growth>
+int expansion_order(double s, Growth&& growth) {
+  double power = s;
+  for (int p = 0; p <= kMomentOrder; ++p) {
+    power *= s;  // s^{p+2}: one order of margin for the bound's constants
+    if (growth(p) * power <= kExpansionTolerance) return p;
+  }
+  return -1;
+}
+
+// Φ_B at x (relative to B's centroid, |x| > B's radius), truncated at total order `order`.
+double expanded_potential(const MassBoundary2& b, const Complex& x, int order) {
+  const ExpansionConstants& c = constants();
+  std::array<Complex, kMomentOrder + 1> power;
+  power[0] = 1.0;
+  const Complex u = 1.0 / x;
+  for (int k = 1; k <= order; ++k) power[k] = power[k - 1] * u;
+  // Terms (k, l) and (l, k) are conjugate: sum l ≤ k, twice when l < k.
+  double sum = 0.0;
+  for (int n = 0; n <= order; ++n) {
+    for (int l = 0; 2 * l <= n; ++l) {
+      const int k = n - l;
+      const double weight = (k == l ? 1.0 : 2.0) * c.alpha[k] * c.alpha[l];
+      sum += weight * (b.complex_moments[moment_index(k, l)] * power[k] * std::conj(power[l])).real();
+    }
+  }
+  return sum / std::abs(x);
+}
+
+// ∇U for U(R) = (1/|R|) Σ G_kl R^{−k} R̄^{−l}: as a complex number 2 ∂U/∂R̄
+// = −(1/|R|) Σ (2l + 1) G_kl R^{−k} R̄^{−l−1}.
+Vec2 expanded_force(const PairExpansion& pair, const Complex& r, int order) {
+  std::array<Complex, kMomentOrder + 2> power, conjugate;
+  power[0] = conjugate[0] = 1.0;
+  const Complex v = 1.0 / r;
+  for (int k = 1; k <= order + 1; ++k) {
+    power[k] = power[k - 1] * v;
+    conjugate[k] = std::conj(power[k]);
+  }
+  Complex sum = 0.0;
+  for (int n = 0; n <= order; ++n) {
+    for (int l = 0; l <= n; ++l) {
+      sum += (2.0 * l + 1.0) * pair.g[static_cast<std::size_t>(moment_index(n - l, l))] * power[n - l] * conjugate[l + 1];
+    }
+  }
+  sum *= -1.0 / std::abs(r);
+  return Vec2(sum.real(), sum.imag());
+}
+
 }  // namespace
 
 void MassBoundary2::add_edge(const Vec2& a, const Vec2& b, const Vec2& outward_normal) {
@@ -81,10 +189,12 @@ void MassBoundary2::add_edge(const Vec2& a, const Vec2& b, const Vec2& outward_n
 }
 
 void MassBoundary2::finish() {
+  complex_moments.assign(kMomentCount, Complex(0.0, 0.0));
   if (start.empty()) {
     point = true;
     area = 1.0;
     radius = 0.0;
+    complex_moments[0] = 1.0;
     return;
   }
   if (area > 0) {
@@ -95,12 +205,71 @@ void MassBoundary2::finish() {
   for (std::size_t i = 0; i < start.size(); ++i) {
     radius = std::max({radius, (start[i] - centroid).norm(), (end[i] - centroid).norm()});
   }
+  // M_kl = ∫ z^k z̄^l dA = 1/(2(l + 1)) ∮ n z^k z̄^{l+1} ds (complex Green's theorem with
+  // dz = i n ds on the positively oriented boundary); the edge integrands are polynomials of
+  // degree ≤ kMomentOrder + 1, integrated exactly.
+  const ExpansionConstants& c = constants();
+  std::array<Complex, kMomentOrder + 2> power, conjugate;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    const double length = (end[i] - start[i]).norm();
+    if (length == 0.0) continue;
+    const Complex n(normal[i].x(), normal[i].y());
+    for (std::size_t g = 0; g < c.moment_rule.x.size(); ++g) {
+      const Vec2 y = start[i] + c.moment_rule.x[g] * (end[i] - start[i]) - centroid;
+      const Complex z(y.x(), y.y());
+      power[0] = conjugate[0] = 1.0;
+      for (int k = 1; k <= kMomentOrder + 1; ++k) {
+        power[k] = power[k - 1] * z;
+        conjugate[k] = std::conj(power[k]);
+      }
+      const Complex weight = c.moment_rule.w[g] * length * n;
+      for (int total = 0; total <= kMomentOrder; ++total) {
+        for (int l = 0; l <= total; ++l) {
+          complex_moments[moment_index(total - l, l)] += weight * power[total - l] * conjugate[l + 1];
+        }
+      }
+    }
+  }
+  for (int total = 0; total <= kMomentOrder; ++total) {
+    for (int l = 0; l <= total; ++l) complex_moments[moment_index(total - l, l)] /= 2.0 * (l + 1);
+  }
 }
 
-Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset) {
+PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
+  // 1/|R + w| with w = ξ − y (ξ about A's centroid, y about B's): the binomial expansion of
+  // w^k w̄^l in the moments of both, G_kl = α_k α_l Σ C(k, i) C(l, j) (−1)^{i+j} M^A_ij M^B_{k−i, l−j}.
+  const ExpansionConstants& c = constants();
+  PairExpansion pair;
+  pair.g.assign(kMomentCount, Complex(0.0, 0.0));
+  for (int total = 0; total <= kMomentOrder; ++total) {
+    for (int l = 0; l <= total; ++l) {
+      const int k = total - l;
+      Complex sum = 0.0;
+      for (int i = 0; i <= k; ++i) {
+        for (int j = 0; j <= l; ++j) {
+          const double sign = (i + j) % 2 == 0 ? 1.0 : -1.0;
+          sum += sign * c.binomial[k][i] * c.binomial[l][j] * a.complex_moments[moment_index(i, j)] *
+                 b.complex_moments[moment_index(k - i, l - j)];
+        }
+      }
+      pair.g[static_cast<std::size_t>(moment_index(k, l))] = c.alpha[k] * c.alpha[l] * sum;
+    }
+  }
+  return pair;
+}
+
+namespace {
+
+Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, const PairExpansion* pair,
+           bool expansions) {
   const Vec2 between = b.centroid + offset - a.centroid;
   const double distance = between.norm();
   if (a.point && b.point) return distance > 0 ? Vec2(between / (distance * distance * distance)) : Vec2::Zero();
+  if (expansions && pair != nullptr && distance > 0 && !a.point && !b.point) {
+    const double s = (a.radius + b.radius) / distance;
+    const int order = expansion_order(s, [&](int p) { return (p + 1.0) / ((1 - s) * (1 - s)); });
+    if (s < 1 && order >= 0) return expanded_force(*pair, Complex(-between.x(), -between.y()), order);
+  }
   if (distance > 5.0 * (a.radius + b.radius) && distance > 0) {
     return far_field_force<2>(a.area, a.moments, b.area, b.moments, between);
   }
@@ -125,42 +294,80 @@ Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec
   }
   Vec2 total = Vec2::Zero();
   const std::size_t nb = b.start.size();
-  std::vector<Vec2> b_start(nb), b_unit(nb);
-  std::vector<double> b_length(nb);
-  for (std::size_t j = 0; j < nb; ++j) {
-    b_start[j] = b.start[j] + offset;
-    const Vec2 edge = b.end[j] - b.start[j];
-    b_length[j] = edge.norm();
-    b_unit[j] = b_length[j] > 0 ? Vec2(edge / b_length[j]) : Vec2::Zero();
-  }
+  std::vector<Vec2> b_start, b_unit;  // B's edges moved, filled when an edge of A needs them
+  std::vector<double> b_length;
+  auto prepare_edges = [&] {
+    if (!b_start.empty() || nb == 0) return;
+    b_start.resize(nb);
+    b_unit.resize(nb);
+    b_length.resize(nb);
+    for (std::size_t j = 0; j < nb; ++j) {
+      b_start[j] = b.start[j] + offset;
+      const Vec2 edge = b.end[j] - b.start[j];
+      b_length[j] = edge.norm();
+      b_unit[j] = b_length[j] > 0 ? Vec2(edge / b_length[j]) : Vec2::Zero();
+    }
+  };
+  const Vec2 centre_b = b.centroid + offset;
   for (std::size_t i = 0; i < a.start.size(); ++i) {
     const Vec2 ai = a.start[i], edge_i = a.end[i] - a.start[i];
     const double length_i = edge_i.norm();
     if (length_i == 0) continue;
-    const Vec2 mid_i = ai + 0.5 * edge_i;
-    double integral = 0.0;  // Σ_j ∫_edge_i h_j L_j ds_x
-    for (std::size_t j = 0; j < nb; ++j) {
-      if (b_length[j] == 0) continue;
-      const Vec2 mid_j = b_start[j] + 0.5 * b_length[j] * b_unit[j];
-      const Vec2 between_mids = mid_j - mid_i;
-      const double gap = between_mids.norm();
-      const double ratio = gap / (length_i + b_length[j]);
-      if (ratio > 4.0) {
-        // Far apart: midpoint rule for both integrals, h_j(m_i) ℓ_j / |m_j − m_i| (relative error
-        // below (1/4)^2 / 24).
-        integral += between_mids.dot(b.normal[j]) * b_length[j] / gap;
-        continue;
+    double integral = 0.0;  // the mean of Φ_B along edge i
+    // Edges well outside B's circle: Φ_B from B's expansion, Gauss–Legendre along the edge with
+    // more points the closer the edge (Φ_B is analytic outside B).
+    bool expanded = false;
+    if (expansions) {
+      const double gap = point_segment_distance(centre_b, ai, a.end[i]);
+      const double s = b.radius / gap, room = (gap - b.radius) / length_i;
+      const int order = expansion_order(s, [&](int) { return 1.0 / (1 - s); });
+      const GaussRule& g = room > 6 ? kRules[1] : room > 1.5 ? kRules[2] : kRules[3];
+      // Only where it is cheaper (tuned on benchmarks): (p + 1)(p + 2)/4 complex products per
+      // point against one edge-pair term per edge of B.
+      if (s < 0.6 && room > 0.4 && order >= 0 && g.n * (order + 1) * (order + 2) < 4 * static_cast<int>(nb)) {
+        for (int k = 0; k < g.n; ++k) {
+          const Vec2 x = ai + g.x[k] * edge_i - centre_b;
+          integral += g.w[k] * expanded_potential(b, Complex(x.x(), x.y()), order);
+        }
+        expanded = true;
       }
-      const GaussRule& g = ratio > 1.5 ? kRules[1] : ratio > 0.7 ? kRules[2] : kRules[3];
-      double sum = 0.0;
-      for (int k = 0; k < g.n; ++k) {
-        sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b_start[j], b_unit[j], b_length[j], b.normal[j]);
+    }
+    if (!expanded) {
+      prepare_edges();
+      const Vec2 mid_i = ai + 0.5 * edge_i;
+      for (std::size_t j = 0; j < nb; ++j) {
+        if (b_length[j] == 0) continue;
+        const Vec2 mid_j = b_start[j] + 0.5 * b_length[j] * b_unit[j];
+        const Vec2 between_mids = mid_j - mid_i;
+        const double gap = between_mids.norm();
+        const double ratio = gap / (length_i + b_length[j]);
+        if (ratio > 4.0) {
+          // Far apart: midpoint rule for both integrals, h_j(m_i) ℓ_j / |m_j − m_i| (relative error
+          // below (1/4)^2 / 24).
+          integral += between_mids.dot(b.normal[j]) * b_length[j] / gap;
+          continue;
+        }
+        const GaussRule& g = ratio > 1.5 ? kRules[1] : ratio > 0.7 ? kRules[2] : kRules[3];
+        double sum = 0.0;
+        for (int k = 0; k < g.n; ++k) {
+          sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b_start[j], b_unit[j], b_length[j], b.normal[j]);
+        }
+        integral += sum;
       }
-      integral += sum;
     }
     total += (integral * length_i) * a.normal[i];
   }
   return total;
+}
+
+}  // namespace
+
+Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, const PairExpansion* pair) {
+  return force(a, b, offset, pair, true);
+}
+
+Vec2 gravitation_force_edges(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset) {
+  return force(a, b, offset, nullptr, false);
 }
 
 namespace {
