@@ -139,7 +139,7 @@ double expanded_potential(const MassBoundary2& b, const Complex& x, int order) {
   const ExpansionConstants& c = constants();
   std::array<Complex, kMomentOrder + 1> power;
   power[0] = 1.0;
-  const Complex u = 1.0 / x;
+  const Complex u = std::conj(x) / std::norm(x);
   for (int k = 1; k <= order; ++k) power[k] = power[k - 1] * u;
   // Terms (k, l) and (l, k) are conjugate: sum l ≤ k, twice when l < k.
   double sum = 0.0;
@@ -158,7 +158,7 @@ double expanded_potential(const MassBoundary2& b, const Complex& x, int order) {
 Vec2 expanded_force(const PairExpansion& pair, const Complex& r, int order) {
   std::array<Complex, kMomentOrder + 2> power, conjugate;
   power[0] = conjugate[0] = 1.0;
-  const Complex v = 1.0 / r;
+  const Complex v = std::conj(r) / std::norm(r);
   for (int k = 1; k <= order + 1; ++k) {
     power[k] = power[k - 1] * v;
     conjugate[k] = std::conj(power[k]);
