@@ -76,8 +76,8 @@ struct ExactMinimum {
 // Smallest `squared_distance(i, j)` over primitives i of `a` and j of `b`, where `b` is moved by
 // `offset` (boxes of b are compared translated). Branch and bound on box distances; returns
 // `squared_cutoff` when nothing is closer, and stops early once a pair at distance 0 is found.
-// `squared_distance(i, j)` must return the true squared distance of the two primitives (b's one
-// translated).
+// `squared_distance(i, j, bound)` must return the true squared distance of the two primitives
+// (b's one translated), or anything not below `bound` when that distance is not below it.
 //
 // `prune(best)` (≤ best, not decreasing in best) lets callers that only need to know an interval
 // stop early: pairs of boxes at least prune(best) apart are skipped, so the true minimum lies in
@@ -110,7 +110,7 @@ double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
     if (node_a.count > 0 && node_b.count > 0) {
       for (int i = node_a.first; i < node_a.first + node_a.count; ++i) {
         for (int j = node_b.first; j < node_b.first + node_b.count; ++j) {
-          const double d = squared_distance(a.order[i], b.order[j]);
+          const double d = squared_distance(a.order[i], b.order[j], bound);
           if (d < best) {
             best = d;
             if (best <= 0.0) return 0.0;
@@ -145,7 +145,7 @@ template <int D, class PrimitiveDistance>
 double closest_pair_distance(const BoxTree<D>& a, const BoxTree<D>& b,
                              const typename BoxTree<D>::Vec& offset, double cutoff,
                              PrimitiveDistance&& distance) {
-  return std::sqrt(closest_pair_squared_distance<D>(a, b, offset, cutoff * cutoff, [&](int i, int j) {
+  return std::sqrt(closest_pair_squared_distance<D>(a, b, offset, cutoff * cutoff, [&](int i, int j, double) {
     const double d = distance(i, j);
     return d * d;
   }));

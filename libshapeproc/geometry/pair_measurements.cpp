@@ -131,9 +131,16 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
     const Vec2 t = offset.head<2>();
     const Box2 moved = pb.box.translated(t);
     if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
-    auto segments = [&](int i, int j) {
-      return segment_segment_squared_distance(pa.segment_start[i], pa.segment_end[i], pb.segment_start[j] + t,
-                                              pb.segment_end[j] + t);
+    auto segments = [&](int i, int j, double bound) {
+      const Vec2 &a0 = pa.segment_start[i], &a1 = pa.segment_end[i];
+      const Vec2 b0 = pb.segment_start[j] + t, b1 = pb.segment_end[j] + t;
+      // The gap between the segments' boxes first: most pairs of a leaf are not nearer.
+      const double gap_x = std::max({0.0, std::min(b0.x(), b1.x()) - std::max(a0.x(), a1.x()),
+                                     std::min(a0.x(), a1.x()) - std::max(b0.x(), b1.x())});
+      const double gap_y = std::max({0.0, std::min(b0.y(), b1.y()) - std::max(a0.y(), a1.y()),
+                                     std::min(a0.y(), a1.y()) - std::max(b0.y(), b1.y())});
+      const double lower = gap_x * gap_x + gap_y * gap_y;
+      return lower >= bound ? kNoCutoff : segment_segment_squared_distance(a0, a1, b0, b1);
     };
     double outline;       // distance between the outlines (or a value of its interval)
     double first_positive = 0.0;  // the smallest positive breakpoint: below it 0 is in the same interval
