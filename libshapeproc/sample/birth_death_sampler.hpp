@@ -25,8 +25,9 @@ struct SamplerOptions {
   // Steps; 0 = run until the element count is stationary: checked after 20,000 steps and then
   // every max(10,000, a quarter of the steps so far); the run stops once it has made at least
   // 1,000 steps per element present and the second half of the run, cut into ten batches, has
-  // quarters whose mean counts differ by at most max(1, 1% of the mean) plus two standard errors
-  // from the batch means; or at `max_iterations` (then SampleResult::stationary is false).
+  // quarters whose mean counts differ by at most a quarter of max(1, 1% of the mean) plus two
+  // standard errors from the batch means; or at `max_iterations` (then SampleResult::stationary
+  // is false).
   long long iterations = 0;
   long long max_iterations = 5'000'000;
   double shift_probability = 1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
