@@ -77,15 +77,20 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   EXPECT_NEAR(measured({ell, ell}, {{0, 0}, {1.5, 1.5}}), 0.5, 1e-12);
 }
 
-TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
-  std::mt19937 rng(9);
+// 24 random polygons of 5 to 28 corners scattered over [-6, 6]^2.
+void random_polygons(unsigned seed, std::vector<Shape>& shapes, std::vector<Vec2>& positions) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> position(-6, 6);
-  std::vector<Shape> shapes;
-  std::vector<Vec2> positions;
   for (int i = 0; i < 24; ++i) {
     shapes.push_back(random_polygon(rng, 5 + i % 30, 2.0));
     positions.emplace_back(position(rng), position(rng));
   }
+}
+
+TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  random_polygons(9, shapes, positions);
   const Scene scene = scene_of(shapes, positions);
   MeasurementOptions options;
   options.proxy.tolerance = 0.0;
@@ -115,14 +120,9 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
 
 // With breakpoints the distance may be any value of the interval that holds the exact one.
 TEST(ShapeDistance, BreakpointsDecideTheIntervalOfTheExactDistance) {  // NOLINT
-  std::mt19937 rng(21);
-  std::uniform_real_distribution<double> position(-6, 6);
   std::vector<Shape> shapes;
   std::vector<Vec2> positions;
-  for (int i = 0; i < 24; ++i) {
-    shapes.push_back(random_polygon(rng, 5 + i % 30, 2.0));
-    positions.emplace_back(position(rng), position(rng));
-  }
+  random_polygons(21, shapes, positions);
   shapes.push_back(ring(3, 2));  // holds small shapes in its hole, or in its body
   positions.emplace_back(0.0, 0.0);
   shapes.push_back(disc(0.3));
