@@ -38,25 +38,17 @@ void BM_Distance2D(benchmark::State& state) {
 }
 BENCHMARK(BM_Distance2D)->Arg(8)->Arg(50)->Arg(500);
 
-void BM_Direction2D(benchmark::State& state) {
+// Near: the polygons 0.2 apart. Apart: their centres 5 apart (2.5 times the sum of their radii),
+// the pair's multipole expansion (its table built on the first call).
+void BM_Direction2D(benchmark::State& state, bool apart) {
   const Scene scene = two_polygons(static_cast<int>(state.range(0)));
   const PairMeasurer measurer(scene, exact_proxies());
-  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  const Vec3 offset = apart ? Vec3(4.0, 3.0, 0.0) : Vec3(scene.elements[1].position - scene.elements[0].position);
   for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
   state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
 }
-BENCHMARK(BM_Direction2D)->Arg(8)->Arg(50)->Arg(500);
-
-// The same polygons with their centres 5 apart (2.5 times the sum of their radii): the pair's
-// multipole expansion, whose table is built on the first call.
-void BM_Direction2DApart(benchmark::State& state) {
-  const Scene scene = two_polygons(static_cast<int>(state.range(0)));
-  const PairMeasurer measurer(scene, exact_proxies());
-  const Vec3 offset(4.0, 3.0, 0.0);
-  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
-  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
-}
-BENCHMARK(BM_Direction2DApart)->Arg(8)->Arg(50)->Arg(500);
+BENCHMARK_CAPTURE(BM_Direction2D, near, false)->Arg(8)->Arg(50)->Arg(500);
+BENCHMARK_CAPTURE(BM_Direction2D, apart, true)->Arg(8)->Arg(50)->Arg(500);
 
 // UV spheres of radius 1, 0.2 apart: 50 triangles (5 x 6) or 500 (25 x 11).
 Scene two_spheres(int triangles) {

@@ -57,6 +57,24 @@ inline Shape random_polygon(std::mt19937& rng, int corners, double radius) {
   return planar({polygon(points)});
 }
 
+// `count` random polygons (the i-th with min_corners + i % corner_span corners) at positions
+// uniform in [low, high]^2, all from one generator seeded with `seed`.
+struct ScatteredPolygons {
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+};
+inline ScatteredPolygons scatter_polygons(unsigned seed, int count, int min_corners, int corner_span, double radius,
+                                          double low, double high) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> position(low, high);
+  ScatteredPolygons out;
+  for (int i = 0; i < count; ++i) {
+    out.shapes.push_back(random_polygon(rng, min_corners + i % corner_span, radius));
+    out.positions.emplace_back(position(rng), position(rng));
+  }
+  return out;
+}
+
 // A scene of 2D shapes placed at the given positions (shapes given in local coordinates).
 inline Scene scene_of(const std::vector<Shape>& shapes, const std::vector<Vec2>& positions,
                       Box3 window = Box3(Vec3(-1000, -1000, 0), Vec3(1000, 1000, 0))) {

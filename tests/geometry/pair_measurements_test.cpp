@@ -77,20 +77,8 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   EXPECT_NEAR(measured({ell, ell}, {{0, 0}, {1.5, 1.5}}), 0.5, 1e-12);
 }
 
-// 24 random polygons of 5 to 28 corners scattered over [-6, 6]^2.
-void random_polygons(unsigned seed, std::vector<Shape>& shapes, std::vector<Vec2>& positions) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> position(-6, 6);
-  for (int i = 0; i < 24; ++i) {
-    shapes.push_back(random_polygon(rng, 5 + i % 30, 2.0));
-    positions.emplace_back(position(rng), position(rng));
-  }
-}
-
 TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
-  std::vector<Shape> shapes;
-  std::vector<Vec2> positions;
-  random_polygons(9, shapes, positions);
+  const auto [shapes, positions] = scatter_polygons(9, 24, 5, 30, 2.0, -6, 6);
   const Scene scene = scene_of(shapes, positions);
   MeasurementOptions options;
   options.proxy.tolerance = 0.0;
@@ -120,9 +108,7 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
 
 // With breakpoints the distance may be any value of the interval that holds the exact one.
 TEST(ShapeDistance, BreakpointsDecideTheIntervalOfTheExactDistance) {  // NOLINT
-  std::vector<Shape> shapes;
-  std::vector<Vec2> positions;
-  random_polygons(21, shapes, positions);
+  auto [shapes, positions] = scatter_polygons(21, 24, 5, 30, 2.0, -6, 6);
   shapes.push_back(ring(3, 2));  // holds small shapes in its hole, or in its body
   positions.emplace_back(0.0, 0.0);
   shapes.push_back(disc(0.3));
@@ -188,14 +174,7 @@ TEST(Periodic, MinimumImageAcrossTheWindowEdge) {
 }
 
 TEST(Gravitation, ExactlyAntisymmetricAndTranslationInvariant) {
-  std::mt19937 rng(21);
-  std::vector<Shape> shapes;
-  std::vector<Vec2> positions;
-  std::uniform_real_distribution<double> position(0, 20);
-  for (int i = 0; i < 10; ++i) {
-    shapes.push_back(random_polygon(rng, 7, 2.5));
-    positions.emplace_back(position(rng), position(rng));
-  }
+  const auto [shapes, positions] = scatter_polygons(21, 10, 7, 1, 2.5, 0, 20);
   const Scene scene = scene_of(shapes, positions);
   const PairMeasurer measurer(scene, MeasurementOptions{});
   std::vector<Vec2> moved = positions;
@@ -363,14 +342,7 @@ namespace shapeproc::geometry {
 namespace {
 
 TEST(AxisFromBoxes, AgreesWithTheDirectionWheneverItDecides) {
-  std::mt19937 rng(77);
-  std::vector<Shape> shapes;
-  std::vector<Vec2> positions;
-  std::uniform_real_distribution<double> position(0, 40);
-  for (int i = 0; i < 30; ++i) {
-    shapes.push_back(fixtures::random_polygon(rng, 9, 2.0));
-    positions.emplace_back(position(rng), position(rng));
-  }
+  const auto [shapes, positions] = fixtures::scatter_polygons(77, 30, 9, 1, 2.0, 0, 40);
   const Scene scene = fixtures::scene_of(shapes, positions);
   for (const DirectionKind kind : {DirectionKind::gravitation, DirectionKind::centroid}) {
     MeasurementOptions options;
