@@ -38,9 +38,6 @@ class Configuration {
                 const geometry::Box3& domain, int dimension, double reach, bool periodic)
       : interaction_(interaction), measurer_(measurer), grid_(domain, dimension, reach, periodic) {
     if (periodic) period_.head(dimension) = domain.sizes().head(dimension);
-    for (int shape = 0; shape < static_cast<int>(measurer.proxies2().size() + measurer.proxies3().size()); ++shape) {
-      radius_.push_back(measurer.radius(shape));
-    }
     shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
   }
 
@@ -69,8 +66,8 @@ class Configuration {
       // Shape distances are at least the reference positions' distance minus both radii (t is
       // the nearest image in every coordinate, so no other image is nearer).
       const double squared = t.squaredNorm();
-      const double far = interaction_.max_range(xi.category, other.category) + radius_[static_cast<std::size_t>(xi.shape)] +
-                         radius_[static_cast<std::size_t>(other.shape)];
+      const double far =
+          interaction_.max_range(xi.category, other.category) + measurer_.radius(xi.shape) + measurer_.radius(other.shape);
       if (shape_distances_ && squared >= far * far) return;
       candidates_.emplace_back(squared, slot);
     });
@@ -181,7 +178,6 @@ class Configuration {
   std::vector<std::vector<Link>> links_;  // per slot
   std::vector<double> local_;             // per slot: log of the local factor of β
   Vec3 period_ = Vec3::Zero();            // the torus's sizes (0: open)
-  std::vector<double> radius_;            // per shape, around the reference position
   bool shape_distances_ = true;
   mutable std::vector<std::pair<double, int>> candidates_;       // scratch of log_interaction: (squared distance, slot)
   mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
