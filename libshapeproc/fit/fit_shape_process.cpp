@@ -1,6 +1,7 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -297,11 +298,13 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     double line_weight;  // of the whole line through the cell, before the data points' share
   };
   std::vector<Dummy> dummies;
+  std::vector<std::size_t> block_start;  // first dummy of each block of 4 rows of cells
   for (int c = 0; c < categories; ++c) {
     const std::vector<int>& shapes = shapes_of[static_cast<std::size_t>(c)];
     const int m_c = static_cast<int>(shapes.size());
     const int m = options.shapes_per_location > 0 ? std::min(m_c, options.shapes_per_location) : m_c;
     for (int cell = 0; cell < result.quadrature_cells; ++cell) {
+      if (cell % (4 * count[0]) == 0) block_start.push_back(dummies.size());
       Vec3 centre = Vec3::Zero();
       int rest = cell;
       for (int axis = 0; axis < dimension; ++axis) {
@@ -329,12 +332,12 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       }
     }
   }
+  block_start.push_back(dummies.size());
   // Each dummy integrated over its cell against the data, on two threads (results do not
   // depend on the thread count). With `lines` (2D), every row of cells becomes the line through
   // the cell centres, integrated exactly along its length (line_quadrature.hpp).
   double max_radius = 0.0;
   for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
-  const double cell_side = std::pow(cell_measure, 1.0 / dimension);  // cells are (nearly) square
   const int refinement = options.refinement;
   const bool lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> dummy_parts(dummies.size());
@@ -376,12 +379,24 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     for (std::size_t k = 0; k < n; ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
     CellContext context{&interaction, &measurer, &exemplar.elements, &grid, dimension, Vec3::Zero()};
     if (periodic) context.period = exemplar.window.sizes();
-    auto evaluate = [&](std::size_t begin, std::size_t step) {
-      for (std::size_t d = begin; d < dummies.size(); d += step) {
-        if (range <= 0) {
-          dummy_parts[d] = {CellPart{}};
-        } else {
-          dummy_parts[d] = integrate_cell_adaptive(context, dummies[d].element, cell_side, refinement);
+    Vec3 cell_size = Vec3::Zero();
+    for (int axis = 0; axis < dimension; ++axis) cell_size[axis] = sizes[axis] / count[axis];
+    // Corners on a lattice fine enough for three levels of refinement, shared by the cells of a
+    // block of rows that one thread integrates (the results do not depend on the blocks).
+    context.lattice_origin = region.min();
+    context.lattice_step = cell_size / 8.0;
+    context.top_corner = 0.5 * cell_size.norm();
+    std::atomic<std::size_t> next_block{0};
+    auto evaluate = [&](std::size_t, std::size_t) {
+      CornerCache cache;
+      for (std::size_t b = next_block++; b + 1 < block_start.size(); b = next_block++) {
+        cache.clear();
+        for (std::size_t d = block_start[b]; d < block_start[b + 1]; ++d) {
+          if (range <= 0) {
+            dummy_parts[d] = {CellPart{}};
+          } else {
+            dummy_parts[d] = integrate_cell_adaptive(context, dummies[d].element, cell_size, refinement, &cache);
+          }
         }
       }
     };

@@ -1,8 +1,11 @@
 #include "libshapeproc/fit/quadrature_cell.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
 
 namespace shapeproc::fit {
 
@@ -12,6 +15,13 @@ using model::Interaction;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Relative departure from the linear models (of a slope, or of a boundary's place as a
+// fraction of the cell) beyond which a 2D cell counts as rough.
+constexpr double kRoughness = 0.1;
+// A sector boundary is looked for when the angle to it times the distance between centres (its
+// distance for directions between centres) is below this many half-diagonals of the cell: the
+// gravitation direction of near shapes may turn faster.
+constexpr double kSectorReach = 1.5;
 
 double cell_radius(int dimension, double measure) {
   return dimension == 2 ? std::sqrt(measure / kPi) : std::cbrt(3.0 * measure / (4.0 * kPi));
@@ -42,8 +52,503 @@ double cut_fraction(int dimension, double cell_measure, double x) {
   return (r - x) * (r - x) * (2 * r + x) / (4.0 * r * r * r);  // cap volume / ball volume
 }
 
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double side,
-                                     bool* uniform) {
+namespace {
+
+// ---- 2D: cells cut along the boundaries' local models ------------------------------------------
+
+struct Point2 {
+  double x, y;
+};
+
+// The half-plane n·p ≤ c (p relative to the cell's centre).
+struct HalfPlane {
+  double nx, ny, c;
+};
+
+// A convex polygon with inline storage: a square cut by k lines has at most 4 + k vertices.
+struct Polygon {
+  static constexpr int kCapacity = 48;
+  std::array<Point2, kCapacity> p;
+  int n = 0;
+
+  double area() const {
+    double twice = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const Point2& a = p[static_cast<std::size_t>(i)];
+      const Point2& b = p[static_cast<std::size_t>((i + 1) % n)];
+      twice += a.x * b.y - a.y * b.x;
+    }
+    return 0.5 * twice;
+  }
+};
+
+// out = polygon ∩ h (Sutherland–Hodgman against one line).
+void clip(const Polygon& polygon, const HalfPlane& h, Polygon& out) {
+  out.n = 0;
+  auto add = [&](const Point2& q) {
+    if (out.n < Polygon::kCapacity) out.p[static_cast<std::size_t>(out.n++)] = q;
+  };
+  for (int i = 0; i < polygon.n; ++i) {
+    const Point2& a = polygon.p[static_cast<std::size_t>(i)];
+    const Point2& b = polygon.p[static_cast<std::size_t>((i + 1) % polygon.n)];
+    const double fa = h.nx * a.x + h.ny * a.y - h.c;
+    const double fb = h.nx * b.x + h.ny * b.y - h.c;
+    if (fa <= 0) add(a);
+    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) {
+      const double t = fa / (fa - fb);
+      add({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+    }
+  }
+}
+
+// One boundary inside the cell, with the convex region C = ∩ sides on one side of it. A distance
+// cut is a level set d = `breakpoint` of one neighbour, for the axes in `axes` (C holds the
+// distances below it when `inside_below`, else those at or above it); a sector cut is where the
+// neighbour's direction enters the sector of `other_axis` (C is that side).
+struct PlaneCut {
+  bool sector;
+  double breakpoint;
+  bool inside_below;
+  int other_axis;
+  std::uint64_t axes;
+  int first_side, side_count;  // into the cell's list of half-planes
+};
+
+// A neighbour whose boundaries cross the cell: its centre's axis and exact distance, and its
+// cuts (sector cuts first, then distance cuts by ascending breakpoint).
+struct PlaneNeighbour {
+  int category;
+  int axis;
+  double distance;
+  int first_cut, cut_count;
+};
+
+// A piece of the cell and the cuts whose region C holds it.
+struct Piece {
+  Polygon polygon;
+  std::uint64_t inside = 0;
+};
+
+bool holds(std::uint64_t inside, int cut) { return ((inside >> cut) & 1u) != 0; }
+
+int piece_axis(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts, std::uint64_t inside) {
+  for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
+    const PlaneCut& cut = cuts[static_cast<std::size_t>(c)];
+    if (cut.sector && holds(inside, c)) return cut.other_axis;
+  }
+  return n.axis;
+}
+
+// A distance of the piece's interval between `axis`'s thresholds: with the cuts of that axis at
+// b_0 < … < b_m-1, a piece below k of them lies in [b_{m-k-1}, b_{m-k}).
+double piece_distance(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts, std::uint64_t inside, int axis) {
+  double lower = -1.0, upper = -1.0;  // breakpoints of the piece's interval (-1: none)
+  int m = 0, below = 0;
+  for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
+    const PlaneCut& cut = cuts[static_cast<std::size_t>(c)];
+    if (cut.sector || !holds(cut.axes, axis)) continue;
+    ++m;
+    if (holds(inside, c) == cut.inside_below) ++below;
+  }
+  if (m == 0) return n.distance;
+  const int first_above = m - below;
+  int k = 0;
+  for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
+    const PlaneCut& cut = cuts[static_cast<std::size_t>(c)];
+    if (cut.sector || !holds(cut.axes, axis)) continue;
+    if (k == first_above - 1) lower = cut.breakpoint;
+    if (k == first_above) upper = cut.breakpoint;
+    ++k;
+  }
+  if (upper < 0) return std::max(n.distance, lower);
+  if (lower < 0) return std::min(n.distance, std::nextafter(upper, 0.0));
+  return 0.5 * (lower + upper);
+}
+
+// Corners of the cell, in units of half its side.
+constexpr std::array<Point2, 4> kCorners{{{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}};
+
+std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+                                           bool* uniform, bool* rough, CornerCache* cache) {
+  const Interaction& interaction = *context.interaction;
+  const geometry::PairMeasurer& measurer = *context.measurer;
+  const double hx = 0.5 * size.x(), hy = 0.5 * size.y();
+  const double side = std::sqrt(size.x() * size.y());  // of the square of the same area
+  const double corner = std::hypot(hx, hy);
+  // Samples at the corners use one cut-off whatever the refinement, so that they can be shared.
+  const double sample_reach = 3 * (context.top_corner > 0 ? context.top_corner : corner);
+  // Lattice coordinates of the corners, when they lie on the lattice.
+  std::array<long, 4> lattice_x{}, lattice_y{};
+  bool on_lattice = cache != nullptr && context.lattice_step.x() > 0 && context.lattice_step.y() > 0;
+  for (std::size_t i = 0; i < 4 && on_lattice; ++i) {
+    const double fx = (dummy.position.x() + kCorners[i].x * hx - context.lattice_origin.x()) / context.lattice_step.x();
+    const double fy = (dummy.position.y() + kCorners[i].y * hy - context.lattice_origin.y()) / context.lattice_step.y();
+    lattice_x[i] = std::lround(fx);
+    lattice_y[i] = std::lround(fy);
+    on_lattice = std::abs(fx - static_cast<double>(lattice_x[i])) < 1e-6 && std::abs(fy - static_cast<double>(lattice_y[i])) < 1e-6;
+  }
+  // Whether the line n·p = c meets the cell.
+  const auto meets = [&](double nx, double ny, double c) { return std::abs(c) < std::abs(nx) * hx + std::abs(ny) * hy; };
+  std::vector<PlaneNeighbour> neighbours;
+  std::vector<PlaneCut> cuts;
+  std::vector<HalfPlane> sides;
+  model::InteractionCounts base;  // neighbours with one effect on the whole cell
+  bool forbidden = false;
+  bool linear = true;  // every boundary's model holds across the cell
+  // Candidates nearest first: a hard core over the whole cell ends the work early.
+  struct Candidate {
+    double gap;
+    int k;
+    Vec3 offset;
+  };
+  std::vector<Candidate> candidates;
+  context.grid->for_each_candidate(dummy.position, [&](int k) {
+    const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
+    if (!interaction.interacts(dummy.category, other.category)) return;
+    Vec3 offset = other.position - dummy.position;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (context.period[axis] > 0) offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
+    }
+    const double gap = offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape);
+    if (gap >= interaction.max_range(dummy.category, other.category) + corner) return;
+    candidates.push_back({gap, k, offset});
+  });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.gap < b.gap || (a.gap == b.gap && a.k < b.k); });
+  for (const Candidate& candidate : candidates) {
+    if (forbidden) break;
+    const int k = candidate.k;
+    const Vec3& offset = candidate.offset;
+    const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
+    const int ca = dummy.category, cb = other.category;
+    const double reach = interaction.max_range(ca, cb);
+    const auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
+    if (lo >= reach + corner) continue;
+    const double hard_core = interaction.min_hard_core(ca, cb);
+    if (hi + corner < hard_core) {
+      forbidden = true;  // within every axis's hard core all over the cell
+      break;
+    }
+    // The exact distance when a threshold of any axis may fall within the cell's range.
+    const double cutoff = reach + sample_reach;
+    const std::vector<double>& breakpoints = interaction.breakpoints(ca, cb);
+    const auto any_within = [&](double low, double high) {
+      return std::any_of(breakpoints.begin(), breakpoints.end(), [&](double t) { return t > low && t <= high; });
+    };
+    double d = lo;
+    const bool exact = any_within(lo - corner, hi + corner);
+    if (exact) {
+      d = measurer.distance(dummy.shape, other.shape, offset, cutoff);
+      if (d + corner < hard_core) {
+        forbidden = true;
+        break;
+      }
+      if (d - corner >= reach) continue;
+    }
+    // The dummy moved by p sees the neighbour at offset − p.
+    const Vec3 image = offset - (other.position - dummy.position);
+    const auto key = [&](std::size_t i) {
+      return CornerCache::Key{dummy.shape, k, lattice_x[i], lattice_y[i],
+                              context.period.x() > 0 ? static_cast<int>(std::lround(image.x() / context.period.x())) : 0,
+                              context.period.y() > 0 ? static_cast<int>(std::lround(image.y() / context.period.y())) : 0};
+    };
+    const auto at_corner = [&](std::size_t i) {
+      Vec3 o = offset;
+      o.x() -= kCorners[i].x * hx;
+      o.y() -= kCorners[i].y * hy;
+      return o;
+    };
+    const auto sample_distance = [&](std::size_t i) {
+      const auto measure = [&] { return measurer.distance(dummy.shape, other.shape, at_corner(i), cutoff); };
+      if (!on_lattice) return measure();
+      auto [it, fresh] = cache->distances.try_emplace(key(i), 0.0);
+      if (fresh) it->second = measure();
+      return it->second;
+    };
+    const auto sample_angle = [&](std::size_t i) {
+      const auto measure = [&] {
+        const Vec3 g = measurer.direction(dummy.shape, other.shape, at_corner(i));
+        return std::atan2(g.y(), g.x());
+      };
+      if (!on_lattice) return measure();
+      auto [it, fresh] = cache->angles.try_emplace(key(i), 0.0);
+      if (fresh) it->second = measure();
+      return it->second;
+    };
+    PlaneNeighbour n{cb, measurer.axis_from_boxes(dummy.shape, other.shape, offset, corner), d,
+                     static_cast<int>(cuts.size()), 0};
+    std::uint64_t axes = 0;  // axes whose thresholds matter in the cell
+    if (n.axis < 0 && (exact ? !any_within(d - corner, d + corner) : true)) {
+      // Every axis keeps one band over the cell: when all are a hard core, or all beyond, the
+      // axis does not matter.
+      const int first = interaction.band(ca, cb, 0, d);
+      bool same = first < 0;
+      for (int axis = 1; axis < measurer.bins().axis_count() && same; ++axis) same = interaction.band(ca, cb, axis, d) == first;
+      if (same) n.axis = 0;
+    }
+    if (n.axis < 0) {
+      // Sector boundaries, where the bands of the two axes differ.
+      const Vec3 direction = measurer.direction(dummy.shape, other.shape, offset);
+      n.axis = measurer.bins().axis_of(direction);
+      const int directions = measurer.bins().directions();
+      const double step = 2 * kPi / directions;
+      const double angle = std::atan2(direction.y(), direction.x());
+      const long sector = std::lround(angle / step);
+      const double margin = step / 2 - std::abs(angle - static_cast<double>(sector) * step);
+      // Whether two axes give different bands somewhere in the cell's range of distances.
+      const double range_low = exact ? d - corner : lo - corner, range_high = exact ? d + corner : hi + corner;
+      // (Bands of two axes are other parameters unless both are a hard core or beyond.)
+      const auto differ = [&](int axis_a, int axis_b) {
+        const auto differ_at = [&](double x) {
+          const int band_a = interaction.band(ca, cb, axis_a, x);
+          return band_a >= 0 || band_a != interaction.band(ca, cb, axis_b, x);
+        };
+        if (differ_at(std::max(0.0, range_low))) return true;
+        return std::any_of(breakpoints.begin(), breakpoints.end(),
+                           [&](double t) { return t > range_low && t <= range_high && differ_at(t); });
+      };
+      const long half_turn = directions / 2;
+      const auto axis_of_sector = [&](long s) { return static_cast<int>(((s % half_turn) + half_turn) % half_turn); };
+      const long nearest_other = sector + (angle > static_cast<double>(sector) * step ? 1 : -1);
+      if (directions > 2 && margin * offset.norm() < kSectorReach * corner && differ(n.axis, axis_of_sector(nearest_other))) {
+        // The angle at the four corners, relative to the centre's; its slope by least squares.
+        std::array<double, 4> turns;
+        for (std::size_t i = 0; i < 4; ++i) {
+          const double diff = sample_angle(i) - angle;
+          turns[i] = diff - 2 * kPi * std::round(diff / (2 * kPi));
+        }
+        double ax = 0.0, ay = 0.0;  // the corners are symmetric: least squares per axis
+        for (std::size_t i = 0; i < 4; ++i) {
+          ax += kCorners[i].x * turns[i] / (4 * hx);
+          ay += kCorners[i].y * turns[i] / (4 * hy);
+        }
+        const double rate = std::hypot(ax, ay);
+        // The direction turns about a pole: for the angle of (P − p), ∇θ = (P_y, −P_x)/|P|²
+        // at p = 0, so P = (−a_y, a_x)/|a|². Sector boundaries are then rays from P, and the
+        // four samples tell how well that model holds, as a distance in the cell.
+        const double px = -ay / (rate * rate), py = ax / (rate * rate);
+        const double pole_angle = std::atan2(py, px);
+        const auto model_turn = [&](double qx, double qy) {
+          const double diff = std::atan2(py - qy, px - qx) - pole_angle;
+          return diff - 2 * kPi * std::round(diff / (2 * kPi));
+        };
+        double departure = 0.0;
+        for (std::size_t i = 0; i < 4; ++i) {
+          departure = std::max(departure, std::abs(turns[i] - model_turn(kCorners[i].x * hx, kCorners[i].y * hy)) / rate);
+        }
+        const bool pole_inside = std::abs(px) < hx && std::abs(py) < hy;
+        for (const int sign : {-1, 1}) {
+          // The boundary's ray from the pole, in the pole model's angles.
+          const double ray = pole_angle + (static_cast<double>(sector) + 0.5 * sign) * step - angle;
+          const double nx = -std::sin(ray), ny = std::cos(ray);
+          const double centre_side = -(nx * px + ny * py);  // n·(0 − P)
+          if (!meets(nx, ny, nx * px + ny * py)) continue;
+          const long other_sector = sector + sign;
+          const int other_axis = axis_of_sector(other_sector);
+          if (other_axis == n.axis || !differ(n.axis, other_axis)) continue;
+          // Beyond the boundary: the side of the ray's line away from the centre.
+          const double s0 = centre_side >= 0 ? 1.0 : -1.0;
+          sides.push_back({s0 * nx, s0 * ny, s0 * (nx * px + ny * py)});
+          cuts.push_back({true, 0.0, false, other_axis, 0, static_cast<int>(sides.size()) - 1, 1});
+          axes |= std::uint64_t{1} << other_axis;
+          if (departure > kRoughness * side || pole_inside) linear = false;
+        }
+      }
+    }
+    axes |= std::uint64_t{1} << n.axis;
+    // Thresholds of those axes within (low, high], ascending, with the axes they belong to.
+    const auto thresholds_within = [&](double low, double high) {
+      std::vector<std::pair<double, std::uint64_t>> found;
+      for (int axis = 0; axis < 64 && (axes >> axis) != 0; ++axis) {
+        if (!holds(axes, axis)) continue;
+        for (const double t : interaction.thresholds(ca, cb, axis)) {
+          if (t <= low || t > high) continue;
+          auto at = std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == t; });
+          if (at == found.end()) {
+            found.push_back({t, 0});
+            at = found.end() - 1;
+          }
+          at->second |= std::uint64_t{1} << axis;
+        }
+      }
+      std::sort(found.begin(), found.end());
+      return found;
+    };
+    if (exact) {
+      const auto crossing = thresholds_within(d - corner, d + corner);
+      if (!crossing.empty()) {
+        // Slope and curvature of the distance across the cell, from the corners off contact
+        // (at contact the field is flat): d(p) ≈ d + g·p + ½κ (t·p)² with t across g, since
+        // along a gradient line a distance grows linearly. Slope by least squares through the
+        // centre, then κ from what is left.
+        std::array<double, 4> at;
+        double sxx = 0.0, sxy = 0.0, syy = 0.0, bx = 0.0, by = 0.0;
+        int off_contact = 0;
+        for (std::size_t i = 0; i < 4; ++i) {
+          at[i] = sample_distance(i);
+          if (at[i] <= 0.0) continue;
+          const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
+          sxx += qx * qx;
+          sxy += qx * qy;
+          syy += qy * qy;
+          bx += qx * (at[i] - d);
+          by += qy * (at[i] - d);
+          ++off_contact;
+        }
+        const double det = sxx * syy - sxy * sxy;
+        const double gx = det > 1e-12 * std::pow(corner, 4) ? (syy * bx - sxy * by) / det : 0.0;
+        const double gy = det > 1e-12 * std::pow(corner, 4) ? (sxx * by - sxy * bx) / det : 0.0;
+        const double slope = std::hypot(gx, gy);
+        if (slope <= 1e-9) {
+          linear = false;
+        } else {
+          const double nx = gx / slope, ny = gy / slope;  // ξ along the gradient, η across
+          const double tx = -ny, ty = nx;
+          double fit = 0.0, weight = 0.0;
+          for (std::size_t i = 0; i < 4; ++i) {
+            if (at[i] <= 0.0) continue;
+            const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
+            const double w = 0.5 * (tx * qx + ty * qy) * (tx * qx + ty * qy);
+            fit += w * (at[i] - d - gx * qx - gy * qy);
+            weight += w * w;
+          }
+          const bool curved = off_contact >= 3 && weight > 1e-3 * std::pow(corner, 4);
+          const double kappa = curved ? fit / weight : 0.0;
+          double misfit = 0.0;
+          for (std::size_t i = 0; i < 4; ++i) {
+            if (at[i] <= 0.0) continue;
+            const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
+            const double w = 0.5 * (tx * qx + ty * qy) * (tx * qx + ty * qy);
+            misfit = std::max(misfit, std::abs(at[i] - d - gx * qx - gy * qy - kappa * w));
+          }
+          double bend = 0.5 * kappa / slope;
+          // A distance field has unit slope except at contact and where the closest points
+          // jump; that, corners the model misses, a sample beyond the cut-off, or a curvature
+          // radius below the cell leave the model rough.
+          if (std::abs(slope - 1.0) > kRoughness || d <= 0.0 || off_contact < 3 || misfit > kRoughness * side ||
+              std::max({at[0], at[1], at[2], at[3]}) >= cutoff || std::abs(bend) * corner > 1.0) {
+            linear = false;
+          }
+          bend = std::clamp(bend, -1.0 / corner, 1.0 / corner);
+          // The level set ξ = level − bend·η² as chords across the cell, each moved towards
+          // the parabola by 2/3 of its sagitta so that the areas balance; the convex side is
+          // the intersection of the chords' half-planes.
+          const double sagitta = std::abs(bend) * corner * corner;
+          const int chords = sagitta < 0.05 * side ? 1 : sagitta < 0.5 * side ? 2 : 4;
+          for (const auto& [b, threshold_axes] : crossing) {
+            const double level = (b - d) / slope;
+            PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides.size()), chords};
+            const double sign = cut.inside_below ? 1.0 : -1.0;
+            for (int i = 0; i < chords; ++i) {
+              const double e0 = -corner + 2 * corner * i / chords, e1 = e0 + 2 * corner / chords;
+              const double lift = (2.0 / 3.0) * bend * 0.25 * (e1 - e0) * (e1 - e0);
+              const double f0 = level - bend * e0 * e0 + lift, f1 = level - bend * e1 * e1 + lift;
+              const double s = (f1 - f0) / (e1 - e0);
+              // ξ − s·η ≤ f0 − s·e0 below the chord; ≥ on the other side.
+              sides.push_back({sign * (nx - s * tx), sign * (ny - s * ty), sign * (f0 - s * e0)});
+            }
+            cuts.push_back(cut);
+          }
+        }
+      }
+    }
+    n.cut_count = static_cast<int>(cuts.size()) - n.first_cut;
+    if (n.cut_count == 0) {
+      const int band = interaction.band(ca, cb, n.axis, n.distance);
+      if (band == Interaction::kHardCore) forbidden = true;
+      if (band >= 0) base.add(interaction.parameter(ca, cb, n.axis, band));
+      continue;
+    }
+    neighbours.push_back(n);
+  }
+  if (uniform) *uniform = true;
+  if (rough) *rough = !forbidden && !linear;
+  if (forbidden) return {};
+  // Cut the cell along every boundary, nearest neighbours first (their hard cores drop pieces
+  // early); after a neighbour's cuts, pieces in its hard core are dropped. A distance cut only
+  // splits pieces on the side of the axes whose threshold it is.
+  std::stable_sort(neighbours.begin(), neighbours.end(),
+                   [](const PlaneNeighbour& a, const PlaneNeighbour& b) { return a.distance < b.distance; });
+  constexpr std::size_t kMaxCuts = 64, kMaxPieces = 256;
+  thread_local std::vector<Piece> pieces, next;
+  pieces.assign(1, Piece{});
+  pieces[0].polygon.n = 4;
+  pieces[0].polygon.p[0] = {-hx, -hy};
+  pieces[0].polygon.p[1] = {hx, -hy};
+  pieces[0].polygon.p[2] = {hx, hy};
+  pieces[0].polygon.p[3] = {-hx, hy};
+  const double cell_area = size.x() * size.y();
+  const double negligible = 1e-12 * cell_area;
+  Polygon beyond, rest, clipped;
+  for (const PlaneNeighbour& n : neighbours) {
+    for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
+      const PlaneCut& cut = cuts[static_cast<std::size_t>(c)];
+      const HalfPlane* first = sides.data() + cut.first_side;
+      const HalfPlane* last = first + cut.side_count;
+      if (static_cast<std::size_t>(c) >= kMaxCuts || pieces.size() >= kMaxPieces) {
+        // Too many boundaries: the rest keep the centre's side.
+        const bool centre_inside = std::all_of(first, last, [](const HalfPlane& h) { return h.c >= 0; });
+        if (static_cast<std::size_t>(c) < kMaxCuts && centre_inside) {
+          for (Piece& piece : pieces) piece.inside |= std::uint64_t{1} << c;
+        }
+        continue;
+      }
+      next.clear();
+      for (Piece& piece : pieces) {
+        if (!cut.sector && !holds(cut.axes, piece_axis(n, cuts, piece.inside))) {
+          next.push_back(piece);
+          continue;
+        }
+        // Outside C: beyond the first side, then beyond the second within the first, ….
+        rest = piece.polygon;
+        bool empty = false;
+        for (const HalfPlane* h = first; h != last; ++h) {
+          clip(rest, {-h->nx, -h->ny, -h->c}, beyond);
+          if (beyond.area() > negligible) next.push_back({beyond, piece.inside});
+          clip(rest, *h, clipped);
+          std::swap(rest, clipped);
+          if (rest.area() <= negligible) {
+            empty = true;
+            break;
+          }
+        }
+        if (!empty) next.push_back({rest, piece.inside | (std::uint64_t{1} << c)});
+      }
+      if (uniform && next.size() != pieces.size()) *uniform = false;
+      std::swap(pieces, next);
+    }
+    next.clear();
+    for (const Piece& piece : pieces) {
+      const int axis = piece_axis(n, cuts, piece.inside);
+      if (interaction.band(dummy.category, n.category, axis, piece_distance(n, cuts, piece.inside, axis)) !=
+          Interaction::kHardCore) {
+        next.push_back(piece);
+      }
+    }
+    std::swap(pieces, next);
+  }
+  std::map<std::vector<std::pair<int, int>>, double> parts;
+  for (const Piece& piece : pieces) {
+    model::InteractionCounts counts = base;
+    for (const PlaneNeighbour& n : neighbours) {
+      const int axis = piece_axis(n, cuts, piece.inside);
+      const int band = interaction.band(dummy.category, n.category, axis, piece_distance(n, cuts, piece.inside, axis));
+      if (band >= 0) counts.add(interaction.parameter(dummy.category, n.category, axis, band));
+    }
+    parts[counts.counts] += piece.polygon.area() / cell_area;
+  }
+  std::vector<CellPart> result;
+  result.reserve(parts.size());
+  for (auto& [counts, fraction] : parts) result.push_back({fraction, counts});
+  return result;
+}
+
+// 3D: each boundary cuts the ball of the cell's measure at its estimated distance.
+std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+                                          bool* uniform) {
+  double measure = 1.0;
+  for (int axis = 0; axis < context.dimension; ++axis) measure *= size[axis];
+  const double side = std::pow(measure, 1.0 / context.dimension);
   const Interaction& interaction = *context.interaction;
   const geometry::PairMeasurer& measurer = *context.measurer;
   const double cell_measure = context.dimension == 2 ? side * side : side * side * side;
@@ -180,10 +685,19 @@ std::vector<CellPart> integrate_cell(const CellContext& context, const geometry:
   return parts;
 }
 
-std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, double side,
-                                              int depth) {
+}  // namespace
+
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+                                     bool* uniform, bool* rough, CornerCache* cache) {
+  if (context.dimension == 2) return integrate_cell_plane(context, dummy, size, uniform, rough, cache);
+  if (rough) *rough = false;
+  return integrate_cell_ball(context, dummy, size, uniform);
+}
+
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+                                              int depth, CornerCache* cache) {
   bool uniform = true;
-  std::vector<CellPart> parts = integrate_cell(context, dummy, side, &uniform);
+  std::vector<CellPart> parts = integrate_cell(context, dummy, size, &uniform, nullptr, cache);
   if (uniform || depth <= 0) return parts;
   parts.clear();
   const int children = context.dimension == 2 ? 4 : 8;
@@ -191,9 +705,9 @@ std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const 
   for (int child = 0; child < children; ++child) {
     geometry::Element sub = dummy;
     for (int axis = 0; axis < context.dimension; ++axis) {
-      sub.position[axis] += ((child >> axis) & 1 ? 0.25 : -0.25) * side;
+      sub.position[axis] += ((child >> axis) & 1 ? 0.25 : -0.25) * size[axis];
     }
-    for (CellPart& part : integrate_cell_adaptive(context, sub, 0.5 * side, depth - 1)) {
+    for (CellPart& part : integrate_cell_adaptive(context, sub, 0.5 * size, depth - 1, cache)) {
       part.fraction *= share;
       parts.push_back(std::move(part));
     }

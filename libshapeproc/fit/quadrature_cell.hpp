@@ -3,15 +3,28 @@
 // The conditional intensity of a dummy (shape s at u) is piecewise constant in u: it jumps where
 // the distance to a neighbour crosses a threshold δ_k or where the relative orientation crosses a
 // sector boundary. A plain midpoint rule weighs each cell by its centre's value, an O(h) error
-// along every such boundary. Here a cell that a boundary crosses is split: the distance d(u) to a
-// neighbour is 1-Lipschitz in u with gradient norm 1 away from contact, so the boundary d = δ
-// lies at about |d(u) − δ| from the centre; the cell (taken as the disc, or ball, of the same
-// measure) is cut there, and the two parts carry the statistics of each side. Orientation
-// boundaries are cut the same way at distance (angular margin) × |offset|. Several crossings
-// combine as independent cuts. Cheap bounds on d and the boxes' direction cone skip exact
-// measurements wherever no boundary can cross the cell.
+// along every such boundary.
+//
+// 2D: every neighbour whose boundaries may cross the cell gets local models from samples at the
+// cell's centre and corners: the distance as d + g·p + ½κ(t·p)² (a distance field grows linearly
+// along its gradient, so one curvature κ across it suffices), the direction as turning about a
+// pole (exact for directions between centres: sector boundaries are then rays). The cell is cut
+// along each modelled boundary (a level set as a few area-balanced chords, a sector boundary as
+// a line), nearest neighbours first, into convex pieces; each piece takes the bands of its side
+// and pieces in a hard core are dropped. Corner samples are shared between the cells that meet
+// at a corner (CornerCache). Cells where a model misses its samples (contact, a curvature radius
+// below the cell, a direction that does not turn about one pole) are reported `rough`.
+//
+// 3D: the cell (taken as the ball of the same measure) is cut at the estimated distance
+// |d(u) − δ| of each boundary, and several crossings combine as independent cuts.
+//
+// Cheap bounds on d and the boxes' direction cone skip exact measurements wherever no boundary
+// can cross the cell.
 #pragma once
 
+#include <cstddef>
+#include <functional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -33,19 +46,53 @@ struct CellContext {
   const model::NeighbourGrid* grid;
   int dimension = 2;
   geometry::Vec3 period = geometry::Vec3::Zero();  // window sizes when periodic, else 0
+  // 2D: cell corners lie on the lattice origin + (i, j)·lattice_step, so that cells meeting at
+  // a corner can share its samples through a CornerCache (0: no lattice). `top_corner` is the
+  // half-diagonal of the unrefined cells (0: each cell's own), which fixes the samples' cut-off.
+  geometry::Vec3 lattice_origin = geometry::Vec3::Zero();
+  geometry::Vec3 lattice_step = geometry::Vec3::Zero();
+  double top_corner = 0.0;
 };
 
-// Parts of the square (cube) cell of side `side` around `dummy` with λ > 0 (hard-core parts
-// dropped; an empty result when the whole cell is hard core). `uniform` tells whether no
-// boundary can cross the cell at all (tested with the circumscribed radius), so that the
-// result is exact.
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, double side,
-                                     bool* uniform = nullptr);
+// Distances and directions of one neighbour measured at a cell corner (2D), kept for the other
+// cells that meet there. One per thread; the results do not depend on it.
+class CornerCache {
+ public:
+  struct Key {
+    int shape, neighbour;
+    long x, y;
+    int image_x, image_y;
+    bool operator==(const Key& o) const {
+      return shape == o.shape && neighbour == o.neighbour && x == o.x && y == o.y && image_x == o.image_x &&
+             image_y == o.image_y;
+    }
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = std::hash<long>()(k.x * 1000003L + k.y);
+      h ^= std::hash<long>()((static_cast<long>(k.shape) << 40) ^ (static_cast<long>(k.neighbour) << 8) ^
+                             ((k.image_x + 2) << 4) ^ (k.image_y + 2)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+      return h;
+    }
+  };
+  std::unordered_map<Key, double, Hash> distances, angles;
+  void clear() {
+    distances.clear();
+    angles.clear();
+  }
+};
+
+// Parts of the rectangular (box) cell of extents `size` around `dummy` with λ > 0 (hard-core
+// parts dropped; an empty result when the whole cell is hard core). `uniform` tells whether no
+// boundary crosses the cell, so that the result is exact; `rough` (2D) whether some local model
+// missed its samples.
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const geometry::Vec3& size,
+                                     bool* uniform = nullptr, bool* rough = nullptr, CornerCache* cache = nullptr);
 
 // integrate_cell, refined: a cell that is not uniform is split into 2^dim sub-cells, down to
 // `depth` levels; the finest cells use the cut estimate. Fractions are of the top cell.
-std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, double side,
-                                              int depth);
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, const geometry::Vec3& size,
+                                              int depth, CornerCache* cache = nullptr);
 
 // Fraction of a disc (2D) or ball (3D) of the given measure lying beyond a plane at distance
 // x ≥ 0 from its centre.
