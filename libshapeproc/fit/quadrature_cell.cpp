@@ -15,9 +15,6 @@ using model::Interaction;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Relative departure from the linear models (of a slope, or of a boundary's place as a
-// fraction of the cell) beyond which a 2D cell counts as rough.
-constexpr double kRoughness = 0.1;
 // A sector boundary is looked for when the angle to it times the distance between centres (its
 // distance for directions between centres) is below this many half-diagonals of the cell: the
 // gravitation direction of near shapes may turn faster.
@@ -169,7 +166,7 @@ double piece_distance(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts
 constexpr std::array<Point2, 4> kCorners{{{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}};
 
 std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
-                                           bool* uniform, bool* rough, CornerCache* cache) {
+                                           bool* uniform, CornerCache* cache) {
   const Interaction& interaction = *context.interaction;
   const geometry::PairMeasurer& measurer = *context.measurer;
   const double hx = 0.5 * size.x(), hy = 0.5 * size.y();
@@ -194,7 +191,6 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
   std::vector<HalfPlane> sides;
   model::InteractionCounts base;  // neighbours with one effect on the whole cell
   bool forbidden = false;
-  bool linear = true;  // every boundary's model holds across the cell
   // Candidates nearest first: a hard core over the whole cell ends the work early.
   struct Candidate {
     double gap;
@@ -324,19 +320,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
         }
         const double rate = std::hypot(ax, ay);
         // The direction turns about a pole: for the angle of (P − p), ∇θ = (P_y, −P_x)/|P|²
-        // at p = 0, so P = (−a_y, a_x)/|a|². Sector boundaries are then rays from P, and the
-        // four samples tell how well that model holds, as a distance in the cell.
+        // at p = 0, so P = (−a_y, a_x)/|a|². Sector boundaries are then rays from P.
         const double px = -ay / (rate * rate), py = ax / (rate * rate);
         const double pole_angle = std::atan2(py, px);
-        const auto model_turn = [&](double qx, double qy) {
-          const double diff = std::atan2(py - qy, px - qx) - pole_angle;
-          return diff - 2 * kPi * std::round(diff / (2 * kPi));
-        };
-        double departure = 0.0;
-        for (std::size_t i = 0; i < 4; ++i) {
-          departure = std::max(departure, std::abs(turns[i] - model_turn(kCorners[i].x * hx, kCorners[i].y * hy)) / rate);
-        }
-        const bool pole_inside = std::abs(px) < hx && std::abs(py) < hy;
         for (const int sign : {-1, 1}) {
           // The boundary's ray from the pole, in the pole model's angles.
           const double ray = pole_angle + (static_cast<double>(sector) + 0.5 * sign) * step - angle;
@@ -351,7 +337,6 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           sides.push_back({s0 * nx, s0 * ny, s0 * (nx * px + ny * py)});
           cuts.push_back({true, 0.0, false, other_axis, 0, static_cast<int>(sides.size()) - 1, 1});
           axes |= std::uint64_t{1} << other_axis;
-          if (departure > kRoughness * side || pole_inside) linear = false;
         }
       }
     }
@@ -382,12 +367,14 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
         // along a gradient line a distance grows linearly. Slope by least squares through the
         // centre, then κ from what is left.
         std::array<double, 4> at;
+        std::array<Point2, 4> q;
         double sxx = 0.0, sxy = 0.0, syy = 0.0, bx = 0.0, by = 0.0;
         int off_contact = 0;
         for (std::size_t i = 0; i < 4; ++i) {
           at[i] = sample_distance(i);
+          q[i] = {kCorners[i].x * hx, kCorners[i].y * hy};
           if (at[i] <= 0.0) continue;
-          const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
+          const double qx = q[i].x, qy = q[i].y;
           sxx += qx * qx;
           sxy += qx * qy;
           syy += qy * qy;
@@ -399,37 +386,20 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
         const double gx = det > 1e-12 * std::pow(corner, 4) ? (syy * bx - sxy * by) / det : 0.0;
         const double gy = det > 1e-12 * std::pow(corner, 4) ? (sxx * by - sxy * bx) / det : 0.0;
         const double slope = std::hypot(gx, gy);
-        if (slope <= 1e-9) {
-          linear = false;
-        } else {
+        if (slope > 1e-9) {
           const double nx = gx / slope, ny = gy / slope;  // ξ along the gradient, η across
           const double tx = -ny, ty = nx;
           double fit = 0.0, weight = 0.0;
           for (std::size_t i = 0; i < 4; ++i) {
             if (at[i] <= 0.0) continue;
-            const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
-            const double w = 0.5 * (tx * qx + ty * qy) * (tx * qx + ty * qy);
-            fit += w * (at[i] - d - gx * qx - gy * qy);
+            const double across = tx * q[i].x + ty * q[i].y;
+            const double w = 0.5 * across * across;
+            fit += w * (at[i] - d - gx * q[i].x - gy * q[i].y);
             weight += w * w;
           }
           const bool curved = off_contact >= 3 && weight > 1e-3 * std::pow(corner, 4);
-          const double kappa = curved ? fit / weight : 0.0;
-          double misfit = 0.0;
-          for (std::size_t i = 0; i < 4; ++i) {
-            if (at[i] <= 0.0) continue;
-            const double qx = kCorners[i].x * hx, qy = kCorners[i].y * hy;
-            const double w = 0.5 * (tx * qx + ty * qy) * (tx * qx + ty * qy);
-            misfit = std::max(misfit, std::abs(at[i] - d - gx * qx - gy * qy - kappa * w));
-          }
-          double bend = 0.5 * kappa / slope;
-          // A distance field has unit slope except at contact and where the closest points
-          // jump; that, corners the model misses, a sample beyond the cut-off, or a curvature
-          // radius below the cell leave the model rough.
-          if (std::abs(slope - 1.0) > kRoughness || d <= 0.0 || off_contact < 3 || misfit > kRoughness * side ||
-              std::max({at[0], at[1], at[2], at[3]}) >= cutoff || std::abs(bend) * corner > 1.0) {
-            linear = false;
-          }
-          bend = std::clamp(bend, -1.0 / corner, 1.0 / corner);
+          // A curvature radius below the cell's half-diagonal is taken as that radius.
+          const double bend = std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner, 1.0 / corner);
           // The level set ξ = level − bend·η² as chords across the cell, each moved towards
           // the parabola by 2/3 of its sagitta so that the areas balance; the convex side is
           // the intersection of the chords' half-planes.
@@ -462,7 +432,6 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     neighbours.push_back(n);
   }
   if (uniform) *uniform = true;
-  if (rough) *rough = !forbidden && !linear;
   if (forbidden) return {};
   // Cut the cell along every boundary, nearest neighbours first (their hard cores drop pieces
   // early); after a neighbour's cuts, pieces in its hard core are dropped. A distance cut only
@@ -688,16 +657,15 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
 }  // namespace
 
 std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
-                                     bool* uniform, bool* rough, CornerCache* cache) {
-  if (context.dimension == 2) return integrate_cell_plane(context, dummy, size, uniform, rough, cache);
-  if (rough) *rough = false;
+                                     bool* uniform, CornerCache* cache) {
+  if (context.dimension == 2) return integrate_cell_plane(context, dummy, size, uniform, cache);
   return integrate_cell_ball(context, dummy, size, uniform);
 }
 
 std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
                                               int depth, CornerCache* cache) {
   bool uniform = true;
-  std::vector<CellPart> parts = integrate_cell(context, dummy, size, &uniform, nullptr, cache);
+  std::vector<CellPart> parts = integrate_cell(context, dummy, size, &uniform, cache);
   if (uniform || depth <= 0) return parts;
   parts.clear();
   const int children = context.dimension == 2 ? 4 : 8;

@@ -12,8 +12,7 @@
 // along each modelled boundary (a level set as a few area-balanced chords, a sector boundary as
 // a line), nearest neighbours first, into convex pieces; each piece takes the bands of its side
 // and pieces in a hard core are dropped. Corner samples are shared between the cells that meet
-// at a corner (CornerCache). Cells where a model misses its samples (contact, a curvature radius
-// below the cell, a direction that does not turn about one pole) are reported `rough`.
+// at a corner (CornerCache).
 //
 // 3D: the cell (taken as the ball of the same measure) is cut at the estimated distance
 // |d(u) − δ| of each boundary, and several crossings combine as independent cuts.
@@ -84,10 +83,9 @@ class CornerCache {
 
 // Parts of the rectangular (box) cell of extents `size` around `dummy` with λ > 0 (hard-core
 // parts dropped; an empty result when the whole cell is hard core). `uniform` tells whether no
-// boundary crosses the cell, so that the result is exact; `rough` (2D) whether some local model
-// missed its samples.
+// boundary crosses the cell, so that the result is exact.
 std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const geometry::Vec3& size,
-                                     bool* uniform = nullptr, bool* rough = nullptr, CornerCache* cache = nullptr);
+                                     bool* uniform = nullptr, CornerCache* cache = nullptr);
 
 // integrate_cell, refined: a cell that is not uniform is split into 2^dim sub-cells, down to
 // `depth` levels; the finest cells use the cut estimate. Fractions are of the top cell.

@@ -122,7 +122,7 @@ TEST(CellPieces, SharedCornersChangeNothing) {
   for (int row = 4; row < 8; ++row) {
     for (int column = 0; column < grid_of.columns; ++column) {
       const geometry::Element e = grid_of.dummy(column, row, (row * 7 + column) % static_cast<int>(exemplar.shapes.size()));
-      const auto shared = integrate_cell(context, e, grid_of.cell, nullptr, nullptr, &cache);
+      const auto shared = integrate_cell(context, e, grid_of.cell, nullptr, &cache);
       const auto alone = integrate_cell(context, e, grid_of.cell);
       ASSERT_EQ(shared.size(), alone.size());
       for (std::size_t p = 0; p < alone.size(); ++p) {
