@@ -303,6 +303,20 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     const std::vector<int>& shapes = shapes_of[static_cast<std::size_t>(c)];
     const int m_c = static_cast<int>(shapes.size());
     const int m = options.shapes_per_location > 0 ? std::min(m_c, options.shapes_per_location) : m_c;
+    // With every shape at every location, shapes with the same proxy (copies of one drawing)
+    // measure alike: one dummy stands for all of them, its weight multiplied.
+    std::vector<std::pair<int, int>> distinct;  // (shape, copies)
+    if (m == m_c) {
+      for (const int shape : shapes) {
+        auto same = std::find_if(distinct.begin(), distinct.end(),
+                                 [&](const auto& d) { return measurer.same_proxy(d.first, shape); });
+        if (same == distinct.end()) {
+          distinct.push_back({shape, 1});
+        } else {
+          ++same->second;
+        }
+      }
+    }
     for (int cell = 0; cell < result.quadrature_cells; ++cell) {
       if (cell % (4 * count[0]) == 0) block_start.push_back(dummies.size());
       Vec3 centre = Vec3::Zero();
@@ -316,12 +330,19 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       // Data points take a small share of the tile, so that the weights still sum to |cell|.
       const double data_weight = kDataWeight * cell_measure / static_cast<double>(m);
       const double weight = (cell_measure - data_weight * static_cast<double>(inside.size())) / static_cast<double>(m);
-      for (int r = 0; r < m; ++r) {
-        Element e;
-        e.category = c;
-        e.shape = shapes[static_cast<std::size_t>((static_cast<long>(cell) * m + r) % m_c)];
-        e.position = centre;
-        dummies.push_back({e, weight, cell_measure / static_cast<double>(m) * count[0]});
+      Element e;
+      e.category = c;
+      e.position = centre;
+      if (!distinct.empty()) {
+        for (const auto& [shape, copies] : distinct) {
+          e.shape = shape;
+          dummies.push_back({e, weight * copies, cell_measure / static_cast<double>(m) * copies * count[0]});
+        }
+      } else {
+        for (int r = 0; r < m; ++r) {
+          e.shape = shapes[static_cast<std::size_t>((static_cast<long>(cell) * m + r) % m_c)];
+          dummies.push_back({e, weight, cell_measure / static_cast<double>(m) * count[0]});
+        }
       }
       for (int k : inside) {
         QuadraturePoint q;

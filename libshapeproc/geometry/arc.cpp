@@ -67,7 +67,11 @@ void append_elliptical_arc(Path2& path, const Vec2& from, double rx, double ry,
   const double rx2 = rx * rx, ry2 = ry * ry;
   const double num = rx2 * ry2 - rx2 * p.y() * p.y() - ry2 * p.x() * p.x();
   const double den = rx2 * p.y() * p.y() + ry2 * p.x() * p.x();
-  double coef = std::sqrt(std::max(0.0, num / den));
+  // End points a diameter apart (a circle drawn as two half arcs) leave num/den at rounding
+  // level, whose square root would move the centre by 1e-8 of the radius, differently for each
+  // copy of the drawing: such arcs are taken as exact half ellipses.
+  const double ratio = num / den;
+  double coef = ratio > 1e-12 ? std::sqrt(ratio) : 0.0;
   if (large_arc == sweep) coef = -coef;
   const Vec2 cp(coef * rx * p.y() / ry, -coef * ry * p.x() / rx);
   // F.6.5.3: centre in user space.

@@ -281,6 +281,40 @@ std::pair<double, double> PairMeasurer::distance_bounds(int a, int b, const Vec3
   return {lo, std::max(lo, (near_b + offset - far_a).norm())};
 }
 
+bool PairMeasurer::same_proxy(int a, int b) const {
+  if (a == b) return true;
+  const auto close = [](const auto& x, const auto& y, double tolerance) {
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if ((x[i] - y[i]).template lpNorm<Eigen::Infinity>() > tolerance) return false;
+    }
+    return true;
+  };
+  if (dimension_ == 2) {
+    const Proxy2& pa = proxies2_[static_cast<std::size_t>(a)];
+    const Proxy2& pb = proxies2_[static_cast<std::size_t>(b)];
+    const double tolerance = 1e-9 * std::max(1.0, pa.box.diagonal().norm());
+    if (pa.polylines.size() != pb.polylines.size() || pa.regions.size() != pb.regions.size() ||
+        pa.strips.size() != pb.strips.size() || pa.mass.point != pb.mass.point) {
+      return false;
+    }
+    for (std::size_t r = 0; r < pa.regions.size(); ++r) {
+      if (pa.regions[r].rings != pb.regions[r].rings || pa.regions[r].rule != pb.regions[r].rule) return false;
+    }
+    for (std::size_t k = 0; k < pa.polylines.size(); ++k) {
+      if (pa.polylines[k].closed != pb.polylines[k].closed || !close(pa.polylines[k].points, pb.polylines[k].points, tolerance)) {
+        return false;
+      }
+    }
+    return close(pa.mass.start, pb.mass.start, tolerance) && close(pa.mass.end, pb.mass.end, tolerance);
+  }
+  const Proxy3& pa = proxies3_[static_cast<std::size_t>(a)];
+  const Proxy3& pb = proxies3_[static_cast<std::size_t>(b)];
+  const double tolerance = 1e-9 * std::max(1.0, pa.box.diagonal().norm());
+  return pa.closed == pb.closed && pa.point == pb.point && pa.triangles == pb.triangles &&
+         close(pa.vertices, pb.vertices, tolerance);
+}
+
 int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack) const {
   if (dimension_ != 2) return -1;
   if (bins_.directions() == 1) return 0;

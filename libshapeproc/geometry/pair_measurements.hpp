@@ -98,6 +98,10 @@ class PairMeasurer {
   // returns -1.
   int axis_from_boxes(int a, int b, const Vec3& offset, double slack = 0.0) const;
 
+  // Whether shapes a and b have the same proxy (equal segments, or triangles, to 1e-9 of their
+  // size, in the same order): then every measurement of one equals that of the other.
+  bool same_proxy(int a, int b) const;
+
   // Every unordered pair with d < range (all pairs for an infinite range), ordered by (i, j).
   std::vector<PairRecord> all_pairs(const std::vector<Element>& elements, double range = kNoCutoff) const;
 

@@ -19,15 +19,43 @@ using BgLine = bg::model::linestring<BgPoint>;
 
 // Douglas–Peucker on an open or closed polyline. A closed ring is simplified as a linestring that
 // returns to its start, so it stays closed; if it would collapse below a triangle it is kept.
+// Of points equally far from a chord (a circle's samples are, up to rounding), the first is
+// kept: the choice must not hang on rounding, so that copies of one drawing placed anywhere get
+// the same proxy.
 std::vector<Vec2> simplify(const std::vector<Vec2>& points, bool closed, double tolerance) {
   if (points.size() <= 2 || tolerance <= 0.0) return points;
-  BgLine line;
-  for (const Vec2& p : points) line.emplace_back(p.x(), p.y());
-  if (closed) line.emplace_back(points.front().x(), points.front().y());
-  BgLine simple;
-  bg::simplify(line, simple, tolerance);
+  std::vector<Vec2> line = points;
+  if (closed) line.push_back(points.front());
+  const double tie = 1e-9 * tolerance;
+  std::vector<char> keep(line.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> spans{{0, line.size() - 1}};
+  while (!spans.empty()) {
+    const auto [first, last] = spans.back();
+    spans.pop_back();
+    if (last <= first + 1) continue;
+    const Vec2 a = line[first], chord = line[last] - a;
+    const double length2 = chord.squaredNorm();
+    double farthest = -1.0;
+    std::size_t at = first;
+    for (std::size_t i = first + 1; i < last; ++i) {
+      const Vec2 d = line[i] - a;
+      const double t = length2 > 0 ? std::clamp(d.dot(chord) / length2, 0.0, 1.0) : 0.0;
+      const double distance = (d - t * chord).norm();
+      if (distance > farthest + tie) {
+        farthest = distance;
+        at = i;
+      }
+    }
+    if (farthest <= tolerance) continue;
+    keep[at] = 1;
+    spans.push_back({at, last});
+    spans.push_back({first, at});
+  }
   std::vector<Vec2> result;
-  for (const BgPoint& p : simple) result.emplace_back(p.x(), p.y());
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (keep[i]) result.push_back(line[i]);
+  }
   if (closed) {
     if (result.size() > 1 && result.back() == result.front()) result.pop_back();
     if (result.size() < 3) return points;

@@ -1,10 +1,13 @@
 // Measurements on the shipped Hero Patterns bubbles tile: circles, so every distance is known.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/svg_reader.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::geometry {
@@ -56,6 +59,49 @@ TEST(ShippedDataMeasurements, PeriodicTileGapMatchesTheTiledExemplar) {
   }
   EXPECT_NEAR(periodic_min, 9.279, 0.01);
   EXPECT_GE(open_min, periodic_min);
+}
+
+// Copies of one drawing placed anywhere get one proxy: a circle drawn as two half arcs whose end
+// points are a diameter apart only up to rounding, and Douglas–Peucker's ties between a
+// circle's equally far samples, must not depend on where the copy lies.
+TEST(ShippedDataMeasurements, CopiesOfOneDrawingShareTheirProxy) {
+  io::ReaderOptions split;
+  split.split_subpaths = true;
+  const Scene rings = io::read_scene(testing::data_path("svg/rings.svg"), split);
+  const PairMeasurer measurer(rings, MeasurementOptions{});
+  // 19 elements: rings of radius 9 and 12 (outline and hole) and dots of radius 2.5.
+  std::vector<int> representatives;
+  for (int s = 0; s < static_cast<int>(rings.shapes.size()); ++s) {
+    const bool known = std::any_of(representatives.begin(), representatives.end(), [&](int r) { return measurer.same_proxy(r, s); });
+    if (!known) representatives.push_back(s);
+  }
+  EXPECT_EQ(representatives.size(), 3u);
+  // Same proxy, same measurements; different drawings differ.
+  const Vec3 offset(31.0, 7.5, 0.0);
+  for (int s = 0; s < static_cast<int>(rings.shapes.size()); ++s) {
+    for (int r : representatives) {
+      if (!measurer.same_proxy(r, s)) continue;
+      EXPECT_NEAR(measurer.distance(s, 0, offset), measurer.distance(r, 0, offset), 1e-9);
+      EXPECT_NEAR(measurer.direction(s, 0, offset).x(), measurer.direction(r, 0, offset).x(), 1e-9);
+    }
+  }
+  EXPECT_FALSE(measurer.same_proxy(representatives[0], representatives[1]));
+
+  // The same circle as <circle> and as arcs from a start point, at positions whose sums round.
+  const Scene circles = io::parse_svg(
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 300 300'>"
+      "<path d='M116.12 30.294a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8z'/>"
+      "<path d='M171.134 89.246a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8z'/>"
+      "<path d='M82.719 153.452a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8z'/>"
+      "<circle cx='20.3' cy='40.7' r='7.25'/><circle cx='251.9' cy='199.03' r='7.25'/>"
+      "<circle cx='120.01' cy='260.77' r='7.3'/></svg>",
+      "circles.svg", {});
+  const PairMeasurer circle_measurer(circles, MeasurementOptions{});
+  EXPECT_TRUE(circle_measurer.same_proxy(0, 1));
+  EXPECT_TRUE(circle_measurer.same_proxy(0, 2));
+  EXPECT_TRUE(circle_measurer.same_proxy(3, 4));
+  EXPECT_FALSE(circle_measurer.same_proxy(3, 5));
+  EXPECT_FALSE(circle_measurer.same_proxy(0, 3));
 }
 
 }  // namespace
