@@ -271,7 +271,7 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       if (fresh) it->second = measure();
       return it->second;
     };
-    PlaneNeighbour n{cb, measurer.axis_from_boxes(dummy.shape, other.shape, offset, corner), d,
+    PlaneNeighbour n{cb, measurer.certain_axis(dummy.shape, other.shape, offset, corner), d,
                      static_cast<int>(cuts.size()), 0};
     std::uint64_t axes = 0;  // axes whose thresholds matter in the cell
     if (n.axis < 0 && (exact ? !any_within(d - corner, d + corner) : true)) {

@@ -342,6 +342,41 @@ int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack
   return static_cast<int>(((first % half) + half) % half);
 }
 
+int PairMeasurer::certain_axis(int a, int b, const Vec3& offset, double slack) const {
+  const int from_boxes = axis_from_boxes(a, b, offset, slack);
+  if (from_boxes >= 0 || dimension_ != 2) return from_boxes;
+  constexpr double kPi = 3.14159265358979323846;
+  // Where the direction may point: about the line of centres within the angle the slack
+  // subtends, and the strayed angle.
+  Vec2 line;
+  double stray = 0.0;
+  if (options_.direction == DirectionKind::centroid) {
+    line = offset.head<2>();
+  } else {
+    const MassBoundary2& ma = proxies2_[static_cast<std::size_t>(a)].mass;
+    const MassBoundary2& mb = proxies2_[static_cast<std::size_t>(b)].mass;
+    if (ma.point || mb.point) return -1;
+    line = mb.centroid + offset.head<2>() - ma.centroid;
+    const double nearest = line.norm() - slack;
+    // Only where the force is the pair's expansion (accurate to 1e-6), see gravitation_force.
+    if (!(nearest > 0) || (ma.radius + mb.radius) / nearest > 0.45) return -1;
+    const PairExpansion* pair = a <= b ? expansion(a, b) : expansion(b, a);
+    if (pair == nullptr) return -1;
+    const double deviation = monopole_deviation(*pair, ma.radius + mb.radius, nearest) + 1e-5;
+    if (deviation >= 1.0) return -1;
+    stray = std::asin(deviation);
+  }
+  const double length = line.norm();
+  if (!(length > slack)) return -1;
+  const double spread = std::asin(slack / length) + stray + 1e-9;
+  const double middle = std::atan2(line.y(), line.x());
+  const double step = 2 * kPi / bins_.directions();
+  const long first = std::lround((middle - spread) / step), last = std::lround((middle + spread) / step);
+  if (first != last) return -1;
+  const long half = bins_.directions() / 2;
+  return static_cast<int>(((first % half) + half) % half);
+}
+
 Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
   // Canonical order, so that swapping the pair negates the result bit for bit.
   if (a > b || (a == b && lexicographically_negative(offset))) return -direction(b, a, -offset);

@@ -97,6 +97,11 @@ class PairMeasurer {
   // offset within `slack` of the given one (the difference box is grown by it). 3D always
   // returns -1.
   int axis_from_boxes(int a, int b, const Vec3& offset, double slack = 0.0) const;
+  // The axis bin of direction(a, b, o) for every o within `slack` of `offset`, when it is
+  // certain, else -1 (2D): axis_from_boxes, or, for gravitation between regions whose circles
+  // stay well apart, the pair's multipole bound on how far the direction strays from the line of
+  // centroids (monopole_deviation), widened by the angle `slack` subtends there.
+  int certain_axis(int a, int b, const Vec3& offset, double slack) const;
 
   // Whether shapes a and b have the same proxy (equal segments, or triangles, to 1e-9 of their
   // size, in the same order): then every measurement of one equals that of the other.

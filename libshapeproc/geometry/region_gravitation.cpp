@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <complex>
 #include <vector>
 
@@ -255,7 +256,26 @@ PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
       pair.g[static_cast<std::size_t>(moment_index(k, l))] = c.alpha[k] * c.alpha[l] * sum;
     }
   }
+  pair.order_bound.assign(kMomentOrder + 1, 0.0);
+  for (int total = 0; total <= kMomentOrder; ++total) {
+    for (int l = 0; l <= total; ++l) {
+      pair.order_bound[static_cast<std::size_t>(total)] +=
+          (2.0 * l + 1.0) * std::abs(pair.g[static_cast<std::size_t>(moment_index(total - l, l))]);
+    }
+  }
   return pair;
+}
+
+double monopole_deviation(const PairExpansion& pair, double radii, double distance) {
+  const double s = radii / distance;
+  const double monopole = pair.order_bound.empty() ? 0.0 : pair.order_bound[0];
+  if (!(s < 0.9) || !(monopole > 0.0)) return std::numeric_limits<double>::infinity();
+  // Orders 1..p from the table, by Horner in 1/|R|; beyond p, terms of order n are at most
+  // (n + 1) s^n of the first (the potential's at most s^n, differentiation adds n + 1).
+  double sum = 0.0;
+  for (int n = kMomentOrder; n >= 1; --n) sum = (sum + pair.order_bound[static_cast<std::size_t>(n)]) / distance;
+  const double tail = (kMomentOrder + 2.0) * std::pow(s, kMomentOrder + 1) / ((1 - s) * (1 - s));
+  return sum / monopole + tail;
 }
 
 namespace {

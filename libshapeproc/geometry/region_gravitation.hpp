@@ -59,8 +59,17 @@ struct MassBoundary2 {
 // terms of total order n at most ((r_A + r_B)/|R|)^n.
 struct PairExpansion {
   std::vector<std::complex<double>> g;  // G_kl, moment_index layout
+  // Σ_l (2l + 1) |G_{n−l,l}| per total order n: the force's order-n terms are at most this
+  // over |R|^{n+2}.
+  std::vector<double> order_bound;
 };
 PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b);
+
+// A bound on |F − F_0| / |F_0| for every centroid distance |R| ≥ `distance`, where F_0 is the
+// expansion's first term (along the line of centroids) and `radii` = r_A + r_B: the sum of the
+// higher orders' bounds plus the truncated tail's. Infinity unless radii/distance < 0.9. The
+// direction of F is then within asin of it of the line of centroids.
+double monopole_deviation(const PairExpansion& pair, double radii, double distance);
 
 // F(A, B) with B moved by `offset`. Regions whose circles about their centroids are far apart
 // relative to their radii use the pair's expansion (when given; else the second-order far field

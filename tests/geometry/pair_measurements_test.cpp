@@ -241,6 +241,46 @@ TEST(Gravitation, WithinOneDegreeOfDenseBruteForce) {
   expect_near_brute_force({ring(5, 3), disc(1)}, {{0, 0}, {1, 0.5}}, "dot off-centre in a ring's hole");
 }
 
+// certain_axis promises the axis of every offset within the slack: check it on random shapes,
+// offsets and slacks against the direction measured at points of the slack's disc (and count
+// that the multipole bound decides beyond the boxes' cone).
+TEST(Gravitation, CertainAxisHoldsOverItsDisc) {
+  std::mt19937 rng(7);
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  for (int k = 0; k < 6; ++k) {
+    shapes.push_back(random_polygon(rng, 5 + k, 2.0 + 0.5 * k));
+    positions.push_back({12.0 * k, 0.0});
+  }
+  shapes.push_back(planar({rectangle(-4, -0.5, 4, 0.5)}));
+  positions.push_back({100, 0});
+  const Scene scene = scene_of(shapes, positions);
+  const PairMeasurer measurer(scene, MeasurementOptions{});
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int decided = 0, beyond_boxes = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int a = static_cast<int>(rng() % shapes.size()), b = static_cast<int>(rng() % shapes.size());
+    const double angle = 2 * kPi * unit(rng), distance = 8.0 + 40.0 * unit(rng), slack = 4.0 * unit(rng);
+    const Vec3 offset(distance * std::cos(angle), distance * std::sin(angle), 0.0);
+    const int axis = measurer.certain_axis(a, b, offset, slack);
+    if (axis < 0) continue;
+    ++decided;
+    if (measurer.axis_from_boxes(a, b, offset, slack) < 0) ++beyond_boxes;
+    for (int k = 0; k < 24; ++k) {
+      const double r = slack * std::sqrt(unit(rng)), t = 2 * kPi * unit(rng);
+      const Vec3 o = offset + Vec3(r * std::cos(t), r * std::sin(t), 0.0);
+      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
+    }
+    // The disc's rim, where the angle strays most.
+    for (int k = 0; k < 16; ++k) {
+      const Vec3 o = offset + slack * Vec3(std::cos(k * kPi / 8), std::sin(k * kPi / 8), 0.0);
+      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
+    }
+  }
+  EXPECT_GT(decided, 1000);
+  EXPECT_GT(beyond_boxes, 300);
+}
+
 TEST(Gravitation, DiffersFromCentroidsForElongatedShapes) {
   // Paper Fig. 3: two long bars side by side, offset along their length: the centroid direction
   // is slanted, the gravitation direction is closer to perpendicular.
