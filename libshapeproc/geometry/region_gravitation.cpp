@@ -102,18 +102,13 @@ GaussTable gauss_legendre(int n) {
   return table;
 }
 
-// α_k = C(2k, k) / 4^k and the binomial coefficients up to kMomentOrder.
+// α_k = C(2k, k) / 4^k up to kMomentOrder.
 struct ExpansionConstants {
   std::array<double, kMomentOrder + 1> alpha{};
-  std::array<std::array<double, kMomentOrder + 1>, kMomentOrder + 1> binomial{};
   GaussTable moment_rule = gauss_legendre(kMomentOrder / 2 + 1);  // exact for degree kMomentOrder + 1
   ExpansionConstants() {
     alpha[0] = 1.0;
     for (int k = 1; k <= kMomentOrder; ++k) alpha[k] = alpha[k - 1] * (2 * k - 1) / (2 * k);
-    for (int n = 0; n <= kMomentOrder; ++n) {
-      binomial[n][0] = binomial[n][n] = 1.0;
-      for (int k = 1; k < n; ++k) binomial[n][k] = binomial[n - 1][k - 1] + binomial[n - 1][k];
-    }
   }
 };
 
@@ -238,7 +233,21 @@ void MassBoundary2::finish() {
 
 PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
   // 1/|R + w| with w = ξ − y (ξ about A's centroid, y about B's): the binomial expansion of
-  // w^k w̄^l in the moments of both, G_kl = α_k α_l Σ C(k, i) C(l, j) (−1)^{i+j} M^A_ij M^B_{k−i, l−j}.
+  // w^k w̄^l in the moments of both, G_kl = α_k α_l Σ C(k, i) C(l, j) (−1)^{i+j} M^A_ij M^B_{k−i, l−j},
+  // computed as α_k α_l k! l! Σ a_ij b_{k−i, l−j} with a_ij = (−1)^{i+j} M^A_ij / (i! j!) and
+  // b_ij = M^B_ij / (i! j!), so that the inner sum is one complex product per term.
+  std::array<double, kMomentOrder + 1> factorial{};
+  factorial[0] = 1.0;
+  for (int k = 1; k <= kMomentOrder; ++k) factorial[k] = factorial[k - 1] * k;
+  std::array<std::array<Complex, kMomentOrder + 1>, kMomentOrder + 1> scaled_a{}, scaled_b{};
+  for (int i = 0; i <= kMomentOrder; ++i) {
+    for (int j = 0; i + j <= kMomentOrder; ++j) {
+      const double scale = 1.0 / (factorial[i] * factorial[j]);
+      const double sign = (i + j) % 2 == 0 ? 1.0 : -1.0;
+      scaled_a[i][j] = sign * scale * a.complex_moments[moment_index(i, j)];
+      scaled_b[i][j] = scale * b.complex_moments[moment_index(i, j)];
+    }
+  }
   const ExpansionConstants& c = constants();
   PairExpansion pair;
   pair.g.assign(kMomentCount, Complex(0.0, 0.0));
@@ -247,13 +256,9 @@ PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
       const int k = total - l;
       Complex sum = 0.0;
       for (int i = 0; i <= k; ++i) {
-        for (int j = 0; j <= l; ++j) {
-          const double sign = (i + j) % 2 == 0 ? 1.0 : -1.0;
-          sum += sign * c.binomial[k][i] * c.binomial[l][j] * a.complex_moments[moment_index(i, j)] *
-                 b.complex_moments[moment_index(k - i, l - j)];
-        }
+        for (int j = 0; j <= l; ++j) sum += scaled_a[i][j] * scaled_b[k - i][l - j];
       }
-      pair.g[static_cast<std::size_t>(moment_index(k, l))] = c.alpha[k] * c.alpha[l] * sum;
+      pair.g[static_cast<std::size_t>(moment_index(k, l))] = c.alpha[k] * c.alpha[l] * factorial[k] * factorial[l] * sum;
     }
   }
   pair.order_bound.assign(kMomentOrder + 1, 0.0);
