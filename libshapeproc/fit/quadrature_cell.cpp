@@ -218,7 +218,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
     const int ca = dummy.category, cb = other.category;
     const double reach = interaction.max_range(ca, cb);
-    const auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
+    const auto bounds = measurer.distance_bounds(dummy.shape, other.shape, offset);
+    // The circles about the reference positions may bound d better than the boxes (round shapes).
+    const double lo = std::max(bounds.first, candidate.gap), hi = bounds.second;
     if (lo >= reach + corner) continue;
     const double hard_core = interaction.min_hard_core(ca, cb);
     if (hi + corner < hard_core) {
