@@ -267,7 +267,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   // counting weights (equal shares) do at practical resolutions.
   clock = std::chrono::steady_clock::now();
   const geometry::Vec3 sizes = region.sizes();
-  const int cells_along = options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 32);
+  const int cells_along = options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 48);
   const double longest = sizes.head(dimension).maxCoeff();
   std::array<int, 3> count{1, 1, 1};
   double cell_measure = 1.0;

@@ -1,4 +1,4 @@
-// 2D proxies: flattening, Douglas–Peucker through Boost.Geometry, region tests, mass cubature.
+// 2D proxies: flattening, Douglas–Peucker, region tests, mass cubature (strips through Boost.Geometry).
 #include <cmath>
 #include <cstdlib>
 

@@ -76,7 +76,7 @@ void FitFlags::add_to(CLI::App& command) {
       ->check(CLI::IsMember({"none", "periodic", "border"}))
       ->capture_default_str();
   add_measurement_kind_options(command, distance, direction);
-  command.add_option("--quadrature", quadrature, "quadrature cells along the window's longest side (default 32 in 2D, 8 in 3D)")
+  command.add_option("--quadrature", quadrature, "quadrature cells along the window's longest side (default 48 in 2D, 8 in 3D)")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--shapes-per-location", shapes_per_location,
                      "shapes crossed with each quadrature location, in rotation (default: all)")
