@@ -12,6 +12,17 @@ namespace shapeproc::geometry {
 
 namespace {
 
+// The axis of the 2D direction sector holding every angle in [lowest, highest] (radians, an
+// interval shorter than a turn), or -1 when the interval meets two sectors.
+int axis_of_angles(const DirectionBins& bins, double lowest, double highest) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double step = 2 * kPi / bins.directions();
+  const long first = std::lround(lowest / step), last = std::lround(highest / step);
+  if (first != last) return -1;
+  const long half = bins.directions() / 2;
+  return static_cast<int>(((first % half) + half) % half);
+}
+
 // Lexicographic sign of a vector: the canonical order of a pair uses it when both shapes are
 // the same.
 bool lexicographically_negative(const Vec3& v) {
@@ -147,15 +158,15 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
     if (breakpoints == nullptr || breakpoints->empty()) {
       outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments));
     } else {
-      const std::vector<double>& b = *breakpoints;
-      const auto positive = std::upper_bound(b.begin(), b.end(), 0.0);
-      first_positive = positive == b.end() ? kNoCutoff : *positive;
+      const std::vector<double>& marks = *breakpoints;
+      const auto positive = std::upper_bound(marks.begin(), marks.end(), 0.0);
+      first_positive = positive == marks.end() ? kNoCutoff : *positive;
       // Prune below the breakpoint under the best distance so far: nothing there can move the
       // result into another interval.
       auto floor = [&](double best_squared) {
         const double best = std::sqrt(best_squared);
-        const auto above = std::upper_bound(b.begin(), b.end(), best);
-        if (above == b.begin()) return 0.0;
+        const auto above = std::upper_bound(marks.begin(), marks.end(), best);
+        if (above == marks.begin()) return 0.0;
         const double low = *(above - 1);
         return low * low;
       };
@@ -335,17 +346,12 @@ int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack
     lowest = std::min(lowest, delta);
     highest = std::max(highest, delta);
   }
-  const double step = 2 * kPi / bins_.directions();
-  const long first = std::lround((middle + lowest) / step), last = std::lround((middle + highest) / step);
-  if (first != last) return -1;
-  const long half = bins_.directions() / 2;
-  return static_cast<int>(((first % half) + half) % half);
+  return axis_of_angles(bins_, middle + lowest, middle + highest);
 }
 
 int PairMeasurer::certain_axis(int a, int b, const Vec3& offset, double slack) const {
   const int from_boxes = axis_from_boxes(a, b, offset, slack);
   if (from_boxes >= 0 || dimension_ != 2) return from_boxes;
-  constexpr double kPi = 3.14159265358979323846;
   // Where the direction may point: about the line of centres within the angle the slack
   // subtends, and the strayed angle.
   Vec2 line;
@@ -370,11 +376,7 @@ int PairMeasurer::certain_axis(int a, int b, const Vec3& offset, double slack) c
   if (!(length > slack)) return -1;
   const double spread = std::asin(slack / length) + stray + 1e-9;
   const double middle = std::atan2(line.y(), line.x());
-  const double step = 2 * kPi / bins_.directions();
-  const long first = std::lround((middle - spread) / step), last = std::lround((middle + spread) / step);
-  if (first != last) return -1;
-  const long half = bins_.directions() / 2;
-  return static_cast<int>(((first % half) + half) % half);
+  return axis_of_angles(bins_, middle - spread, middle + spread);
 }
 
 Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
