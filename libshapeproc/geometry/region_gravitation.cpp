@@ -175,13 +175,13 @@ void MassBoundary2::add_edge(const Vec2& a, const Vec2& b, const Vec2& outward_n
   start.push_back(a);
   end.push_back(b);
   normal.push_back(outward_normal);
-  const double length = (b - a).norm();
+  const double edge_length = (b - a).norm();
   const double c = a.dot(outward_normal);  // x·n is constant along the edge
-  area += 0.5 * c * length;                // ∫_A 1 = ½ ∮ x·n
-  centroid += (c * length / 3.0) * (0.5 * (a + b));  // ∫_A x = ⅓ ∮ x (x·n)
+  area += 0.5 * c * edge_length;           // ∫_A 1 = ½ ∮ x·n
+  centroid += (c * edge_length / 3.0) * (0.5 * (a + b));  // ∫_A x = ⅓ ∮ x (x·n)
   // ∫_A x x^T = ¼ ∮ x x^T (x·n), the edge integral by Simpson's rule (exact for quadratics).
   const Vec2 m = 0.5 * (a + b);
-  moments += (c * length / 24.0) * (a * a.transpose() + 4.0 * m * m.transpose() + b * b.transpose());
+  moments += (c * edge_length / 24.0) * (a * a.transpose() + 4.0 * m * m.transpose() + b * b.transpose());
 }
 
 void MassBoundary2::finish() {
@@ -198,8 +198,12 @@ void MassBoundary2::finish() {
     moments -= area * centroid * centroid.transpose();  // about the centroid
   }
   radius = 0.0;
+  unit.assign(start.size(), Vec2::Zero());
+  length.assign(start.size(), 0.0);
   for (std::size_t i = 0; i < start.size(); ++i) {
     radius = std::max({radius, (start[i] - centroid).norm(), (end[i] - centroid).norm()});
+    length[i] = (end[i] - start[i]).norm();
+    if (length[i] > 0) unit[i] = (end[i] - start[i]) / length[i];
   }
   // M_kl = ∫ z^k z̄^l dA = 1/(2(l + 1)) ∮ n z^k z̄^{l+1} ds (complex Green's theorem with
   // dz = i n ds on the positively oriented boundary); the edge integrands are polynomials of
@@ -207,8 +211,7 @@ void MassBoundary2::finish() {
   const ExpansionConstants& c = constants();
   std::array<Complex, kMomentOrder + 2> power, conjugate;
   for (std::size_t i = 0; i < start.size(); ++i) {
-    const double length = (end[i] - start[i]).norm();
-    if (length == 0.0) continue;
+    if (length[i] == 0.0) continue;
     const Complex n(normal[i].x(), normal[i].y());
     for (std::size_t g = 0; g < c.moment_rule.x.size(); ++g) {
       const Vec2 y = start[i] + c.moment_rule.x[g] * (end[i] - start[i]) - centroid;
@@ -218,7 +221,7 @@ void MassBoundary2::finish() {
         power[k] = power[k - 1] * z;
         conjugate[k] = std::conj(power[k]);
       }
-      const Complex weight = c.moment_rule.w[g] * length * n;
+      const Complex weight = c.moment_rule.w[g] * length[i] * n;
       for (int total = 0; total <= kMomentOrder; ++total) {
         for (int l = 0; l <= total; ++l) {
           complex_moments[moment_index(total - l, l)] += weight * power[total - l] * conjugate[l + 1];
@@ -317,33 +320,19 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
     }
     return a_is_point ? towards_region : Vec2(-towards_region);
   }
+  // A's edges are taken into B's frame (moved by −offset), so B's edges are used as they are.
   Vec2 total = Vec2::Zero();
   const std::size_t nb = b.start.size();
-  std::vector<Vec2> b_start, b_unit;  // B's edges moved, filled when an edge of A needs them
-  std::vector<double> b_length;
-  auto prepare_edges = [&] {
-    if (!b_start.empty() || nb == 0) return;
-    b_start.resize(nb);
-    b_unit.resize(nb);
-    b_length.resize(nb);
-    for (std::size_t j = 0; j < nb; ++j) {
-      b_start[j] = b.start[j] + offset;
-      const Vec2 edge = b.end[j] - b.start[j];
-      b_length[j] = edge.norm();
-      b_unit[j] = b_length[j] > 0 ? Vec2(edge / b_length[j]) : Vec2::Zero();
-    }
-  };
-  const Vec2 centre_b = b.centroid + offset;
   for (std::size_t i = 0; i < a.start.size(); ++i) {
-    const Vec2 ai = a.start[i], edge_i = a.end[i] - a.start[i];
-    const double length_i = edge_i.norm();
+    const double length_i = a.length[i];
     if (length_i == 0) continue;
+    const Vec2 ai = a.start[i] - offset, edge_i = length_i * a.unit[i];
     double integral = 0.0;  // the mean of Φ_B along edge i
     // Edges well outside B's circle: Φ_B from B's expansion, Gauss–Legendre along the edge with
     // more points the closer the edge (Φ_B is analytic outside B).
     bool expanded = false;
     if (expansions) {
-      const double gap = point_segment_distance(centre_b, ai, a.end[i]);
+      const double gap = point_segment_distance(b.centroid, ai, ai + edge_i);
       const double s = b.radius / gap, room = (gap - b.radius) / length_i;
       const int order = expansion_order(s, [&](int) { return 1.0 / (1 - s); });
       const GaussRule& g = room > 6 ? kRules[1] : room > 1.5 ? kRules[2] : kRules[3];
@@ -351,31 +340,48 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       // point against one edge-pair term per edge of B.
       if (s < 0.6 && room > 0.4 && order >= 0 && g.n * (order + 1) * (order + 2) < 4 * static_cast<int>(nb)) {
         for (int k = 0; k < g.n; ++k) {
-          const Vec2 x = ai + g.x[k] * edge_i - centre_b;
+          const Vec2 x = ai + g.x[k] * edge_i - b.centroid;
           integral += g.w[k] * expanded_potential(b, Complex(x.x(), x.y()), order);
         }
         expanded = true;
       }
     }
     if (!expanded) {
-      prepare_edges();
       const Vec2 mid_i = ai + 0.5 * edge_i;
       for (std::size_t j = 0; j < nb; ++j) {
-        if (b_length[j] == 0) continue;
-        const Vec2 mid_j = b_start[j] + 0.5 * b_length[j] * b_unit[j];
-        const Vec2 between_mids = mid_j - mid_i;
+        const double length_j = b.length[j];
+        if (length_j == 0) continue;
+        const Vec2 between_mids = b.start[j] + 0.5 * length_j * b.unit[j] - mid_i;
         const double gap = between_mids.norm();
-        const double ratio = gap / (length_i + b_length[j]);
-        if (ratio > 4.0) {
+        const double ratio = gap / (length_i + length_j);
+        if (ratio > 8.0) {
           // Far apart: midpoint rule for both integrals, h_j(m_i) ℓ_j / |m_j − m_i| (relative error
-          // below (1/4)^2 / 24).
-          integral += between_mids.dot(b.normal[j]) * b_length[j] / gap;
+          // below (1/8)^2 / 24).
+          integral += between_mids.dot(b.normal[j]) * length_j / gap;
           continue;
         }
-        const GaussRule& g = ratio > 1.5 ? kRules[1] : ratio > 0.7 ? kRules[2] : kRules[3];
         double sum = 0.0;
+        if (ratio > 1.0) {
+          // Apart: two Gauss points on each edge for h_j(x)/|y − x| (no logarithm). On near pairs
+          // of 12- and 16-gons a force takes 5.7 µs against 8.2 µs with the exact integral along
+          // edge j from two points on edge i, and its median angle error is 1e-5 rad instead of
+          // 1.4e-4 (the midpoint rule served from ratio 4 on then; the 90th percentile, 1e-4 rad,
+          // comes from the nearest edges).
+          for (int k = 0; k < 2; ++k) {
+            const Vec2 x = ai + kRules[1].x[k] * edge_i;
+            const double h = (b.start[j] - x).dot(b.normal[j]);
+            for (int m = 0; m < 2; ++m) {
+              const Vec2 y = b.start[j] + (kRules[1].x[m] * length_j) * b.unit[j];
+              sum += h / (y - x).norm();
+            }
+          }
+          integral += 0.25 * length_j * sum;
+          continue;
+        }
+        // Near: Gauss–Legendre along edge i of the exact integral along edge j.
+        const GaussRule& g = ratio > 0.7 ? kRules[2] : kRules[3];
         for (int k = 0; k < g.n; ++k) {
-          sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b_start[j], b_unit[j], b_length[j], b.normal[j]);
+          sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b.start[j], b.unit[j], length_j, b.normal[j]);
         }
         integral += sum;
       }

@@ -40,6 +40,8 @@ constexpr int kMomentCount = moment_index(0, kMomentOrder) + 1;
 // point mass (no edges).
 struct MassBoundary2 {
   std::vector<Vec2> start, end, normal;
+  std::vector<Vec2> unit;      // (end − start)/length, zero for an empty edge (set by finish())
+  std::vector<double> length;  // |end − start| (set by finish())
   double area = 0.0;
   Vec2 centroid = Vec2::Zero();
   Eigen::Matrix2d moments = Eigen::Matrix2d::Zero();  // ∫ (x − c)(x − c)^T dA

@@ -1,6 +1,7 @@
 // The multipole expansions of 2D gravitation (region_gravitation.hpp) against the edge-pair
 // boundary integral on polygons whose edges are cut into 64 collinear pieces (its quadrature error
-// shrinks with the edges' length: about 1e-5 there, up to 1.5% on the uncut polygons of the test).
+// shrinks with the square of the edges' length: below 2e-5 there, against a 2D cubature of the
+// kernel over the polygons' triangles; up to 2e-3 on the uncut polygons of the last test).
 #include <cmath>
 #include <complex>
 #include <random>
@@ -57,7 +58,9 @@ TEST(GravitationExpansion, MomentsOfASquareAreExact) {
 
 TEST(GravitationExpansion, PairExpansionMatchesTheBoundaryIntegral) {  // NOLINT
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(2.0, 5.0);
+  // From 2.1 on: about twice the radii and nearer, the expansion would need more than
+  // kMomentOrder terms and the edges answer instead (the last test).
+  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(2.1, 5.0);
   for (int trial = 0; trial < 20; ++trial) {
     const int ca = 5 + trial % 7, cb = 4 + trial % 5;
     std::mt19937 copy = rng;
@@ -69,10 +72,10 @@ TEST(GravitationExpansion, PairExpansionMatchesTheBoundaryIntegral) {  // NOLINT
     const Vec2 offset = a.centroid - b.centroid +
                         spread(rng) * (a.radius + b.radius) * Vec2(std::cos(phi), std::sin(phi));
     const Vec2 reference = gravitation_force_edges(fine_a, fine_b, offset);
-    EXPECT_LT(relative(gravitation_force(a, b, offset, &pair), reference), 5e-5) << trial;
+    EXPECT_LT(relative(gravitation_force(a, b, offset, &pair), reference), 3e-5) << trial;
     // Antisymmetric up to rounding.
     const PairExpansion back = pair_expansion(b, a);
-    EXPECT_LT(relative(gravitation_force(b, a, -offset, &back), -reference), 5e-5) << trial;
+    EXPECT_LT(relative(gravitation_force(b, a, -offset, &back), -reference), 3e-5) << trial;
   }
 }
 
