@@ -36,6 +36,10 @@ struct FitOptions {
   // 2D only: integrate each row of cells as a line, exactly along the row (line_quadrature.hpp);
   // costlier than cells at the same resolution, see docs/fit.md.
   bool lines = false;
+  // The data points join the quadrature with this fraction of |W| per category (each κ|W|/n_c,
+  // the dummies the rest): every observed configuration then has some exposure, so the maximum
+  // is finite even where the continuum LPL has none (packed exemplars, docs/fit.md).
+  double data_weight = 1e-6;
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;

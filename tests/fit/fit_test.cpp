@@ -251,5 +251,39 @@ TEST(FitSpecialCases, CopiesOfAShapeAreIntegratedOnce) {
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-3 * std::max(1.0, a[k])) << k;
 }
 
+// The existence check. A packed exemplar (dashes-rows: no room for another dash with the
+// neighbourhoods the dashes have) has no finite maximum without the data points' share of the
+// quadrature: every γ moves with that share and is marked unbounded, and since the share does
+// not shrink with the cells the estimates still settle as the quadrature is refined (48 against
+// 96 cells: within 2.2% where the share used to shrink with the cells and the estimates doubled).
+// An exemplar with a maximum (dots-random) is not marked, and a hundredth of the share moves
+// nothing by more than 0.1%.
+TEST(FitExistence, PackedExemplarsFollowTheDataShareAndSettle) {
+  const Scene dashes = io::read_scene(testing::data_path("svg/dashes-rows.svg"), {});
+  FitOptions options;
+  const FitResult coarse = fit_shape_process(dashes, options);
+  options.quadrature = 96;
+  const FitResult fine = fit_shape_process(dashes, options);
+  EXPECT_FALSE(coarse.notes.empty());
+  for (const auto& pair : coarse.model.interactions)
+    for (const auto& axis : pair.axes)
+      for (auto status : axis.status) EXPECT_EQ(status, model::ParameterStatus::unbounded);
+  EXPECT_NEAR(coarse.model.categories[0].beta / fine.model.categories[0].beta, 1.0, 0.05);
+  const auto a = gammas(coarse), b = gammas(fine);
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k] / b[k], 1.0, 0.05) << k;
+
+  const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  options.quadrature = 24;
+  const FitResult usual = fit_shape_process(dots, options);
+  options.data_weight /= 100;
+  const FitResult smaller = fit_shape_process(dots, options);
+  EXPECT_NEAR(usual.model.categories[0].beta / smaller.model.categories[0].beta, 1.0, 1e-3);
+  const auto c = gammas(usual), d = gammas(smaller);
+  for (std::size_t k = 0; k < c.size(); ++k) EXPECT_NEAR(c[k] / d[k], 1.0, 1e-3) << k;
+  for (const auto& pair : usual.model.interactions)
+    for (const auto& axis : pair.axes)
+      for (auto status : axis.status) EXPECT_NE(status, model::ParameterStatus::unbounded);
+}
+
 }  // namespace
 }  // namespace shapeproc::fit

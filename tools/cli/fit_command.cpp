@@ -87,6 +87,9 @@ void FitFlags::add_to(CLI::App& command) {
       ->check(CLI::Range(0, 6));
   command.add_option("--proxy-tolerance", proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
       ->capture_default_str();
+  command.add_option("--data-weight", data_weight,
+                     "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
+      ->capture_default_str();
 }
 
 fit::FitOptions FitFlags::options() const {
@@ -103,6 +106,8 @@ fit::FitOptions FitFlags::options() const {
   o.lines = lines;
   if (!(proxy_tolerance >= 0 && proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
   o.proxy_tolerance = proxy_tolerance;
+  if (!(data_weight >= 0 && data_weight < 1)) throw io::UsageError("--data-weight must be in [0, 1)");
+  o.data_weight = data_weight;
   return o;
 }
 
@@ -110,7 +115,7 @@ nlohmann::json FitFlags::to_json() const {
   return {{"directions", directions}, {"quantiles", quantiles}, {"thresholds", thresholds}, {"edge", edge},
           {"distance", distance}, {"direction", direction}, {"quadrature", quadrature},
           {"shapes_per_location", shapes_per_location}, {"refine", refine}, {"lines", lines},
-          {"proxy_tolerance", proxy_tolerance}};
+          {"proxy_tolerance", proxy_tolerance}, {"data_weight", data_weight}};
 }
 
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {

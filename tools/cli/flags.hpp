@@ -31,6 +31,7 @@ struct FitFlags {
   int refine = 0;
   bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+  double data_weight = fit::FitOptions{}.data_weight;
 
   void add_to(CLI::App& command);
   fit::FitOptions options() const;  // throws io::UsageError
