@@ -61,6 +61,8 @@ TEST(Cli, NonsenseFlags) {
   expect_one_line_error(run_cli({"info", data("points/clusters.csv"), "--window", "0,1,2"}), 2, "--window");
   expect_one_line_error(run_cli({"info", data("mesh/pebbles.obj"), "--split", "faces"}), 2, "--split");
   expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg")}), 2, "--output");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "--data-weight", "1", "-o", "unused.json"}), 2,
+                        "--data-weight");
 }
 
 TEST(Cli, InfoTextAndJson) {
