@@ -513,9 +513,10 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
                                                                                    : std::numeric_limits<double>::quiet_NaN();
   }
   if (follows_share) {
-    result.notes.push_back("the pseudo-likelihood has no finite maximum without the data points' share of the quadrature "
-                           "(a packed exemplar: no room for another element with the observed neighbourhoods); the estimates "
-                           "follow that share (--data-weight), and parameters that move with it are marked unbounded");
+    result.notes.push_back("the pseudo-likelihood has no finite maximum without the data points' share of the quadrature: "
+                           "no region of the window offers another element the neighbourhoods the elements have (a packed "
+                           "exemplar, or one whose statistics are separated); the estimates follow that share (--data-weight), "
+                           "and parameters that move with it are marked unbounded");
   }
   bool unbounded = false;
   for (model::ParameterStatus status : mple.status) unbounded = unbounded || status == model::ParameterStatus::unbounded;
