@@ -453,8 +453,10 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   result.quadrature_lines = lines;
   result.quadrature_points = static_cast<int>(design.points.size());
   // The same quadrature with ten times the data points' share (the existence check below).
-  PseudoLikelihoodDesign heavier = design;
-  {
+  const bool check_existence = options.data_weight > 0 && kExistenceFactor * options.data_weight < 1;
+  PseudoLikelihoodDesign heavier;
+  if (check_existence) {
+    heavier = design;
     const double dummy_scale = (1 - kExistenceFactor * options.data_weight) / (1 - options.data_weight);
     for (std::size_t i = 0; i < heavier.points.size(); ++i) heavier.points[i].weight *= i < data_in_quadrature ? kExistenceFactor : dummy_scale;
   }
@@ -467,7 +469,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     for (auto& [key, weight] : merged) d.points.push_back({weight, key.first, key.second});
   };
   merge(design);
-  merge(heavier);
+  if (check_existence) merge(heavier);
   result.seconds.quadrature = seconds_since(clock);
 
   // Maximum pseudo-likelihood.
@@ -483,7 +485,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
   // no location with the data's neighbourhoods has positive measure), the share alone holds the
   // maximum and the estimates follow it (90–170%). Parameters that move are unbounded.
   bool follows_share = false;
-  if (options.data_weight > 0 && kExistenceFactor * options.data_weight < 1) {
+  if (check_existence) {
     const MpleResult check = maximise_pseudo_likelihood(heavier, mple.theta);
     for (std::size_t p = 0; p < mple.theta.size(); ++p) {
       if (mple.status[p] != model::ParameterStatus::free) continue;
