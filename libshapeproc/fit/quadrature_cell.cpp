@@ -233,8 +233,14 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     const auto any_within = [&](double low, double high) {
       return std::any_of(breakpoints.begin(), breakpoints.end(), [&](double t) { return t > low && t <= high; });
     };
+    // With the axis certain over the cell, only its own thresholds matter.
+    const int certain = measurer.certain_axis(dummy.shape, other.shape, offset, corner);
+    const auto axis_within = [&](double low, double high) {
+      const std::vector<double>& own = interaction.thresholds(ca, cb, certain);
+      return std::any_of(own.begin(), own.end(), [&](double t) { return t > low && t <= high; });
+    };
     double d = lo;
-    const bool exact = any_within(lo - corner, hi + corner);
+    const bool exact = certain >= 0 ? axis_within(lo - corner, hi + corner) : any_within(lo - corner, hi + corner);
     if (exact) {
       d = measurer.distance(dummy.shape, other.shape, offset, cutoff);
       if (d + corner < hard_core) {
@@ -273,7 +279,7 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       if (fresh) it->second = measure();
       return it->second;
     };
-    PlaneNeighbour n{cb, measurer.certain_axis(dummy.shape, other.shape, offset, corner), d,
+    PlaneNeighbour n{cb, certain, d,
                      static_cast<int>(cuts.size()), 0};
     std::uint64_t axes = 0;  // axes whose thresholds matter in the cell
     if (n.axis < 0 && (exact ? !any_within(d - corner, d + corner) : true)) {

@@ -7,11 +7,12 @@
 // whose integrand is bounded (|(y − x)·n_B| ≤ |y − x|), so touching, interlocking and even
 // overlapping regions are handled without any singularity. For a straight edge j of ∂B,
 // (y − x)·n_j is constant in y and ∫_edge ds_y / |y − x| has a closed form (a difference of
-// asinh), so only the outer integral along each edge of ∂A needs Gauss–Legendre quadrature, with
-// more points for edge pairs that are close relative to their lengths. Their midpoint rule for
-// edge pairs far apart errs by up to a percent of the force on coarse polygons (terms cancel
-// around closed outlines), so regions whose circles are apart use multipole expansions instead
-// (below): relative error about 1e-5, at a cost that does not grow with the edge counts.
+// asinh): edge pairs near each other relative to their lengths use it with Gauss–Legendre
+// quadrature along edge i; pairs apart use a two-point Gauss rule on both edges (no logarithm,
+// four edges of B at a time on vector registers). Low-order rules for edge pairs far apart err by
+// up to a percent of the force on coarse polygons (terms cancel around closed outlines), so
+// regions whose circles are apart use multipole expansions instead (below): relative error about
+// 1e-5, at a cost that does not grow with the edge counts.
 // Without them (no pair table), regions far apart (centroid distance above 5 times the sum of
 // their radii) use the second-order far-field expansion (far_field_force in gravitation.hpp).
 #pragma once
@@ -49,6 +50,14 @@ struct MassBoundary2 {
   bool point = false;
   // M_kl = ∫ z^k z̄^l dA about the centroid (moment_index layout; a point mass has M_00 = 1 only).
   std::vector<std::complex<double>> complex_moments;
+  // The edges as the other side of an edge pair sees them (set by finish()), one entry per
+  // non-empty edge in arrays of doubles, padded with inert entries to a multiple of 4 so that
+  // the loop over them runs on vector registers: the two Gauss points, the midpoint, the normal,
+  // n·start, a quarter of the length, the length, and the edge's index (-1 for padding).
+  struct EdgeRule {
+    std::vector<double> y0x, y0y, y1x, y1y, mx, my, nx, ny, c, quarter, length;
+    std::vector<int> edge;
+  } rule;
 
   // Adds an edge with its outward normal (the side away from the mass), updating area and
   // centroid; call finish() after the last edge.
