@@ -63,18 +63,30 @@ struct HalfPlane {
 };
 
 // A convex polygon with inline storage: a square cut by k lines has at most 4 + k vertices.
+// Copies move only the vertices in use.
 struct Polygon {
   static constexpr int kCapacity = 48;
   std::array<Point2, kCapacity> p;
   int n = 0;
 
+  Polygon() = default;
+  Polygon(const Polygon& o) : n(o.n) { std::copy_n(o.p.begin(), n, p.begin()); }
+  Polygon& operator=(const Polygon& o) {
+    n = o.n;
+    std::copy_n(o.p.begin(), n, p.begin());
+    return *this;
+  }
+
   double area() const {
+    if (n == 0) return 0.0;
     double twice = 0.0;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i + 1 < n; ++i) {
       const Point2& a = p[static_cast<std::size_t>(i)];
-      const Point2& b = p[static_cast<std::size_t>((i + 1) % n)];
+      const Point2& b = p[static_cast<std::size_t>(i + 1)];
       twice += a.x * b.y - a.y * b.x;
     }
+    const Point2& a = p[static_cast<std::size_t>(n - 1)];
+    twice += a.x * p[0].y - a.y * p[0].x;
     return 0.5 * twice;
   }
 };
@@ -264,20 +276,14 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     };
     const auto sample_distance = [&](std::size_t i) {
       const auto measure = [&] { return measurer.distance(dummy.shape, other.shape, at_corner(i), cutoff); };
-      if (!on_lattice) return measure();
-      auto [it, fresh] = cache->distances.try_emplace(key(i), 0.0);
-      if (fresh) it->second = measure();
-      return it->second;
+      return on_lattice ? cache->distance(key(i), measure) : measure();
     };
     const auto sample_angle = [&](std::size_t i) {
       const auto measure = [&] {
         const Vec3 g = measurer.direction(dummy.shape, other.shape, at_corner(i));
         return std::atan2(g.y(), g.x());
       };
-      if (!on_lattice) return measure();
-      auto [it, fresh] = cache->angles.try_emplace(key(i), 0.0);
-      if (fresh) it->second = measure();
-      return it->second;
+      return on_lattice ? cache->angle(key(i), measure) : measure();
     };
     PlaneNeighbour n{cb, certain, d,
                      static_cast<int>(cuts.size()), 0};
@@ -456,7 +462,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
   pieces[0].polygon.p[3] = {-hx, hy};
   const double cell_area = size.x() * size.y();
   const double negligible = 1e-12 * cell_area;
-  Polygon beyond, rest, clipped;
+  Polygon beyond;
+  std::array<Polygon, 2> left;
   for (const PlaneNeighbour& n : neighbours) {
     for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
       const PlaneCut& cut = cuts[static_cast<std::size_t>(c)];
@@ -477,19 +484,21 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           continue;
         }
         // Outside C: beyond the first side, then beyond the second within the first, ….
-        rest = piece.polygon;
+        // What is left inside the sides so far, alternating between two buffers.
+        const Polygon* rest = &piece.polygon;
         bool empty = false;
         for (const HalfPlane* h = first; h != last; ++h) {
-          clip(rest, {-h->nx, -h->ny, -h->c}, beyond);
+          clip(*rest, {-h->nx, -h->ny, -h->c}, beyond);
           if (beyond.area() > negligible) next.push_back({beyond, piece.inside});
-          clip(rest, *h, clipped);
-          std::swap(rest, clipped);
-          if (rest.area() <= negligible) {
+          Polygon& out = rest == &left[0] ? left[1] : left[0];
+          clip(*rest, *h, out);
+          rest = &out;
+          if (rest->area() <= negligible) {
             empty = true;
             break;
           }
         }
-        if (!empty) next.push_back({rest, piece.inside | (std::uint64_t{1} << c)});
+        if (!empty) next.push_back({*rest, piece.inside | (std::uint64_t{1} << c)});
       }
       if (uniform && next.size() != pieces.size()) *uniform = false;
       std::swap(pieces, next);

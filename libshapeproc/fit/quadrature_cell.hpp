@@ -21,9 +21,9 @@
 // can cross the cell.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -54,7 +54,8 @@ struct CellContext {
 };
 
 // Distances and directions of one neighbour measured at a cell corner (2D), kept for the other
-// cells that meet there. One per thread; the results do not depend on it.
+// cells that meet there. One per thread; the results do not depend on it. An open-addressing
+// table whose clear() is one increment (a block of rows clears it thousands of times).
 class CornerCache {
  public:
   struct Key {
@@ -66,19 +67,67 @@ class CornerCache {
              image_y == o.image_y;
     }
   };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      std::size_t h = std::hash<long>()(k.x * 1000003L + k.y);
-      h ^= std::hash<long>()((static_cast<long>(k.shape) << 40) ^ (static_cast<long>(k.neighbour) << 8) ^
-                             ((k.image_x + 2) << 4) ^ (k.image_y + 2)) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-      return h;
-    }
-  };
-  std::unordered_map<Key, double, Hash> distances, angles;
-  void clear() {
-    distances.clear();
-    angles.clear();
+  // The value stored under `key` (distances and angles apart), measure() the first time.
+  template <class Measure>
+  double distance(const Key& key, Measure&& measure) {
+    return lookup(key, 0, measure);
   }
+  template <class Measure>
+  double angle(const Key& key, Measure&& measure) {
+    return lookup(key, 1, measure);
+  }
+  void clear() {
+    ++generation_;
+    size_ = 0;
+  }
+
+ private:
+  struct Slot {
+    Key key;
+    int kind;
+    unsigned generation = 0;  // the slot is used when it equals the table's
+    double value;
+  };
+  static std::size_t hash(const Key& k, int kind) {
+    std::size_t h = std::hash<long>()(k.x * 1000003L + k.y);
+    h ^= std::hash<long>()((static_cast<long>(k.shape) << 40) ^ (static_cast<long>(k.neighbour) << 8) ^
+                           ((k.image_x + 2) << 4) ^ (k.image_y + 2) ^ (static_cast<long>(kind) << 60)) +
+         0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h * 0x9e3779b97f4a7c15ULL;
+  }
+  template <class Measure>
+  double lookup(const Key& key, int kind, Measure& measure) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash(key, kind) >> 20 & mask;; i = (i + 1) & mask) {
+      Slot& slot = slots_[i];
+      if (slot.generation != generation_) {
+        slot = {key, kind, generation_, measure()};
+        ++size_;
+        return slot.value;
+      }
+      if (slot.kind == kind && slot.key == key) return slot.value;
+    }
+  }
+  void grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(std::max<std::size_t>(1024, 2 * old.size()), Slot{});
+    const unsigned previous = generation_;
+    ++generation_;  // every new slot is free (generation 0 is never current)
+    size_ = 0;
+    const std::size_t mask = slots_.size() - 1;
+    for (const Slot& slot : old) {
+      if (slot.generation != previous) continue;
+      std::size_t i = hash(slot.key, slot.kind) >> 20 & mask;
+      while (slots_[i].generation == generation_) i = (i + 1) & mask;
+      slots_[i] = slot;
+      slots_[i].generation = generation_;
+      ++size_;
+    }
+  }
+  std::vector<Slot> slots_;
+  std::size_t size_ = 0;
+  unsigned generation_ = 1;
 };
 
 // Parts of the rectangular (box) cell of extents `size` around `dummy` with λ > 0 (hard-core
