@@ -80,6 +80,7 @@ class CornerCache {
     ++generation_;
     size_ = 0;
   }
+  std::size_t size() const { return size_; }
 
  private:
   struct Slot {

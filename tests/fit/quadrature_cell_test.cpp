@@ -131,7 +131,29 @@ TEST(CellPieces, SharedCornersChangeNothing) {
       }
     }
   }
-  EXPECT_FALSE(cache.distances.empty());
+  EXPECT_GT(cache.size(), 0u);
+}
+
+TEST(CornerCache, MeasuresEachKeyOnceUntilCleared) {
+  CornerCache cache;
+  int measured = 0;
+  const auto key = [](int i) { return CornerCache::Key{i % 7, i % 5, i, -i, i % 3 - 1, 0}; };
+  // Enough keys to grow the table several times; distances and angles are kept apart.
+  for (int i = 0; i < 5000; ++i) {
+    EXPECT_EQ(cache.distance(key(i), [&] { ++measured; return 0.5 * i; }), 0.5 * i);
+    EXPECT_EQ(cache.angle(key(i), [&] { ++measured; return -1.0 * i; }), -1.0 * i);
+  }
+  EXPECT_EQ(measured, 10000);
+  for (int i = 0; i < 5000; ++i) {
+    EXPECT_EQ(cache.distance(key(i), [&] { ++measured; return 0.0; }), 0.5 * i);
+    EXPECT_EQ(cache.angle(key(i), [&] { ++measured; return 0.0; }), -1.0 * i);
+  }
+  EXPECT_EQ(measured, 10000);
+  EXPECT_EQ(cache.size(), 10000u);
+  cache.clear();
+  EXPECT_EQ(cache.size(), 0u);
+  EXPECT_EQ(cache.distance(key(3), [&] { ++measured; return 7.0; }), 7.0);
+  EXPECT_EQ(measured, 10001);
 }
 
 }  // namespace
