@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 
 namespace shapeproc::fit {
 
@@ -198,9 +197,14 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
   }
   // Whether the line n·p = c meets the cell.
   const auto meets = [&](double nx, double ny, double c) { return std::abs(c) < std::abs(nx) * hx + std::abs(ny) * hy; };
-  std::vector<PlaneNeighbour> neighbours;
-  std::vector<PlaneCut> cuts;
-  std::vector<HalfPlane> sides;
+  // Work space kept by the thread (integrate_cell_adaptive calls this function again only after
+  // it returned).
+  thread_local std::vector<PlaneNeighbour> neighbours;
+  thread_local std::vector<PlaneCut> cuts;
+  thread_local std::vector<HalfPlane> sides;
+  neighbours.clear();
+  cuts.clear();
+  sides.clear();
   model::InteractionCounts base;  // neighbours with one effect on the whole cell
   bool forbidden = false;
   // Candidates nearest first: a hard core over the whole cell ends the work early.
@@ -209,7 +213,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     int k;
     Vec3 offset;
   };
-  std::vector<Candidate> candidates;
+  thread_local std::vector<Candidate> candidates;
+  candidates.clear();
   context.grid->for_each_candidate(dummy.position, [&](int k) {
     const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
     if (!interaction.interacts(dummy.category, other.category)) return;
@@ -397,8 +402,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           ++off_contact;
         }
         const double det = sxx * syy - sxy * sxy;
-        const double gx = det > 1e-12 * std::pow(corner, 4) ? (syy * bx - sxy * by) / det : 0.0;
-        const double gy = det > 1e-12 * std::pow(corner, 4) ? (sxx * by - sxy * bx) / det : 0.0;
+        const double corner4 = (corner * corner) * (corner * corner);
+        const double gx = det > 1e-12 * corner4 ? (syy * bx - sxy * by) / det : 0.0;
+        const double gy = det > 1e-12 * corner4 ? (sxx * by - sxy * bx) / det : 0.0;
         const double slope = std::hypot(gx, gy);
         if (slope > 1e-9) {
           const double nx = gx / slope, ny = gy / slope;  // ξ along the gradient, η across
@@ -411,7 +417,7 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
             fit += w * (at[i] - d - gx * q[i].x - gy * q[i].y);
             weight += w * w;
           }
-          const bool curved = off_contact >= 3 && weight > 1e-3 * std::pow(corner, 4);
+          const bool curved = off_contact >= 3 && weight > 1e-3 * corner4;
           // A curvature radius below the cell's half-diagonal is taken as that radius.
           const double bend = std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner, 1.0 / corner);
           // The level set ξ = level − bend·η² as chords across the cell, each moved towards
@@ -513,7 +519,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     }
     std::swap(pieces, next);
   }
-  std::map<std::vector<std::pair<int, int>>, double> parts;
+  // Pieces with the same statistics are one part (few pieces: a linear search), parts ordered by
+  // their statistics.
+  std::vector<CellPart> result;
   for (const Piece& piece : pieces) {
     model::InteractionCounts counts = base;
     for (const PlaneNeighbour& n : neighbours) {
@@ -521,11 +529,15 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       const int band = interaction.band(dummy.category, n.category, axis, piece_distance(n, cuts, piece.inside, axis));
       if (band >= 0) counts.add(interaction.parameter(dummy.category, n.category, axis, band));
     }
-    parts[counts.counts] += piece.polygon.area() / cell_area;
+    const double fraction = piece.polygon.area() / cell_area;
+    const auto same = std::find_if(result.begin(), result.end(), [&](const CellPart& p) { return p.counts == counts.counts; });
+    if (same != result.end()) {
+      same->fraction += fraction;
+    } else {
+      result.push_back({fraction, std::move(counts.counts)});
+    }
   }
-  std::vector<CellPart> result;
-  result.reserve(parts.size());
-  for (auto& [counts, fraction] : parts) result.push_back({fraction, counts});
+  std::sort(result.begin(), result.end(), [](const CellPart& a, const CellPart& b) { return a.counts < b.counts; });
   return result;
 }
 
