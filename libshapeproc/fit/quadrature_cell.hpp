@@ -77,7 +77,10 @@ class CornerCache {
     return lookup(key, 1, measure);
   }
   void clear() {
-    ++generation_;
+    if (++generation_ == 0) {  // wrapped around: no slot may look used
+      std::fill(slots_.begin(), slots_.end(), Slot{});
+      generation_ = 1;
+    }
     size_ = 0;
   }
   std::size_t size() const { return size_; }
@@ -100,7 +103,7 @@ class CornerCache {
   double lookup(const Key& key, int kind, Measure& measure) {
     if (2 * (size_ + 1) > slots_.size()) grow();
     const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash(key, kind) >> 20 & mask;; i = (i + 1) & mask) {
+    for (std::size_t i = (hash(key, kind) >> 20) & mask;; i = (i + 1) & mask) {
       Slot& slot = slots_[i];
       if (slot.generation != generation_) {
         slot = {key, kind, generation_, measure()};
@@ -119,7 +122,7 @@ class CornerCache {
     const std::size_t mask = slots_.size() - 1;
     for (const Slot& slot : old) {
       if (slot.generation != previous) continue;
-      std::size_t i = hash(slot.key, slot.kind) >> 20 & mask;
+      std::size_t i = (hash(slot.key, slot.kind) >> 20) & mask;
       while (slots_[i].generation == generation_) i = (i + 1) & mask;
       slots_[i] = slot;
       slots_[i].generation = generation_;

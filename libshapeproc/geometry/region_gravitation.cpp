@@ -59,13 +59,13 @@ constexpr std::size_t kLanes = 4;
 // For the edge i of A with Gauss points x0, x1, midpoint m and length ℓ_i (in B's frame): the sum
 // over B's edges j apart from it (midpoints more than ℓ_i + ℓ_j apart) of the two-point Gauss
 // product rule for the mean along edge i of ∫_edge_j h_j(x)/|y − x| ds_y, where
-// h_j(x) = (y − x)·n_j = n_j·start_j − n_j·x. `near` counts the edges j not apart.
+// h_j(x) = (y − x)·n_j = n_j·start_j − n_j·x. The entries of the edges j not apart go to `near`.
 // (|h_j| ≤ |y − x|, and squared distances are kept above 1e-300, so no term is infinite.)
 double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, double x1x, double x1y, double mx,
-                 double my, double length_i, int& near) {
+                 double my, double length_i, std::vector<std::size_t>& near) {
   using Lanes = Eigen::Array<double, kLanes, 1>;
   using Load = Eigen::Map<const Lanes>;
-  Lanes sum = Lanes::Zero(), close = Lanes::Zero();
+  Lanes sum = Lanes::Zero();
   const Lanes tiny = Lanes::Constant(1e-300);
   for (std::size_t j = 0; j < b.edge.size(); j += kLanes) {
     const Lanes dx = Load(b.mx.data() + j) - mx, dy = Load(b.my.data() + j) - my;
@@ -82,9 +82,12 @@ double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, doubl
     // 1/r + 1/r' as (r + r')/(r r'): two divisions instead of four.
     const Lanes term = h0 * (r00 + r01) / (r00 * r01) + h1 * (r10 + r11) / (r10 * r11);
     sum += apart.select(Load(b.quarter.data() + j) * term, 0.0);
-    close += apart.select(Lanes::Zero(), 1.0);
+    if (!apart.all()) {
+      for (std::size_t k = 0; k < kLanes; ++k) {
+        if (!apart[static_cast<Eigen::Index>(k)]) near.push_back(j + k);
+      }
+    }
   }
-  near = static_cast<int>((close[0] + close[1]) + (close[2] + close[3]));
   return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
@@ -187,18 +190,18 @@ double expanded_potential(const MassBoundary2& b, const Complex& x, int order) {
 
 // ∇U for U(R) = (1/|R|) Σ G_kl R^{−k} R̄^{−l}: as a complex number 2 ∂U/∂R̄
 // = −(1/|R|) Σ (2l + 1) G_kl R^{−k} R̄^{−l−1}. With v = 1/R and w = v̄ the sum is
-// Σ_l (2l + 1) w^{l+1} P_l(v), P_l(v) = Σ_{k ≤ order − l} G_kl v^k: Horner's rule in v inside
-// from a table of powers of v inside (independent products) and by Horner's rule in w outside: one
-// complex product per term, written out in real arithmetic.
+// Σ_l (2l + 1) w^{l+1} P_l(v), P_l(v) = Σ_{k ≤ order − l} G_kl v^k: each P_l from a table of
+// powers of v (independent products), the sum over l by Horner's rule in w. One complex product
+// per term, written out in real arithmetic.
 Vec2 expanded_force(const PairExpansion& pair, const Complex& r, int order) {
   const Complex v = std::conj(r) / std::norm(r);
   const double vr = v.real(), vi = v.imag();
   std::array<double, kMomentOrder + 1> power_r, power_i;
   power_r[0] = 1.0;
   power_i[0] = 0.0;
-  for (int k = 1; k <= order; ++k) {
-    power_r[static_cast<std::size_t>(k)] = power_r[static_cast<std::size_t>(k - 1)] * vr - power_i[static_cast<std::size_t>(k - 1)] * vi;
-    power_i[static_cast<std::size_t>(k)] = power_r[static_cast<std::size_t>(k - 1)] * vi + power_i[static_cast<std::size_t>(k - 1)] * vr;
+  for (std::size_t k = 1; k <= static_cast<std::size_t>(order); ++k) {
+    power_r[k] = power_r[k - 1] * vr - power_i[k - 1] * vi;
+    power_i[k] = power_r[k - 1] * vi + power_i[k - 1] * vr;
   }
   double outer_r = 0.0, outer_i = 0.0;
   for (int l = order; l >= 0; --l) {
@@ -428,13 +431,12 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       // the nearest edges). Nearer pairs: Gauss–Legendre along edge i of the exact integral
       // along edge j.
       const Vec2 x0 = ai + kRules[1].x[0] * edge_i, x1 = ai + kRules[1].x[1] * edge_i, mid_i = ai + 0.5 * edge_i;
-      int near = 0;
+      thread_local std::vector<std::size_t> near;
+      near.clear();
       integral = apart_sum(b.rule, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(), length_i, near);
-      for (std::size_t e = 0; near > 0 && e < b.rule.edge.size(); ++e) {
+      for (const std::size_t e : near) {
         const double dx = b.rule.mx[e] - mid_i.x(), dy = b.rule.my[e] - mid_i.y();
         const double reach = length_i + b.rule.length[e];
-        if (dx * dx + dy * dy > reach * reach) continue;
-        --near;
         const std::size_t j = static_cast<std::size_t>(b.rule.edge[e]);
         const double ratio = std::sqrt(dx * dx + dy * dy) / reach;
         const GaussRule& g = ratio > 0.7 ? kRules[2] : kRules[3];
