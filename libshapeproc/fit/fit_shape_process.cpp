@@ -491,7 +491,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
       if (mple.status[p] != model::ParameterStatus::free) continue;
       if (std::abs(check.theta[p] - mple.theta[p]) > kExistenceTolerance) {
         follows_share = true;
-        if (interaction.locate(static_cast<int>(p)).pair >= 0) mple.status[p] = model::ParameterStatus::unbounded;
+        mple.status[p] = model::ParameterStatus::unbounded;
       }
     }
   }
@@ -504,7 +504,8 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     if (where.pair < 0) {
       model::CategoryParameters& c = model.categories[static_cast<std::size_t>(where.axis)];
       c.beta = std::exp(theta);
-      c.beta_standard_error = c.beta * se;
+      c.beta_status = mple.status[static_cast<std::size_t>(p)];
+      c.beta_standard_error = c.beta_status == model::ParameterStatus::free ? c.beta * se : std::numeric_limits<double>::quiet_NaN();
       continue;
     }
     model::AxisParameters& axis = model.interactions[static_cast<std::size_t>(where.pair)].axes[static_cast<std::size_t>(where.axis)];

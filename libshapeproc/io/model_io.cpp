@@ -184,7 +184,10 @@ ParameterStatus status_from(const std::string& s, const Reader& reader, const st
 std::string model_to_json(const ShapeProcessModel& model) {
   json categories = json::array();
   for (const CategoryParameters& c : model.categories) {
-    categories.push_back({{"name", c.name}, {"beta", c.beta}, {"beta_standard_error", number_or_null(c.beta_standard_error)}});
+    categories.push_back({{"name", c.name},
+                          {"beta", c.beta},
+                          {"beta_standard_error", number_or_null(c.beta_standard_error)},
+                          {"beta_status", to_string(c.beta_status)}});
   }
   json interaction = json::array();
   for (const PairInteraction& pair : model.interactions) {
@@ -260,6 +263,9 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     category.name = r.text(r.field(categories[c], where, "name"), where + ".name");
     category.beta = r.number(r.field(categories[c], where, "beta"), where + ".beta");
     if (categories[c].contains("beta_standard_error")) category.beta_standard_error = r.number(categories[c]["beta_standard_error"], where);
+    if (categories[c].contains("beta_status")) {
+      category.beta_status = status_from(r.text(categories[c]["beta_status"], where + ".beta_status"), r, where + ".beta_status");
+    }
     model.categories.push_back(category);
   }
   const json& interaction = r.array(r.field(document, "", "interaction"), "interaction");

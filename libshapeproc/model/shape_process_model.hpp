@@ -15,13 +15,7 @@
 
 namespace shapeproc::model {
 
-struct CategoryParameters {
-  std::string name;
-  double beta = 1.0;  // intensity per unit area (volume in 3D), in exemplar units
-  double beta_standard_error = std::numeric_limits<double>::quiet_NaN();
-};
-
-// How a band's γ came out of the fit (free parameters are estimated normally).
+// How a parameter came out of the fit (free parameters are estimated normally).
 enum class ParameterStatus {
   free,
   boundary,        // no observed pair in the band: γ = 0 is the maximum (on the boundary)
@@ -29,6 +23,15 @@ enum class ParameterStatus {
   unbounded,       // the pseudo-likelihood grows without limit (the exemplar separates the
                    // statistics); the estimate sits at the search bound |log γ| = 30
   fixed,           // set by hand (a loaded model without fit information)
+};
+
+struct CategoryParameters {
+  std::string name;
+  double beta = 1.0;  // intensity per unit area (volume in 3D), in exemplar units
+  double beta_standard_error = std::numeric_limits<double>::quiet_NaN();
+  // free when fitted normally; unbounded when it follows the data points' share (no finite
+  // maximum); fixed when set by hand.
+  ParameterStatus beta_status = ParameterStatus::fixed;
 };
 
 struct AxisParameters {

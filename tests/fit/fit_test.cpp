@@ -268,6 +268,8 @@ TEST(FitExistence, PackedExemplarsFollowTheDataShareAndSettle) {
   for (const auto& pair : coarse.model.interactions)
     for (const auto& axis : pair.axes)
       for (auto status : axis.status) EXPECT_EQ(status, model::ParameterStatus::unbounded);
+  EXPECT_EQ(coarse.model.categories[0].beta_status, model::ParameterStatus::unbounded);
+  EXPECT_TRUE(std::isnan(coarse.model.categories[0].beta_standard_error));
   EXPECT_NEAR(coarse.model.categories[0].beta / fine.model.categories[0].beta, 1.0, 0.05);
   const auto a = gammas(coarse), b = gammas(fine);
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k] / b[k], 1.0, 0.05) << k;
@@ -283,6 +285,8 @@ TEST(FitExistence, PackedExemplarsFollowTheDataShareAndSettle) {
   for (const auto& pair : usual.model.interactions)
     for (const auto& axis : pair.axes)
       for (auto status : axis.status) EXPECT_NE(status, model::ParameterStatus::unbounded);
+  EXPECT_EQ(usual.model.categories[0].beta_status, model::ParameterStatus::free);
+  EXPECT_GT(usual.model.categories[0].beta_standard_error, 0.0);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ const char* kMinimal = R"({
 TEST(ModelFile, MinimalHandWrittenModelLoads) {
   const model::ShapeProcessModel m = parse_model(kMinimal, "m.json");
   EXPECT_EQ(m.measurement.directions, 4);  // inferred from two axes
+  EXPECT_EQ(m.categories[0].beta_status, model::ParameterStatus::fixed);  // set by hand
   EXPECT_EQ(m.shapes.size(), 1u);
   EXPECT_NEAR(geometry::bounding_box(m.shapes[0].shape).center().norm(), 0.0, 1e-12);  // centred on load
   const model::Interaction interaction(m);
@@ -46,6 +47,9 @@ TEST(ModelFile, FitWriteReadRoundTrip) {
   const model::ShapeProcessModel back = read_model(dir.file("m.json"));
   ASSERT_EQ(back.categories.size(), fit.model.categories.size());
   EXPECT_EQ(back.categories[0].beta, fit.model.categories[0].beta);
+  // crescents-grid has no finite MPLE: its β follows the data points' share.
+  EXPECT_EQ(fit.model.categories[0].beta_status, model::ParameterStatus::unbounded);
+  EXPECT_EQ(back.categories[0].beta_status, model::ParameterStatus::unbounded);
   EXPECT_EQ(back.interactions[0].axes[2].thresholds, fit.model.interactions[0].axes[2].thresholds);
   EXPECT_EQ(back.interactions[0].axes[2].gammas, fit.model.interactions[0].axes[2].gammas);
   EXPECT_EQ(back.interactions[0].axes[2].status, fit.model.interactions[0].axes[2].status);
@@ -86,6 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadModel{"format", "shapeproc-model", "other", "format"},
                       BadModel{"version", "\"version\": 1", "\"version\": 7", "version"},
                       BadModel{"beta", "\"beta\": 0.01", "\"beta\": 0", "categories[0].beta"},
+                      BadModel{"beta_status", "\"beta\": 0.01", "\"beta\": 0.01, \"beta_status\": \"maybe\"",
+                               "categories[0].beta_status"},
                       BadModel{"decreasing", "[2, 5, 9]", "[2, 9, 5]", "must not decrease"},
                       BadModel{"negative_gamma", "[0.2, 1.5]", "[0.2, -1]", "gammas[1]"},
                       BadModel{"gamma_count", "[0.2, 1.5]", "[0.2]", "one per band"},

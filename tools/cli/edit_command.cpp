@@ -123,6 +123,7 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
     if (index == m.categories.size()) index = parse_indices(name, m.categories.size(), 0, "category", "--beta", edit).front();
     m.categories[index].beta = value;
     m.categories[index].beta_standard_error = std::numeric_limits<double>::quiet_NaN();
+    m.categories[index].beta_status = model::ParameterStatus::fixed;
     edits.push_back("beta " + edit);
   }
   for (const std::string& edit : args.gamma) {

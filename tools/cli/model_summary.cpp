@@ -55,6 +55,7 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   for (const model::CategoryParameters& c : model.categories) {
     out << "  " << std::left << std::setw(16) << c.name << std::right << " " << g(c.beta);
     if (std::isfinite(c.beta_standard_error)) out << " ± " << g(c.beta_standard_error, 2);
+    if (c.beta_status == model::ParameterStatus::unbounded) out << " (unbounded)";
     out << '\n';
   }
   if (model.interactions.empty()) out << "\nno interaction: a Poisson process\n";
