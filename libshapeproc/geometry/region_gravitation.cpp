@@ -65,23 +65,24 @@ double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, doubl
                  double my, double length_i, std::vector<std::size_t>& near) {
   using Lanes = Eigen::Array<double, kLanes, 1>;
   using Load = Eigen::Map<const Lanes>;
+  using R = MassBoundary2::EdgeRule;
   Lanes sum = Lanes::Zero();
   const Lanes tiny = Lanes::Constant(1e-300);
   for (std::size_t j = 0; j < b.edge.size(); j += kLanes) {
-    const Lanes dx = Load(b.mx.data() + j) - mx, dy = Load(b.my.data() + j) - my;
-    const Lanes reach = Load(b.length.data() + j) + length_i;
+    const Lanes dx = Load(b[R::mx] + j) - mx, dy = Load(b[R::my] + j) - my;
+    const Lanes reach = Load(b[R::length] + j) + length_i;
     const auto apart = dx * dx + dy * dy > reach * reach;
-    const Lanes nx = Load(b.nx.data() + j), ny = Load(b.ny.data() + j), c = Load(b.c.data() + j);
+    const Lanes nx = Load(b[R::nx] + j), ny = Load(b[R::ny] + j), c = Load(b[R::c] + j);
     const Lanes h0 = c - (nx * x0x + ny * x0y), h1 = c - (nx * x1x + ny * x1y);
-    const Lanes y0x = Load(b.y0x.data() + j), y0y = Load(b.y0y.data() + j);
-    const Lanes y1x = Load(b.y1x.data() + j), y1y = Load(b.y1y.data() + j);
+    const Lanes y0x = Load(b[R::y0x] + j), y0y = Load(b[R::y0y] + j);
+    const Lanes y1x = Load(b[R::y1x] + j), y1y = Load(b[R::y1y] + j);
     const Lanes r00 = ((y0x - x0x).square() + (y0y - x0y).square()).max(tiny).sqrt();
     const Lanes r01 = ((y1x - x0x).square() + (y1y - x0y).square()).max(tiny).sqrt();
     const Lanes r10 = ((y0x - x1x).square() + (y0y - x1y).square()).max(tiny).sqrt();
     const Lanes r11 = ((y1x - x1x).square() + (y1y - x1y).square()).max(tiny).sqrt();
     // 1/r + 1/r' as (r + r')/(r r'): two divisions instead of four.
     const Lanes term = h0 * (r00 + r01) / (r00 * r01) + h1 * (r10 + r11) / (r10 * r11);
-    sum += apart.select(Load(b.quarter.data() + j) * term, 0.0);
+    sum += apart.select(Load(b[R::quarter] + j) * term, 0.0);
     if (!apart.all()) {
       for (std::size_t k = 0; k < kLanes; ++k) {
         if (!apart[static_cast<Eigen::Index>(k)]) near.push_back(j + k);
@@ -257,31 +258,21 @@ void MassBoundary2::finish() {
     if (length[i] > 0) unit[i] = (end[i] - start[i]) / length[i];
   }
   rule = EdgeRule{};
-  const auto push = [&](double y0x, double y0y, double y1x, double y1y, double mx, double my, double nx, double ny,
-                        double c, double quarter, double edge_length, int edge) {
-    rule.y0x.push_back(y0x);
-    rule.y0y.push_back(y0y);
-    rule.y1x.push_back(y1x);
-    rule.y1y.push_back(y1y);
-    rule.mx.push_back(mx);
-    rule.my.push_back(my);
-    rule.nx.push_back(nx);
-    rule.ny.push_back(ny);
-    rule.c.push_back(c);
-    rule.quarter.push_back(quarter);
-    rule.length.push_back(edge_length);
+  const auto push = [&](const std::array<double, EdgeRule::kColumns>& values, int edge) {
+    for (std::size_t k = 0; k < values.size(); ++k) rule.columns[k].push_back(values[k]);
     rule.edge.push_back(edge);
   };
   for (std::size_t i = 0; i < start.size(); ++i) {
     if (length[i] == 0.0) continue;
     const Vec2 y0 = start[i] + kRules[1].x[0] * (end[i] - start[i]), y1 = start[i] + kRules[1].x[1] * (end[i] - start[i]);
     const Vec2 m = 0.5 * (start[i] + end[i]);
-    push(y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(), start[i].dot(normal[i]),
-         0.25 * length[i], length[i], static_cast<int>(i));
+    push({y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(), start[i].dot(normal[i]),
+          0.25 * length[i], length[i]},
+         static_cast<int>(i));
   }
   // Padding: far away, no normal and no weight, so that its terms are exactly 0 and never near.
   constexpr double kAway = 1e100;
-  while (rule.edge.size() % kLanes != 0) push(kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0, -1);
+  while (rule.edge.size() % kLanes != 0) push({kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0}, -1);
   // M_kl = ∫ z^k z̄^l dA = 1/(2(l + 1)) ∮ n z^k z̄^{l+1} ds (complex Green's theorem with
   // dz = i n ds on the positively oriented boundary); the edge integrands are polynomials of
   // degree ≤ kMomentOrder + 1, integrated exactly.
@@ -435,8 +426,9 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       near.clear();
       integral = apart_sum(b.rule, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(), length_i, near);
       for (const std::size_t e : near) {
-        const double dx = b.rule.mx[e] - mid_i.x(), dy = b.rule.my[e] - mid_i.y();
-        const double reach = length_i + b.rule.length[e];
+        using R = MassBoundary2::EdgeRule;
+        const double dx = b.rule[R::mx][e] - mid_i.x(), dy = b.rule[R::my][e] - mid_i.y();
+        const double reach = length_i + b.rule[R::length][e];
         const std::size_t j = static_cast<std::size_t>(b.rule.edge[e]);
         const double ratio = std::sqrt(dx * dx + dy * dy) / reach;
         const GaussRule& g = ratio > 0.7 ? kRules[2] : kRules[3];

@@ -55,8 +55,10 @@ struct MassBoundary2 {
   // the loop over them runs on vector registers: the two Gauss points, the midpoint, the normal,
   // n·start, a quarter of the length, the length, and the edge's index (-1 for padding).
   struct EdgeRule {
-    std::vector<double> y0x, y0y, y1x, y1y, mx, my, nx, ny, c, quarter, length;
+    enum Column { y0x, y0y, y1x, y1y, mx, my, nx, ny, c, quarter, length, kColumns };
+    std::array<std::vector<double>, kColumns> columns;
     std::vector<int> edge;
+    const double* operator[](Column k) const { return columns[static_cast<std::size_t>(k)].data(); }
   } rule;
 
   // Adds an edge with its outward normal (the side away from the mass), updating area and
