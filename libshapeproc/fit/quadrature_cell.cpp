@@ -244,20 +244,18 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       forbidden = true;  // within every axis's hard core all over the cell
       break;
     }
-    // The exact distance when a threshold of any axis may fall within the cell's range.
+    // The exact distance when a threshold that matters may fall within the cell's range: of any
+    // axis, or of the axis alone when it is certain over the cell.
     const double cutoff = reach + sample_reach;
     const std::vector<double>& breakpoints = interaction.breakpoints(ca, cb);
-    const auto any_within = [&](double low, double high) {
-      return std::any_of(breakpoints.begin(), breakpoints.end(), [&](double t) { return t > low && t <= high; });
+    const auto within = [](const std::vector<double>& marks, double low, double high) {
+      return std::any_of(marks.begin(), marks.end(), [&](double t) { return t > low && t <= high; });
     };
-    // With the axis certain over the cell, only its own thresholds matter.
+    const auto any_within = [&](double low, double high) { return within(breakpoints, low, high); };
     const int certain = measurer.certain_axis(dummy.shape, other.shape, offset, corner);
-    const auto axis_within = [&](double low, double high) {
-      const std::vector<double>& own = interaction.thresholds(ca, cb, certain);
-      return std::any_of(own.begin(), own.end(), [&](double t) { return t > low && t <= high; });
-    };
+    const std::vector<double>& deciding = certain >= 0 ? interaction.thresholds(ca, cb, certain) : breakpoints;
     double d = lo;
-    const bool exact = certain >= 0 ? axis_within(lo - corner, hi + corner) : any_within(lo - corner, hi + corner);
+    const bool exact = within(deciding, lo - corner, hi + corner);
     if (exact) {
       d = measurer.distance(dummy.shape, other.shape, offset, cutoff);
       if (d + corner < hard_core) {
