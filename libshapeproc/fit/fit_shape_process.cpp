@@ -17,7 +17,7 @@
 #include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/model/neighbour_grid.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
 
 namespace shapeproc::fit {
 
@@ -405,7 +405,7 @@ FitResult fit_shape_process(const Scene& exemplar, const FitOptions& options) {
     };
     on_threads(evaluate);
   } else {
-    model::NeighbourGrid grid(exemplar.window, dimension,
+    geometry::NeighbourGrid grid(exemplar.window, dimension,
                               range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * longest / cells_along, periodic);
     for (std::size_t k = 0; k < n; ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
     CellContext context{&interaction, &measurer, &exemplar.elements, &grid, dimension, Vec3::Zero()};

@@ -1,4 +1,5 @@
 #include "libshapeproc/fit/line_quadrature.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,6 @@ using model::Interaction;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // What a neighbour does at one place on the line: its band under the axis of that place (the
 // axis kept only while it matters), and how far along the line that cannot change.
@@ -42,7 +42,7 @@ class NeighbourMarch {
       : c_(context), category_(category), shape_(shape), other_(neighbour), image_(image), start_(start) {
     reach_ = c_.interaction->max_range(category, neighbour.category);
     const int d = c_.measurer->bins().directions();
-    sector_angle_ = c_.dimension == 2 ? (d > 1 ? 2 * kPi / d : 0.0) : (d > 1 ? kPi / 3 : 0.0);
+    sector_angle_ = c_.dimension == 2 ? (d > 1 ? 2 * core::kPi / d : 0.0) : (d > 1 ? core::kPi / 3 : 0.0);
   }
 
   double distance_at(double x) const {

@@ -1,4 +1,5 @@
 #include "libshapeproc/fit/quadrature_cell.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,14 +14,13 @@ using model::Interaction;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A sector boundary is looked for when the angle to it times the distance between centres (its
 // distance for directions between centres) is below this many half-diagonals of the cell: the
 // gravitation direction of near shapes may turn faster.
 constexpr double kSectorReach = 1.5;
 
 double cell_radius(int dimension, double measure) {
-  return dimension == 2 ? std::sqrt(measure / kPi) : std::cbrt(3.0 * measure / (4.0 * kPi));
+  return dimension == 2 ? std::sqrt(measure / core::kPi) : std::cbrt(3.0 * measure / (4.0 * core::kPi));
 }
 
 // A place where the statistics change inside the cell: with probability `fraction` the
@@ -43,7 +43,7 @@ double cut_fraction(int dimension, double cell_measure, double x) {
   if (x >= r) return 0.0;
   x = std::max(0.0, x);
   if (dimension == 2) {
-    return (r * r * std::acos(x / r) - x * std::sqrt(r * r - x * x)) / (kPi * r * r);
+    return (r * r * std::acos(x / r) - x * std::sqrt(r * r - x * x)) / (core::kPi * r * r);
   }
   return (r - x) * (r - x) * (2 * r + x) / (4.0 * r * r * r);  // cap volume / ball volume
 }
@@ -304,7 +304,7 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       const Vec3 direction = measurer.direction(dummy.shape, other.shape, offset);
       n.axis = measurer.bins().axis_of(direction);
       const int directions = measurer.bins().directions();
-      const double step = 2 * kPi / directions;
+      const double step = 2 * core::kPi / directions;
       const double angle = std::atan2(direction.y(), direction.x());
       const long sector = std::lround(angle / step);
       const double margin = step / 2 - std::abs(angle - static_cast<double>(sector) * step);
@@ -328,7 +328,7 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
         std::array<double, 4> turns;
         for (std::size_t i = 0; i < 4; ++i) {
           const double diff = sample_angle(i) - angle;
-          turns[i] = diff - 2 * kPi * std::round(diff / (2 * kPi));
+          turns[i] = diff - 2 * core::kPi * std::round(diff / (2 * core::kPi));
         }
         double ax = 0.0, ay = 0.0;  // the corners are symmetric: least squares per axis
         for (std::size_t i = 0; i < 4; ++i) {
@@ -574,7 +574,7 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
       const Vec3 direction = measurer.direction(dummy.shape, other.shape, offset);
       axis = measurer.bins().axis_of(direction);
       if (context.dimension == 2 && measurer.bins().directions() > 1) {
-        const double step = 2 * kPi / measurer.bins().directions();
+        const double step = 2 * core::kPi / measurer.bins().directions();
         const double angle = std::atan2(direction.y(), direction.x());
         const double sector = std::round(angle / step);
         angular_margin = step / 2 - std::abs(angle - sector * step);

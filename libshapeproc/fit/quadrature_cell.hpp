@@ -29,7 +29,7 @@
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/model/neighbour_grid.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
 
 namespace shapeproc::fit {
 
@@ -42,7 +42,7 @@ struct CellContext {
   const model::Interaction* interaction;
   const geometry::PairMeasurer* measurer;
   const std::vector<geometry::Element>* data;
-  const model::NeighbourGrid* grid;
+  const geometry::NeighbourGrid* grid;
   int dimension = 2;
   geometry::Vec3 period = geometry::Vec3::Zero();  // window sizes when periodic, else 0
   // 2D: cell corners lie on the lattice origin + (i, j)·lattice_step, so that cells meeting at

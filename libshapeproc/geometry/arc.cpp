@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/arc.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +8,12 @@ namespace shapeproc::geometry {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Appends the arc of the ellipse (centre, radii, rotation) between parameter angles theta1 and
 // theta1 + delta as cubic pieces of at most 90 degrees, ending exactly at `end`.
 void append_arc_pieces(Path2& path, const Vec2& centre, double rx, double ry, double phi,
                        double theta1, double delta, const Vec2& start, const Vec2& end) {
-  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (kPi / 2) - 1e-9)));
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (core::kPi / 2) - 1e-9)));
   const double step = delta / pieces;
   // Control-point distance for a circular arc of angle `step` on the unit circle.
   const double k = 4.0 / 3.0 * std::tan(step / 4.0);
@@ -51,7 +51,7 @@ void append_elliptical_arc(Path2& path, const Vec2& from, double rx, double ry,
     path.segments.push_back(Segment2::line(from, to));
     return;
   }
-  const double phi = std::fmod(rotation_degrees, 360.0) * kPi / 180.0;
+  const double phi = std::fmod(rotation_degrees, 360.0) * core::kPi / 180.0;
   const double c = std::cos(phi), s = std::sin(phi);
   // F.6.5.1: the midpoint difference in the ellipse's frame.
   const Vec2 half = 0.5 * (from - to);
@@ -82,15 +82,15 @@ void append_elliptical_arc(Path2& path, const Vec2& from, double rx, double ry,
   const Vec2 v((-p.x() - cp.x()) / rx, (-p.y() - cp.y()) / ry);
   const double theta1 = angle_between(Vec2(1.0, 0.0), u);
   double delta = angle_between(u, v);
-  if (!sweep && delta > 0) delta -= 2 * kPi;
-  if (sweep && delta < 0) delta += 2 * kPi;
+  if (!sweep && delta > 0) delta -= 2 * core::kPi;
+  if (sweep && delta < 0) delta += 2 * core::kPi;
   append_arc_pieces(path, centre, rx, ry, phi, theta1, delta, from, to);
 }
 
 Path2 ellipse_path(const Vec2& centre, double rx, double ry) {
   Path2 path;
   const Vec2 start(centre.x() + rx, centre.y());
-  append_arc_pieces(path, centre, rx, ry, 0.0, 0.0, 2 * kPi, start, start);
+  append_arc_pieces(path, centre, rx, ry, 0.0, 0.0, 2 * core::kPi, start, start);
   path.closed = true;
   return path;
 }

@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/directions.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 namespace shapeproc::geometry {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 from_z_phi(double z, double phi) {
   const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
@@ -20,8 +20,8 @@ int healpix_base_pixel(const Vec3& direction) {
   const Vec3 u = direction.normalized();
   const double z = u.z();
   double phi = std::atan2(u.y(), u.x());
-  if (phi < 0) phi += 2 * kPi;
-  double tt = phi / (kPi / 2);  // in [0, 4)
+  if (phi < 0) phi += 2 * core::kPi;
+  double tt = phi / (core::kPi / 2);  // in [0, 4)
   if (tt >= 4.0) tt -= 4.0;
   if (std::abs(z) <= 2.0 / 3.0) {
     const int jp = static_cast<int>(0.5 + tt - 0.75 * z);  // ascending edge index
@@ -34,9 +34,9 @@ int healpix_base_pixel(const Vec3& direction) {
 }
 
 Vec3 healpix_base_pixel_centre(int pixel) {
-  if (pixel < 4) return from_z_phi(2.0 / 3.0, kPi / 4 + pixel * kPi / 2);
-  if (pixel < 8) return from_z_phi(0.0, (pixel - 4) * kPi / 2);
-  return from_z_phi(-2.0 / 3.0, kPi / 4 + (pixel - 8) * kPi / 2);
+  if (pixel < 4) return from_z_phi(2.0 / 3.0, core::kPi / 4 + pixel * core::kPi / 2);
+  if (pixel < 8) return from_z_phi(0.0, (pixel - 4) * core::kPi / 2);
+  return from_z_phi(-2.0 / 3.0, core::kPi / 4 + (pixel - 8) * core::kPi / 2);
 }
 
 DirectionBins::DirectionBins(int dimension, int directions) : dimension_(dimension), directions_(directions) {
@@ -51,7 +51,7 @@ DirectionBins::DirectionBins(int dimension, int directions) : dimension_(dimensi
                                   std::to_string(directions));
     }
     for (int k = 0; k < directions / 2; ++k) {
-      const double angle = 2 * kPi * k / directions;
+      const double angle = 2 * core::kPi * k / directions;
       axes_.emplace_back(std::cos(angle), std::sin(angle), 0.0);
     }
   } else {
@@ -66,7 +66,7 @@ DirectionBins::DirectionBins(int dimension, int directions) : dimension_(dimensi
 int DirectionBins::axis_of(const Vec3& direction) const {
   if (directions_ == 1) return 0;
   if (dimension_ == 2) {
-    const double step = 2 * kPi / directions_;
+    const double step = 2 * core::kPi / directions_;
     const long k = std::lround(std::atan2(direction.y(), direction.x()) / step);
     const int half = directions_ / 2;
     return static_cast<int>(((k % half) + half) % half);

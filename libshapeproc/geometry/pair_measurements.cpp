@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <array>
@@ -15,8 +16,7 @@ namespace {
 // The axis of the 2D direction sector holding every angle in [lowest, highest] (radians, an
 // interval shorter than a turn), or -1 when the interval meets two sectors.
 int axis_of_angles(const DirectionBins& bins, double lowest, double highest) {
-  constexpr double kPi = 3.14159265358979323846;
-  const double step = 2 * kPi / bins.directions();
+  const double step = 2 * core::kPi / bins.directions();
   const long first = std::lround(lowest / step), last = std::lround(highest / step);
   if (first != last) return -1;
   const long half = bins.directions() / 2;
@@ -337,12 +337,11 @@ int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack
   if (low.x() <= 0 && high.x() >= 0 && low.y() <= 0 && high.y() >= 0) return -1;  // holds the origin
   const Vec2 centre = 0.5 * (low + high);
   const double middle = std::atan2(centre.y(), centre.x());
-  constexpr double kPi = 3.14159265358979323846;
   double lowest = 0.0, highest = 0.0;
   for (const Vec2& corner : {low, high, Vec2(low.x(), high.y()), Vec2(high.x(), low.y())}) {
     double delta = std::atan2(corner.y(), corner.x()) - middle;
-    if (delta > kPi) delta -= 2 * kPi;
-    if (delta < -kPi) delta += 2 * kPi;
+    if (delta > core::kPi) delta -= 2 * core::kPi;
+    if (delta < -core::kPi) delta += 2 * core::kPi;
     lowest = std::min(lowest, delta);
     highest = std::max(highest, delta);
   }

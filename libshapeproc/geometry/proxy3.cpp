@@ -9,6 +9,7 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include "libshapeproc/geometry/proxy.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::geometry {
 
@@ -20,7 +21,6 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 };
 using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Signed solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee).
 double solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -99,7 +99,7 @@ bool Proxy3::inside(const Vec3& p) const {
   for (const auto& t : triangles) {
     total += solid_angle(vertices[t[0]] - p, vertices[t[1]] - p, vertices[t[2]] - p);
   }
-  return std::abs(total) > 2.0 * kPi;  // winding number above one half
+  return std::abs(total) > 2.0 * core::kPi;  // winding number above one half
 }
 
 Proxy3 make_proxy3(const Shape& shape, const ProxyOptions& options) {

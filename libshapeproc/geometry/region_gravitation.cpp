@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/region_gravitation.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include "libshapeproc/geometry/gravitation.hpp"
 
@@ -119,10 +120,9 @@ struct GaussTable {
 };
 
 GaussTable gauss_legendre(int n) {
-  constexpr double kPi = 3.14159265358979323846;
   GaussTable table;
   for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5));
+    double t = std::cos(core::kPi * (i + 0.75) / (n + 0.5));
     double derivative = 1.0;
     for (int iteration = 0; iteration < 100; ++iteration) {
       double p0 = 1.0, p1 = t;  // P_0, P_1, then up to P_n by the three-term recurrence

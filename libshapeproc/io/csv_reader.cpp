@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -49,7 +49,7 @@ std::string csv_field(const std::string& text) {
 
 geometry::Scene parse_csv_points(std::string_view text, const std::string& file_name,
                                  const ReaderOptions& options) {
-  if (trim(text).empty()) throw InputError(file_name, 0, "the file is empty");
+  if (trim(text).empty()) throw core::InputError(file_name, 0, "the file is empty");
   std::vector<std::string_view> lines;
   for (std::size_t start = 0; start <= text.size();) {
     std::size_t end = text.find('\n', start);
@@ -60,22 +60,22 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
     start = end + 1;
   }
   std::vector<std::string> fields;
-  if (!split_csv_line(lines.front(), fields)) throw InputError(file_name, 1, "bad quoting in the header");
+  if (!split_csv_line(lines.front(), fields)) throw core::InputError(file_name, 1, "bad quoting in the header");
   std::map<std::string, std::size_t> column;
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const std::string name = to_lower(fields[i]);
-    if (!column.emplace(name, i).second) throw InputError(file_name, 1, "column '" + name + "' appears twice");
+    if (!column.emplace(name, i).second) throw core::InputError(file_name, 1, "column '" + name + "' appears twice");
   }
   if (!column.count("x") || !column.count("y")) {
-    throw InputError(file_name, 1, "the header must name columns x and y (and optionally z, category)");
+    throw core::InputError(file_name, 1, "the header must name columns x and y (and optionally z, category)");
   }
   const int dimension = column.count("z") ? 3 : 2;
   if (!options.window) {
-    throw InputError(file_name, 0, std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
+    throw core::InputError(file_name, 0, std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
                                        (dimension == 3 ? ",zmin,zmax" : ""));
   }
   if (options.window->dimension != dimension) {
-    throw InputError(file_name, 0, "the points are " + std::to_string(dimension) + "D but --window is " +
+    throw core::InputError(file_name, 0, "the points are " + std::to_string(dimension) + "D but --window is " +
                                        std::to_string(options.window->dimension) + "D");
   }
   geometry::Scene scene;
@@ -88,9 +88,9 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
   for (std::size_t n = 1; n < lines.size(); ++n) {
     const int line_number = static_cast<int>(n + 1);
     if (trim(lines[n]).empty()) continue;
-    if (!split_csv_line(lines[n], fields)) throw InputError(file_name, line_number, "bad quoting");
+    if (!split_csv_line(lines[n], fields)) throw core::InputError(file_name, line_number, "bad quoting");
     if (fields.size() != width) {
-      throw InputError(file_name, line_number, "expected " + std::to_string(width) + " fields, got " +
+      throw core::InputError(file_name, line_number, "expected " + std::to_string(width) + " fields, got " +
                                                    std::to_string(fields.size()));
     }
     geometry::Element element;
@@ -99,23 +99,23 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
       const std::string& value = fields[column.at(axes[axis])];
       const auto number = parse_number(value);
       if (!number) {
-        throw InputError(file_name, line_number, std::string("column ") + axes[axis] +
+        throw core::InputError(file_name, line_number, std::string("column ") + axes[axis] +
                                                      ": expected a finite number, got '" + value + "'");
       }
       element.position[axis] = *number;
     }
     const auto category = column.find("category");
     const std::string category_name = category == column.end() ? "default" : fields[category->second];
-    if (category_name.empty()) throw InputError(file_name, line_number, "empty category");
+    if (category_name.empty()) throw core::InputError(file_name, line_number, "empty category");
     element.category = scene.category_index(category_name);
     const geometry::Vec3& p = element.position;
     const geometry::Box3& w = scene.window;
     if ((p.array() < w.min().array()).any() || (p.array() > w.max().array()).any()) {
-      throw InputError(file_name, line_number, "the point lies outside --window");
+      throw core::InputError(file_name, line_number, "the point lies outside --window");
     }
     scene.elements.push_back(element);
   }
-  if (scene.elements.empty()) throw InputError(file_name, 0, "no points: the file has a header only");
+  if (scene.elements.empty()) throw core::InputError(file_name, 0, "no points: the file has a header only");
   return scene;
 }
 

@@ -9,7 +9,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -95,11 +95,11 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   const std::string name = file.string();
   const std::string ext = extension_of(file);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, 0, "no such file");
-  if (std::filesystem::file_size(file, ec) == 0) throw InputError(name, 0, "the file is empty");
-  if (!std::ifstream(file)) throw InputError(name, 0, "cannot open the file for reading");
+  if (!std::filesystem::is_regular_file(file, ec)) throw core::InputError(name, 0, "no such file");
+  if (std::filesystem::file_size(file, ec) == 0) throw core::InputError(name, 0, "the file is empty");
+  if (!std::ifstream(file)) throw core::InputError(name, 0, "cannot open the file for reading");
   if (options.mesh_split == MeshSplit::groups && ext != "obj") {
-    throw UsageError("--split groups needs an OBJ file, got " + name);
+    throw core::UsageError("--split groups needs an OBJ file, got " + name);
   }
 
   OmMesh mesh;
@@ -112,14 +112,14 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     complaint = capture.first_line();
   }
   if (!read) {
-    throw InputError(name, 0, "cannot read as " + to_lower(ext) + " mesh" +
+    throw core::InputError(name, 0, "cannot read as " + to_lower(ext) + " mesh" +
                                   (complaint.empty() ? "" : " (" + complaint + ")"));
   }
   if (complaint.find("complex") != std::string::npos) {
-    throw InputError(name, 0, "non-manifold or inconsistently oriented faces (" + complaint + ")");
+    throw core::InputError(name, 0, "non-manifold or inconsistently oriented faces (" + complaint + ")");
   }
-  if (!complaint.empty()) throw InputError(name, 0, "invalid mesh (" + complaint + ")");
-  if (mesh.n_faces() == 0) throw InputError(name, 0, "no triangles");
+  if (!complaint.empty()) throw core::InputError(name, 0, "invalid mesh (" + complaint + ")");
+  if (mesh.n_faces() == 0) throw core::InputError(name, 0, "no triangles");
 
   // Geometry checks on the triangles as read.
   std::vector<geometry::Vec3> points(mesh.n_vertices());
@@ -128,7 +128,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     const auto& p = mesh.point(vh);
     points[vh.idx()] = geometry::Vec3(p[0], p[1], p[2]);
     if (!points[vh.idx()].allFinite()) {
-      throw InputError(name, 0, "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
+      throw core::InputError(name, 0, "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
     }
   }
   std::vector<std::array<int, 3>> triangles;
@@ -148,7 +148,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     const double twice_area =
         (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
     if (!(twice_area > 1e-14 * scale)) {
-      throw InputError(name, 0, "degenerate triangle (zero area): face " + std::to_string(f));
+      throw core::InputError(name, 0, "degenerate triangle (zero area): face " + std::to_string(f));
     }
   }
 
@@ -158,7 +158,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   if (options.mesh_split == MeshSplit::groups) {
     const ObjGroups groups = scan_obj_groups(file);
     if (groups.of_triangle.size() != triangles.size()) {
-      throw InputError(name, 0, "the faces read do not match the `f` lines (" +
+      throw core::InputError(name, 0, "the faces read do not match the `f` lines (" +
                                     std::to_string(triangles.size()) + " vs " +
                                     std::to_string(groups.of_triangle.size()) + ")");
     }
@@ -211,14 +211,14 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   }
 
   if (options.window) {
-    if (options.window->dimension != 3) throw UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+    if (options.window->dimension != 3) throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
     scene.window = options.window->box;
   } else {
     scene.window = box;
   }
   const geometry::Vec3 sizes = scene.window.sizes();
   if (!(sizes.minCoeff() > 0.0)) {
-    throw InputError(name, 0, "the window has zero size (a flat scene): give --window");
+    throw core::InputError(name, 0, "the window has zero size (a flat scene): give --window");
   }
   return scene;
 }

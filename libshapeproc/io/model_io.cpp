@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -74,7 +74,7 @@ class Reader {
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw InputError(file_, 0, where + ": " + what);
+    throw core::InputError(file_, 0, where + ": " + what);
   }
   const json& field(const json& object, const std::string& where, const char* name) const {
     if (!object.is_object() || !object.contains(name)) fail(where.empty() ? name : where + "." + name, "missing");
@@ -231,11 +231,11 @@ std::string model_to_json(const ShapeProcessModel& model) {
 
 void write_model(const ShapeProcessModel& model, const std::filesystem::path& file) {
   const std::string text = model_to_json(model);
-  write_file_atomically(file, [&](std::ostream& out) { out << text; });
+  core::write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
 ShapeProcessModel parse_model(std::string_view text, const std::string& file_name) {
-  if (trim(text).empty()) throw InputError(file_name, 0, "the file is empty");
+  if (trim(text).empty()) throw core::InputError(file_name, 0, "the file is empty");
   json document;
   try {
     document = json::parse(text.begin(), text.end());
@@ -244,7 +244,7 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
     std::string message = e.what();
     if (const std::size_t colon = message.rfind(": "); colon != std::string::npos) message = message.substr(colon + 2);
-    throw InputError(file_name, line, "malformed JSON: " + message);
+    throw core::InputError(file_name, line, "malformed JSON: " + message);
   }
   const Reader r(file_name);
   if (!document.is_object()) r.fail("(document)", "expected a JSON object");
@@ -357,7 +357,7 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
   try {
     validate(model);
   } catch (const std::invalid_argument& e) {
-    throw InputError(file_name, 0, e.what());
+    throw core::InputError(file_name, 0, e.what());
   }
   return model;
 }

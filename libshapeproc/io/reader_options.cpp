@@ -1,6 +1,6 @@
 #include "libshapeproc/io/reader_options.hpp"
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -21,7 +21,7 @@ CategoryRule CategoryRule::parse(const std::string& text) {
     rule.kind = Kind::attribute;
     rule.attribute = text.substr(5);
   } else {
-    throw UsageError("--category-by: expected none, fill, stroke, class, layer or attr:NAME, got '" +
+    throw core::UsageError("--category-by: expected none, fill, stroke, class, layer or attr:NAME, got '" +
                      text + "'");
   }
   return rule;
@@ -42,7 +42,7 @@ std::string CategoryRule::to_string() const {
 WindowOption WindowOption::parse(const std::string& text) {
   const auto values = parse_number_list(text);
   if (!values || (values->size() != 4 && values->size() != 6)) {
-    throw UsageError("--window: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text + "'");
+    throw core::UsageError("--window: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text + "'");
   }
   const auto& v = *values;
   WindowOption window;
@@ -52,7 +52,7 @@ WindowOption WindowOption::parse(const std::string& text) {
   const char* axes = "xyz";
   for (int axis = 0; axis < window.dimension; ++axis) {
     if (!(v[2 * axis] < v[2 * axis + 1])) {
-      throw UsageError(std::string("--window: ") + axes[axis] + "min must be below " + axes[axis] +
+      throw core::UsageError(std::string("--window: ") + axes[axis] + "min must be below " + axes[axis] +
                        "max, got '" + text + "'");
     }
   }

@@ -4,9 +4,9 @@
 
 #include <pugixml.hpp>
 
-#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/io/csv_reader.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/mesh_reader.hpp"
 #include "libshapeproc/io/svg_reader.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -16,11 +16,11 @@ namespace shapeproc::io {
 geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOptions& options) {
   const std::string ext = extension_of(file);
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(file.string(), 0, "no such file");
+  if (!std::filesystem::exists(file, ec)) throw core::InputError(file.string(), 0, "no such file");
   if (ext == "svg") return read_svg(file, options);
   if (ext == "obj" || ext == "ply" || ext == "off" || ext == "stl") return read_mesh_scene(file, options);
   if (ext == "csv") return read_csv_points(file, options);
-  throw InputError(file.string(), 0,
+  throw core::InputError(file.string(), 0,
                    "unknown format '." + ext + "' (expected .svg, .obj, .ply, .off, .stl or .csv)");
 }
 
@@ -28,26 +28,26 @@ void write_scene(const geometry::Scene& scene, const std::filesystem::path& file
                  const Provenance& provenance) {
   const std::string ext = extension_of(file);
   if (ext == "svg") {
-    if (scene.dimension != 2) throw UsageError(file.string() + ": SVG holds 2D scenes only; use .obj, .ply or .csv");
-    write_file_atomically(file, [&](std::ostream& out) { write_svg(scene, out, provenance); });
+    if (scene.dimension != 2) throw core::UsageError(file.string() + ": SVG holds 2D scenes only; use .obj, .ply or .csv");
+    core::write_file_atomically(file, [&](std::ostream& out) { write_svg(scene, out, provenance); });
   } else if (ext == "obj" || ext == "ply") {
-    if (scene.dimension != 3) throw UsageError(file.string() + ": " + ext + " holds 3D scenes only; use .svg or .csv");
+    if (scene.dimension != 3) throw core::UsageError(file.string() + ": " + ext + " holds 3D scenes only; use .svg or .csv");
     if (!scene.elements.empty() &&
         !std::holds_alternative<geometry::MeshShape>(scene.shapes.at(scene.elements.front().shape).geometry)) {
-      throw UsageError(file.string() + ": point elements have no mesh to write; use .csv");
+      throw core::UsageError(file.string() + ": point elements have no mesh to write; use .csv");
     }
-    write_file_atomically(file, [&](std::ostream& out) {
+    core::write_file_atomically(file, [&](std::ostream& out) {
       if (ext == "obj") write_obj(scene, out, provenance);
       else write_ply(scene, out, provenance);
     });
   } else if (ext == "csv") {
-    write_file_atomically(file, [&](std::ostream& out) { write_csv(scene, out); });
+    core::write_file_atomically(file, [&](std::ostream& out) { write_csv(scene, out); });
     if (!provenance.json.empty()) {
-      write_file_atomically(file.string() + ".json",
+      core::write_file_atomically(file.string() + ".json",
                             [&](std::ostream& out) { out << provenance.json << '\n'; });
     }
   } else {
-    throw UsageError(file.string() + ": unknown output format '." + ext + "' (expected .svg, .obj, .ply or .csv)");
+    throw core::UsageError(file.string() + ": unknown output format '." + ext + "' (expected .svg, .obj, .ply or .csv)");
   }
 }
 

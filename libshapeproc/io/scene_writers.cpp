@@ -3,7 +3,7 @@
 #include <variant>
 
 #include "libshapeproc/io/csv_reader.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -53,7 +53,7 @@ void write_drawable(std::ostream& out, const geometry::Drawable2& drawable, cons
 
 void require_dimension(const Scene& scene, int dimension, const char* format) {
   if (scene.dimension != dimension) {
-    throw UsageError(std::string("cannot write a ") + std::to_string(scene.dimension) +
+    throw core::UsageError(std::string("cannot write a ") + std::to_string(scene.dimension) +
                      "D scene as " + format + " (" + std::to_string(dimension) + "D only)");
   }
 }
@@ -104,7 +104,7 @@ void write_obj(const Scene& scene, std::ostream& out, const Provenance& provenan
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const geometry::Shape shape = scene.placed_shape(i);
     const auto* mesh = std::get_if<geometry::MeshShape>(&shape.geometry);
-    if (!mesh) throw UsageError("cannot write a point element as OBJ geometry");
+    if (!mesh) throw core::UsageError("cannot write a point element as OBJ geometry");
     out << "o e" << i << "\n# category " << scene.categories.at(scene.elements[i].category).name << "\n";
     for (const geometry::Vec3& v : mesh->mesh.vertices) {
       out << "v " << format_number(v.x()) << ' ' << format_number(v.y()) << ' ' << format_number(v.z()) << '\n';
@@ -123,7 +123,7 @@ void write_ply(const Scene& scene, std::ostream& out, const Provenance& provenan
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     placed.push_back(scene.placed_shape(i));
     const auto* mesh = std::get_if<geometry::MeshShape>(&placed.back().geometry);
-    if (!mesh) throw UsageError("cannot write a point element as PLY geometry");
+    if (!mesh) throw core::UsageError("cannot write a point element as PLY geometry");
     vertices += mesh->mesh.vertices.size();
     triangles += mesh->mesh.triangles.size();
   }

@@ -11,7 +11,7 @@
 
 #include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/geometry/subpath_components.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/text.hpp"
 
@@ -152,7 +152,7 @@ class SvgReader {
 
  private:
   [[noreturn]] void fail(pugi::xml_node node, const std::string& message) const {
-    throw InputError(file_, line_of(node), message);
+    throw core::InputError(file_, line_of(node), message);
   }
   int line_at(std::ptrdiff_t offset) const {
     if (offset < 0) return 0;
@@ -275,11 +275,11 @@ std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) 
 }
 
 Scene SvgReader::read() {
-  if (trim(text_).empty()) throw InputError(file_, 0, "the file is empty");
+  if (trim(text_).empty()) throw core::InputError(file_, 0, "the file is empty");
   const pugi::xml_parse_result parsed = document_.load_buffer(
       text_.data(), text_.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
   if (!parsed) {
-    throw InputError(file_, line_at(parsed.offset),
+    throw core::InputError(file_, line_at(parsed.offset),
                      std::string("malformed XML: ") + parsed.description());
   }
   const pugi::xml_node root = document_.document_element();
@@ -311,7 +311,7 @@ Scene SvgReader::read() {
   if (root_state) walk_container(root, *root_state);
   set_window_from_root(root);
   if (scene_.elements.empty()) {
-    throw InputError(file_, 0, "no elements found (nothing drawable outside <defs> and hidden parts)");
+    throw core::InputError(file_, 0, "no elements found (nothing drawable outside <defs> and hidden parts)");
   }
   return std::move(scene_);
 }

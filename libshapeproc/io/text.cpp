@@ -8,7 +8,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 
 namespace shapeproc::io {
 
@@ -120,15 +120,15 @@ std::string extension_of(const std::filesystem::path& path) {
 
 std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), 0, "no such file");
+  if (!std::filesystem::exists(path, ec)) throw core::InputError(path.string(), 0, "no such file");
   if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(path.string(), 0, "is a directory, not a file");
+    throw core::InputError(path.string(), 0, "is a directory, not a file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), 0, "cannot open the file for reading");
+  if (!in) throw core::InputError(path.string(), 0, "cannot open the file for reading");
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), 0, "read error");
+  if (in.bad()) throw core::InputError(path.string(), 0, "read error");
   return buffer.str();
 }
 

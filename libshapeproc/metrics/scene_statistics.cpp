@@ -1,4 +1,5 @@
 #include "libshapeproc/metrics/scene_statistics.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "libshapeproc/sample/random.hpp"
+#include "libshapeproc/core/random.hpp"
 
 namespace shapeproc::metrics {
 
@@ -15,11 +16,10 @@ using geometry::Vec3;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Area (2D) or volume (3D) of a ball of radius r.
 double ball_measure(int dimension, double r) {
-  return dimension == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
+  return dimension == 2 ? core::kPi * r * r : 4.0 / 3.0 * core::kPi * r * r * r;
 }
 
 // Sorts (value, weight) pairs by value, merges equal values and normalises the weights.
@@ -82,7 +82,7 @@ std::vector<double> offset_measure(const geometry::Scene& scene, const geometry:
     return measure;
   }
   const std::size_t n = scene.elements.size();
-  sample::Random random(options.seed);
+  core::Random random(options.seed);
   const int samples = options.offset_samples > 0 ? options.offset_samples : (dim == 2 ? 1 << 16 : 1 << 13);
   for (int m = 0; m < samples; ++m) {
     const std::size_t i = random.index(n);

@@ -13,12 +13,14 @@
 
 #include <cairo.h>
 
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/core/error.hpp"
 
 namespace shapeproc::render {
 
 using geometry::Box3;
+using geometry::Raster;
 using geometry::Scene;
 using geometry::Vec2;
 using geometry::Vec3;
@@ -110,7 +112,7 @@ void draw_2d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
     const Vec2 offset = e.position.head<2>();
     const geometry::Shape& shape = scene.shapes.at(static_cast<std::size_t>(e.shape));
     if (std::holds_alternative<geometry::PointShape>(shape.geometry)) {
-      cairo_arc(cr, offset.x(), offset.y(), 2.5 * pixel, 0, 2 * 3.14159265358979323846);
+      cairo_arc(cr, offset.x(), offset.y(), 2.5 * pixel, 0, 2 * core::kPi);
       if (red) cairo_set_source_rgb(cr, 0.85, 0.1, 0.1); else cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
       cairo_fill(cr);
       continue;
@@ -183,51 +185,6 @@ void draw_3d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
 
 }  // namespace
 
-float Raster::sample(const Box3& box, const Vec2& p) const {
-  if (width <= 0 || height <= 0) return 0.0f;
-  const Vec3 size = box.sizes();
-  const double fx = (p.x() - box.min().x()) / size.x() * width;
-  const double fy = (p.y() - box.min().y()) / size.y() * height;
-  if (!(fx >= 0 && fy >= 0 && fx < width && fy < height)) return 0.0f;
-  return at(static_cast<int>(fx), static_cast<int>(fy));
-}
-
-Raster read_grayscale_png(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path.string(), 0, "no such file");
-  Surface surface(cairo_image_surface_create_from_png(path.string().c_str()));
-  const cairo_status_t status = cairo_surface_status(surface.get());
-  if (status != CAIRO_STATUS_SUCCESS) {
-    throw io::InputError(path.string(), 0, std::string("not a readable PNG image (") + cairo_status_to_string(status) + ")");
-  }
-  cairo_surface_flush(surface.get());
-  Raster raster;
-  raster.width = cairo_image_surface_get_width(surface.get());
-  raster.height = cairo_image_surface_get_height(surface.get());
-  if (raster.width <= 0 || raster.height <= 0) throw io::InputError(path.string(), 0, "the image is empty");
-  const cairo_format_t format = cairo_image_surface_get_format(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  const unsigned char* data = cairo_image_surface_get_data(surface.get());
-  raster.values.resize(static_cast<std::size_t>(raster.width) * static_cast<std::size_t>(raster.height));
-  for (int y = 0; y < raster.height; ++y) {
-    for (int x = 0; x < raster.width; ++x) {
-      double value = 0.0;
-      if (format == CAIRO_FORMAT_ARGB32 || format == CAIRO_FORMAT_RGB24) {
-        std::uint32_t pixel;
-        std::memcpy(&pixel, data + y * stride + 4 * x, 4);
-        // Cairo stores colour premultiplied by alpha: this is luminance × alpha.
-        value = (0.2126 * ((pixel >> 16) & 0xFF) + 0.7152 * ((pixel >> 8) & 0xFF) + 0.0722 * (pixel & 0xFF)) / 255.0;
-      } else if (format == CAIRO_FORMAT_A8) {
-        value = data[y * stride + x] / 255.0;
-      } else {
-        throw io::InputError(path.string(), 0, "unsupported PNG pixel format");
-      }
-      raster.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(raster.width) + static_cast<std::size_t>(x)] =
-          static_cast<float>(value);
-    }
-  }
-  return raster;
-}
-
 Raster rasterize_filled(const Scene& scene, const Box3& box, int width, int height) {
   Surface surface(cairo_image_surface_create(CAIRO_FORMAT_A8, width, height));
   Context cr(cairo_create(surface.get()));
@@ -265,7 +222,7 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
   }
   const Vec3 size = box.sizes();
   const double longest = std::max(size.x(), size.y());
-  if (!(longest > 0)) throw std::invalid_argument("render: the scene has an empty window");
+  if (!(longest > 0)) throw core::ArgumentError("render", "the scene has an empty window");
   const double scale = options.scale > 0 ? options.scale : options.long_side / longest;
   const int width = std::max(1, static_cast<int>(std::lround(scale * size.x())));
   const int height = std::max(1, static_cast<int>(std::lround(scale * size.y())));
@@ -283,7 +240,7 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
     const Box3 shape_box = geometry::bounding_box(scene.shapes.at(static_cast<std::size_t>(e.shape)));
     const double radius = 0.5 * shape_box.sizes().head<2>().norm() + 4 * pixel;
     cairo_new_path(cr.get());
-    cairo_arc(cr.get(), e.position.x(), e.position.y(), radius, 0, 2 * 3.14159265358979323846);
+    cairo_arc(cr.get(), e.position.x(), e.position.y(), radius, 0, 2 * core::kPi);
     cairo_set_source_rgba(cr.get(), 0.85, 0.1, 0.1, 0.9);
     cairo_set_line_width(cr.get(), 2 * pixel);
     cairo_stroke(cr.get());
@@ -295,7 +252,7 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
     cairo_stroke(cr.get());
   }
   cairo_surface_flush(surface.get());
-  io::write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &out);
     if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
   });

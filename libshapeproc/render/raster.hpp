@@ -1,33 +1,18 @@
-// Pictures through Cairo: grayscale PNG masks and intensity maps in, scenes rendered to PNG out.
+// Pictures through Cairo: scenes rasterised (domain masks) and rendered to PNG.
 // Cairo is included by raster.cpp only.
 #pragma once
 
 #include <filesystem>
 #include <vector>
 
+#include "libshapeproc/geometry/raster.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
 namespace shapeproc::render {
 
-// Grey levels in [0, 1], row-major, row 0 at the top (SVG's y axis points down, and so do
-// scenes read from SVG).
-struct Raster {
-  int width = 0, height = 0;
-  std::vector<float> values;
-
-  float at(int x, int y) const { return values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]; }
-  // The value of the pixel holding `p`, with the raster stretched over `box` (x right, y down);
-  // 0 outside the box.
-  float sample(const geometry::Box3& box, const geometry::Vec2& p) const;
-};
-
-// Reads a PNG as luminance times alpha (transparent counts as black). Throws io::InputError
-// naming the file when it cannot be read or is not a PNG.
-Raster read_grayscale_png(const std::filesystem::path& path);
-
 // The filled shapes of a 2D scene (each element's shape placed, by its fill rule) drawn white on
 // black over `box`, at width x height pixels, antialiased.
-Raster rasterize_filled(const geometry::Scene& scene, const geometry::Box3& box, int width, int height);
+geometry::Raster rasterize_filled(const geometry::Scene& scene, const geometry::Box3& box, int width, int height);
 
 struct RenderOptions {
   int long_side = 800;                // pixels along the longer side of the window

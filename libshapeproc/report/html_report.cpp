@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/interaction_plot.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "libshapeproc/render/raster.hpp"
 
@@ -135,7 +135,7 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     render::write_png(*scenes[i]->scene, directory / name, options);
     pictures.push_back(name);
   }
-  if (report.model) io::write_interaction_plot(*report.model, directory / "interaction.svg");
+  if (report.model) render::write_interaction_plot(*report.model, directory / "interaction.svg");
 
   const metrics::SceneStatistics& ex = *report.exemplar.statistics;
   const std::string unit = report.exemplar.scene->units;
@@ -220,7 +220,7 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   if (report.model) {
     html << "<h2>Interaction function</h2>\n<p>" << escape(report.model_label)
          << ": γ per axis and distance band (black: hard core, red: repulsion, blue: attraction).</p>\n"
-         << strip_xml_declaration(io::interaction_plot_svg(*report.model)) << '\n';
+         << strip_xml_declaration(render::interaction_plot_svg(*report.model)) << '\n';
   }
 
   html << "<h2>Distances</h2>\n" << legend(report) << "\n<div class=\"charts\">\n";
@@ -282,7 +282,7 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     html << "</table>\n";
   }
   html << "<p class=\"legend\">Written by shapeproc " << SHAPEPROC_VERSION << ".</p>\n</body>\n</html>\n";
-  io::write_file_atomically(directory / "index.html", [&](std::ostream& out) { out << html.str(); });
+  core::write_file_atomically(directory / "index.html", [&](std::ostream& out) { out << html.str(); });
 }
 
 }  // namespace shapeproc::report

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/model/neighbour_grid.hpp"
-#include "libshapeproc/sample/random.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/core/random.hpp"
 
 namespace shapeproc::sample {
 
@@ -172,7 +172,7 @@ class Configuration {
 
   const model::Interaction& interaction_;
   const geometry::PairMeasurer& measurer_;
-  model::NeighbourGrid grid_;
+  geometry::NeighbourGrid grid_;
   std::vector<Element> elements_;
   std::vector<int> alive_, free_, position_in_alive_;
   std::vector<std::vector<Link>> links_;  // per slot
@@ -185,7 +185,7 @@ class Configuration {
 
 // Whether the element's proxy lies inside the mask: its reference position and its outline at
 // half-pixel spacing.
-bool inside_mask(const render::Raster& mask, const geometry::Box3& domain, const geometry::PairMeasurer& measurer,
+bool inside_mask(const geometry::Raster& mask, const geometry::Box3& domain, const geometry::PairMeasurer& measurer,
                  const Element& e) {
   const geometry::Vec2 at = e.position.head<2>();
   if (mask.sample(domain, at) < 0.5f) return false;
@@ -269,7 +269,7 @@ SampleResult sample_shape_process(const model::ShapeProcessModel& model, const g
   for (const auto& c : model.categories) log_beta.push_back(std::log(c.beta));
   const double log_measure_categories = std::log(measure) + std::log(static_cast<double>(categories));
 
-  Random random(options.seed);
+  core::Random random(options.seed);
   const bool automatic = options.iterations <= 0;
   if (!(options.shift_probability >= 0 && options.shift_probability < 1) || !(options.shift_radius >= 0)) {
     throw std::invalid_argument("sample: the shift probability must be in [0, 1) and the shift radius >= 0");

@@ -17,7 +17,7 @@
 
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
-#include "libshapeproc/render/raster.hpp"
+#include "libshapeproc/geometry/raster.hpp"
 
 namespace shapeproc::sample {
 
@@ -39,8 +39,8 @@ struct SamplerOptions {
   // 2D, stretched over the domain (x right, y down): a shape mask (inside where ≥ 0.5; every
   // element must lie inside entirely, its proxy outline tested at half-pixel spacing) and an
   // intensity map (β_c × value). Either may be null. β = 0 outside the mask.
-  const render::Raster* mask = nullptr;
-  const render::Raster* intensity = nullptr;
+  const geometry::Raster* mask = nullptr;
+  const geometry::Raster* intensity = nullptr;
   // Called now and then with the steps done so far (for a progress bar); may be empty.
   std::function<void(long long done, long long total)> progress;
 };

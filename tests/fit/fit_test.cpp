@@ -1,4 +1,5 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <cmath>
 
@@ -14,7 +15,6 @@ namespace {
 using geometry::Scene;
 using geometry::Vec3;
 
-constexpr double kPi = 3.14159265358979323846;
 
 Scene points(const std::vector<Vec3>& positions, const std::vector<int>& categories, const geometry::Box3& window) {
   Scene scene;
@@ -63,7 +63,7 @@ TEST(Fit, TinyStraussMatchesTheExactMple) {
   const double r = 0.15, d = 0.1;
   const Scene scene = points({{0.3, 0.4, 0}, {0.3 + d, 0.4, 0}, {0.75, 0.7, 0}}, {0, 0, 0}, kUnit);
   const double lens = 2 * r * r * std::acos(d / (2 * r)) - 0.5 * d * std::sqrt(4 * r * r - d * d);
-  const double a2 = lens, a1 = 3 * kPi * r * r - 2 * lens, a0 = 1.0 - a1 - a2;
+  const double a2 = lens, a1 = 3 * core::kPi * r * r - 2 * lens, a0 = 1.0 - a1 - a2;
   // LPL(b, g) = 3 b + 2 g − e^b (a0 + a1 e^g + a2 e^{2g})
   double b = std::log(3.0), g = 0.0;
   for (int step = 0; step < 100; ++step) {

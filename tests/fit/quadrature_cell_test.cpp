@@ -21,7 +21,7 @@ struct CellGrid {
   model::ShapeProcessModel model;
   model::Interaction interaction;
   geometry::PairMeasurer measurer;
-  model::NeighbourGrid grid;
+  geometry::NeighbourGrid grid;
   Vec3 cell;
   int columns, rows;
 

@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/directions.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <cmath>
 #include <random>
@@ -8,10 +9,9 @@
 namespace shapeproc::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 at_angle(double degrees) {
-  return Vec3(std::cos(degrees * kPi / 180), std::sin(degrees * kPi / 180), 0);
+  return Vec3(std::cos(degrees * core::kPi / 180), std::sin(degrees * core::kPi / 180), 0);
 }
 
 TEST(DirectionBins, PlanarAxes) {

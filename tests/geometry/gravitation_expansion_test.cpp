@@ -9,11 +9,11 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/geometry/region_gravitation.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A star-shaped polygon (counter-clockwise) with `corners` corners at radii in [0.6, 1] * radius,
 // each edge cut into `pieces` collinear edges.
@@ -21,7 +21,7 @@ MassBoundary2 star(std::mt19937& rng, int corners, double radius, int pieces) {
   std::uniform_real_distribution<double> r(0.6 * radius, radius);
   std::vector<Vec2> points;
   for (int i = 0; i < corners; ++i) {
-    const double angle = 2 * kPi * i / corners;
+    const double angle = 2 * core::kPi * i / corners;
     const double length = r(rng);
     points.emplace_back(length * std::cos(angle), length * std::sin(angle));
   }
@@ -60,7 +60,7 @@ TEST(GravitationExpansion, PairExpansionMatchesTheBoundaryIntegral) {  // NOLINT
   std::mt19937 rng(3);
   // From 2.1 on: about twice the radii and nearer, the expansion would need more than
   // kMomentOrder terms and the edges answer instead (the last test).
-  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(2.1, 5.0);
+  std::uniform_real_distribution<double> angle(0, 2 * core::kPi), spread(2.1, 5.0);
   for (int trial = 0; trial < 20; ++trial) {
     const int ca = 5 + trial % 7, cb = 4 + trial % 5;
     std::mt19937 copy = rng;
@@ -83,7 +83,7 @@ TEST(GravitationExpansion, PotentialExpansionAlongEdgesOfLargePolygons) {  // NO
   // Many edges and near neighbours: edges of A far from B use B's expansion, the others the
   // edge pairs; the total stays within the edge-pair method's own quadrature error.
   std::mt19937 rng(8);
-  std::uniform_real_distribution<double> angle(0, 2 * kPi), gap(0.1, 1.0);
+  std::uniform_real_distribution<double> angle(0, 2 * core::kPi), gap(0.1, 1.0);
   for (int trial = 0; trial < 10; ++trial) {
     std::mt19937 copy = rng;
     const MassBoundary2 a = star(rng, 40, 1.0, 4), b = star(rng, 40, 1.0, 4);

@@ -1,4 +1,5 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,6 @@ namespace {
 
 using namespace fixtures;
 
-constexpr double kPi = 3.14159265358979323846;
 
 MeasurementOptions fine() {
   MeasurementOptions options;
@@ -31,7 +31,7 @@ double measured(const std::vector<Shape>& shapes, const std::vector<Vec2>& posit
 }
 
 double angle_between(const Vec3& a, const Vec3& b) {
-  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / kPi;
+  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / core::kPi;
 }
 
 TEST(ShapeDistance, BoxesWithKnownGaps) {
@@ -44,7 +44,7 @@ TEST(ShapeDistance, BoxesWithKnownGaps) {
 
 TEST(ShapeDistance, DiscsAreCentreDistanceMinusRadii) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(0.5, 3.0), angle(0, 2 * kPi);
+  std::uniform_real_distribution<double> u(0.5, 3.0), angle(0, 2 * core::kPi);
   for (int trial = 0; trial < 40; ++trial) {
     const double r1 = u(rng), r2 = u(rng), gap = u(rng) - 0.5, a = angle(rng);
     const double c = r1 + r2 + gap;
@@ -260,20 +260,20 @@ TEST(Gravitation, CertainAxisHoldsOverItsDisc) {
   int decided = 0, beyond_boxes = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const int a = static_cast<int>(rng() % shapes.size()), b = static_cast<int>(rng() % shapes.size());
-    const double angle = 2 * kPi * unit(rng), distance = 8.0 + 40.0 * unit(rng), slack = 4.0 * unit(rng);
+    const double angle = 2 * core::kPi * unit(rng), distance = 8.0 + 40.0 * unit(rng), slack = 4.0 * unit(rng);
     const Vec3 offset(distance * std::cos(angle), distance * std::sin(angle), 0.0);
     const int axis = measurer.certain_axis(a, b, offset, slack);
     if (axis < 0) continue;
     ++decided;
     if (measurer.axis_from_boxes(a, b, offset, slack) < 0) ++beyond_boxes;
     for (int k = 0; k < 24; ++k) {
-      const double r = slack * std::sqrt(unit(rng)), t = 2 * kPi * unit(rng);
+      const double r = slack * std::sqrt(unit(rng)), t = 2 * core::kPi * unit(rng);
       const Vec3 o = offset + Vec3(r * std::cos(t), r * std::sin(t), 0.0);
       ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
     }
     // The disc's rim, where the angle strays most.
     for (int k = 0; k < 16; ++k) {
-      const Vec3 o = offset + slack * Vec3(std::cos(k * kPi / 8), std::sin(k * kPi / 8), 0.0);
+      const Vec3 o = offset + slack * Vec3(std::cos(k * core::kPi / 8), std::sin(k * core::kPi / 8), 0.0);
       ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
     }
   }

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 
 namespace shapeproc::io {
 namespace {
@@ -49,7 +49,7 @@ TEST_P(CsvBadInput, ThrowsWithLine) {
   try {
     parse_csv_points(bad.text, "pts.csv", options);
     FAIL() << bad.name;
-  } catch (const InputError& e) {
+  } catch (const core::InputError& e) {
     EXPECT_EQ(e.line(), bad.line) << e.what();
     EXPECT_NE(std::string(e.what()).find(bad.message), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).rfind("pts.csv", 0), 0u);

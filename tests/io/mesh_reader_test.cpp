@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::io {
@@ -139,7 +139,7 @@ TEST_P(MeshBadInput, ThrowsInputErrorNamingTheFile) {
   try {
     read_mesh_scene(path, {});
     FAIL() << bad.name;
-  } catch (const InputError& e) {
+  } catch (const core::InputError& e) {
     EXPECT_NE(std::string(e.what()).find(bad.message), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(bad.file), std::string::npos) << e.what();
   }
@@ -163,10 +163,10 @@ TEST(MeshReader, OptionMisuse) {
   const auto off = dir.write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   ReaderOptions groups;
   groups.mesh_split = MeshSplit::groups;
-  EXPECT_THROW(read_mesh_scene(off, groups), UsageError);
+  EXPECT_THROW(read_mesh_scene(off, groups), core::UsageError);
   ReaderOptions flat_window;
   flat_window.window = WindowOption::parse("0,1,0,1");
-  EXPECT_THROW(read_mesh_scene(off, flat_window), UsageError);
+  EXPECT_THROW(read_mesh_scene(off, flat_window), core::UsageError);
   EXPECT_EQ(read_mesh_scene(off, {}).elements.size(), 1u);
 }
 

@@ -1,7 +1,7 @@
 // Reading what was written gives the same elements, for every writer.
 #include <gtest/gtest.h>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "tests/test_support.hpp"
 
@@ -96,10 +96,10 @@ TEST(RoundTrip, CsvPlacements) {
 TEST(Writers, RefuseFormatsThatCannotHoldTheScene) {
   const testing::TempDir dir;
   const Scene svg = read_scene(testing::data_path("svg/dots-random.svg"), {});
-  EXPECT_THROW(write_scene(svg, dir.file("x.obj"), {}), UsageError);
-  EXPECT_THROW(write_scene(svg, dir.file("x.png"), {}), UsageError);
+  EXPECT_THROW(write_scene(svg, dir.file("x.obj"), {}), core::UsageError);
+  EXPECT_THROW(write_scene(svg, dir.file("x.png"), {}), core::UsageError);
   const Scene mesh = read_scene(testing::data_path("mesh/pebbles.obj"), {});
-  EXPECT_THROW(write_scene(mesh, dir.file("x.svg"), {}), UsageError);
+  EXPECT_THROW(write_scene(mesh, dir.file("x.svg"), {}), core::UsageError);
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.obj")));
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
 }

@@ -1,7 +1,7 @@
 // Every kind of bad SVG gets a clear InputError naming the file, and the line where it is known.
 #include <gtest/gtest.h>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/svg_reader.hpp"
 #include "tests/test_support.hpp"
 
@@ -24,7 +24,7 @@ TEST_P(SvgBadInput, ThrowsInputErrorWithFileAndLine) {
   try {
     parse_svg(bad.text, "bad.svg", {});
     FAIL() << "no error for " << bad.name;
-  } catch (const InputError& e) {
+  } catch (const core::InputError& e) {
     const std::string what = e.what();
     EXPECT_EQ(e.file(), "bad.svg");
     EXPECT_EQ(e.line(), bad.line) << what;
@@ -70,8 +70,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SvgBadInputFile, MissingAndDirectory) {
   const testing::TempDir dir;
-  EXPECT_THROW(read_svg(dir.file("missing.svg"), {}), InputError);
-  EXPECT_THROW(read_svg(dir.path(), {}), InputError);
+  EXPECT_THROW(read_svg(dir.file("missing.svg"), {}), core::InputError);
+  EXPECT_THROW(read_svg(dir.path(), {}), core::InputError);
   (void)kHead;
 }
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 
 namespace shapeproc::io {
 namespace {
@@ -213,7 +213,7 @@ TEST(SvgCategories, EveryRule) {
   EXPECT_EQ(names("class"), (std::vector<std::string>{"a", "b", "a"}));
   EXPECT_EQ(names("layer"), (std::vector<std::string>{"front", "front", "back"}));
   EXPECT_EQ(names("attr:data-kind"), (std::vector<std::string>{"x", "y", "z"}));
-  EXPECT_THROW(CategoryRule::parse("colour"), UsageError);
+  EXPECT_THROW(CategoryRule::parse("colour"), core::UsageError);
 }
 
 }  // namespace

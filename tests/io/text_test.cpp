@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/io/csv_reader.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 
 namespace shapeproc::io {
@@ -49,10 +49,10 @@ TEST(ReaderOptions, WindowOption) {
   EXPECT_EQ(w.dimension, 2);
   EXPECT_EQ(w.box.min(), geometry::Vec3(0, -5, 0));
   EXPECT_EQ(WindowOption::parse("0,1,0,1,0,2").dimension, 3);
-  EXPECT_THROW(WindowOption::parse("0,10,5"), UsageError);
-  EXPECT_THROW(WindowOption::parse("0,0,0,1"), UsageError);
-  EXPECT_THROW(WindowOption::parse("1,0,0,1"), UsageError);
-  EXPECT_THROW(WindowOption::parse("a,b,c,d"), UsageError);
+  EXPECT_THROW(WindowOption::parse("0,10,5"), core::UsageError);
+  EXPECT_THROW(WindowOption::parse("0,0,0,1"), core::UsageError);
+  EXPECT_THROW(WindowOption::parse("1,0,0,1"), core::UsageError);
+  EXPECT_THROW(WindowOption::parse("a,b,c,d"), core::UsageError);
 }
 
 }  // namespace

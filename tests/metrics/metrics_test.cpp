@@ -8,13 +8,13 @@
 #include "libshapeproc/io/svg_reader.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
-#include "libshapeproc/sample/random.hpp"
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::metrics {
 namespace {
 
 using geometry::Vec3;
-constexpr double kPi = 3.14159265358979323846;
 
 geometry::Scene point_scene(const std::vector<Vec3>& points, double width, double height) {
   geometry::Scene scene;
@@ -33,7 +33,7 @@ geometry::Scene lattice(double spacing, int columns, int rows) {
 }
 
 geometry::Scene poisson(double width, double height, int count, std::uint64_t seed) {
-  sample::Random random(seed);
+  core::Random random(seed);
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) points.emplace_back(random.uniform(0, width), random.uniform(0, height), 0.0);
   return point_scene(points, width, height);
@@ -132,7 +132,7 @@ TEST(SceneStatistics, PoissonNearestNeighbourDistribution) {
     const double used = s.all.nearest.samples;
     ASSERT_GT(used, periodic ? n - 1 : 0.8 * n);
     for (double r = 0.25; r < 4.0; r += 0.25) {
-      const double expected = 1.0 - std::exp(-lambda * kPi * r * r);
+      const double expected = 1.0 - std::exp(-lambda * core::kPi * r * r);
       const double se = std::sqrt(expected * (1.0 - expected) / used);
       EXPECT_NEAR(s.all.nearest.cdf(r), expected, 4.0 * se + 1e-3) << "r = " << r << (periodic ? " torus" : " open");
     }
@@ -148,14 +148,14 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   o.correlation_bins = 10;
   const SceneStatistics s = compute_statistics(points, o);
   for (std::size_t k = 0; k < s.correlation.size(); ++k) {
-    const double expected_pairs = 2000.0 * (2000.0 - 1) / 10000.0 * kPi *
+    const double expected_pairs = 2000.0 * (2000.0 - 1) / 10000.0 * core::kPi *
                                   (std::pow((static_cast<double>(k) + 1) * 0.5, 2) - std::pow(static_cast<double>(k) * 0.5, 2));  // ordered pairs
     EXPECT_NEAR(s.correlation[k], 1.0, 4.0 * std::sqrt(2.0 / expected_pairs)) << "bin " << k;
   }
 
   std::ostringstream svg;
   svg << R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 400 400">)";
-  sample::Random random(5);
+  core::Random random(5);
   for (int i = 0; i < 3000; ++i) {
     svg << "<rect x=\"" << random.uniform(0, 392) << "\" y=\"" << random.uniform(0, 396)
         << "\" width=\"8\" height=\"4\"/>";
@@ -168,7 +168,7 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   for (std::size_t k = 0; k < q.correlation.size(); ++k) {
     // Offsets u with d in [2k, 2k + 2) between two 8 x 4 rectangles (Steiner: the 16 x 8 Minkowski
     // sum grown by r has area 128 + 48 r + π r²; bin 0 also holds the overlaps).
-    const double band = 96.0 + 4.0 * kPi * (2.0 * static_cast<double>(k) + 1.0) + (k == 0 ? 128.0 : 0.0);
+    const double band = 96.0 + 4.0 * core::kPi * (2.0 * static_cast<double>(k) + 1.0) + (k == 0 ? 128.0 : 0.0);
     const double expected_pairs = 3000.0 * 2999.0 / 160000.0 * band;
     EXPECT_NEAR(q.correlation[k], 1.0, 4.0 * std::sqrt(2.0 / expected_pairs) + 0.03) << "bin " << k;
   }

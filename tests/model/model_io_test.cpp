@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/io/error.hpp"
-#include "libshapeproc/io/interaction_plot.hpp"
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "tests/test_support.hpp"
@@ -57,7 +57,7 @@ TEST(ModelFile, FitWriteReadRoundTrip) {
   EXPECT_EQ(geometry::primitive_count(back.shapes[3].shape), geometry::primitive_count(exemplar.shapes[3]));
   EXPECT_EQ(model_to_json(back), model_to_json(read_model(dir.file("m.json"))));
   // The plot is an SVG with one polar sector per axis half and band.
-  const std::string svg = interaction_plot_svg(back);
+  const std::string svg = render::interaction_plot_svg(back);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("hard core"), std::string::npos);
 }
@@ -79,7 +79,7 @@ TEST_P(ModelFileBad, ClearErrors) {
   try {
     parse_model(text, "m.json");
     FAIL() << bad.name;
-  } catch (const InputError& e) {
+  } catch (const core::InputError& e) {
     EXPECT_NE(std::string(e.what()).find(bad.message), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).rfind("m.json", 0), 0u);
   }

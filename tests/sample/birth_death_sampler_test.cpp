@@ -126,8 +126,8 @@ TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
   EXPECT_LT(chi2, 13.8) << "P(chi2_2 > 13.8) = 0.001; observed " << observed[0] << " " << observed[1] << " " << observed[2];
 }
 
-render::Raster raster(int width, int height, float (*value)(int, int)) {
-  render::Raster r;
+geometry::Raster raster(int width, int height, float (*value)(int, int)) {
+  geometry::Raster r;
   r.width = width;
   r.height = height;
   for (int y = 0; y < height; ++y)
@@ -138,7 +138,7 @@ render::Raster raster(int width, int height, float (*value)(int, int)) {
 TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
   const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
   // A ring: inside between radii 20 and 38 of the 80 x 80 domain's centre (1 pixel per unit).
-  const render::Raster mask = raster(80, 80, [](int x, int y) {
+  const geometry::Raster mask = raster(80, 80, [](int x, int y) {
     const double r = std::hypot(x + 0.5 - 40, y + 0.5 - 40);
     return r >= 20 && r <= 38 ? 1.0f : 0.0f;
   });
@@ -166,7 +166,7 @@ TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
 TEST(BirthDeath, IntensityMapScalesTheDensity) {
   // Left half 0.25, right half 0.75: of a Poisson pattern's points, 3/4 fall on the right.
   const model::ShapeProcessModel m = poisson_points(0.05);
-  const render::Raster map = raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; });
+  const geometry::Raster map = raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; });
   const Box3 domain(Vec3(0, 0, 0), Vec3(40, 40, 0));
   int left = 0, right = 0;
   for (int seed = 1; seed <= 60; ++seed) {

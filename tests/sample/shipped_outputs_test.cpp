@@ -18,7 +18,7 @@
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
-#include "libshapeproc/sample/random.hpp"
+#include "libshapeproc/core/random.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::sample {
@@ -64,7 +64,7 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
 
   // The same elements, placed independently.
   geometry::Scene independent = output;
-  Random random(2);
+  core::Random random(2);
   for (geometry::Element& e : independent.elements) {
     e.position = Vec3(random.uniform(0, domain.max().x()), random.uniform(0, domain.max().y()), 0.0);
   }

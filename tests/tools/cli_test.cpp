@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
+#include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/render/raster.hpp"
 
 #include "tests/test_support.hpp"
@@ -309,7 +310,7 @@ TEST(CliStats, TextJsonAndComparisons) {
 
 // Mean and spread of a PNG's grey levels: a blank picture has no spread.
 double grey_spread(const std::filesystem::path& png) {
-  const render::Raster r = render::read_grayscale_png(png);
+  const geometry::Raster r = io::read_grayscale_png(png);
   double sum = 0.0, squares = 0.0;
   for (const float v : r.values) {
     sum += v;
@@ -345,8 +346,8 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   ASSERT_EQ(images, (std::vector<std::string>{"exemplar.png", "output-1.png"}));
   for (const std::string& image : images) EXPECT_GT(grey_spread(report / image), 0.05) << image;
   // Both pictures share one scale: the 300-wide output is 300 / 220 times the exemplar's width.
-  const render::Raster exemplar = render::read_grayscale_png(report / "exemplar.png");
-  const render::Raster output = render::read_grayscale_png(report / "output-1.png");
+  const geometry::Raster exemplar = io::read_grayscale_png(report / "exemplar.png");
+  const geometry::Raster output = io::read_grayscale_png(report / "output-1.png");
   EXPECT_NEAR(static_cast<double>(output.width) / exemplar.width, 300.0 / 220.0, 0.01);
   pugi::xml_document plot;
   ASSERT_TRUE(plot.load_file((report / "interaction.svg").c_str()));

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "tools/cli/commands.hpp"
 
 namespace shapeproc::cli {
@@ -73,10 +73,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
 
   try {
     return action ? action(out) : 2;
-  } catch (const io::InputError& e) {
+  } catch (const core::InputError& e) {
     err << "shapeproc: " << one_line(e.what()) << '\n';
     return 2;
-  } catch (const io::UsageError& e) {
+  } catch (const core::UsageError& e) {
     err << "shapeproc: " << one_line(e.what()) << '\n';
     return 2;
   } catch (const std::exception& e) {

@@ -22,7 +22,7 @@ struct ReaderFlags {
   std::string window;
 
   void add_to(CLI::App& command);
-  io::ReaderOptions options() const;  // throws io::UsageError
+  io::ReaderOptions options() const;  // throws core::UsageError
   nlohmann::json to_json() const;
 };
 

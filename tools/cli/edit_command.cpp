@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -26,7 +26,7 @@ struct EditArguments {
 
 double parse_value(const std::string& text, const std::string& option, const std::string& edit) {
   const auto values = io::parse_number_list(text);
-  if (!values || values->size() != 1) throw io::UsageError(option + " " + edit + ": expected a number after '='");
+  if (!values || values->size() != 1) throw core::UsageError(option + " " + edit + ": expected a number after '='");
   return values->front();
 }
 
@@ -43,7 +43,7 @@ std::vector<std::size_t> parse_indices(const std::string& text, std::size_t coun
       values->front() >= static_cast<double>(count + first)) {
     std::ostringstream message;
     message << option << " " << edit << ": " << what << " '" << text << "' is not one of " << first << ".." << count + first - 1 << " or *";
-    throw io::UsageError(message.str());
+    throw core::UsageError(message.str());
   }
   return {static_cast<std::size_t>(values->front()) - first};
 }
@@ -57,7 +57,7 @@ void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::
   std::stringstream fields(edit.substr(0, equals));
   for (std::string part; std::getline(fields, part, ':');) parts.push_back(part);
   if (equals == std::string::npos || parts.size() != 3) {
-    throw io::UsageError(option + " " + edit + ": expected PAIR:AXIS:" + index_name + "=VALUE (indices as in shapeproc show)");
+    throw core::UsageError(option + " " + edit + ": expected PAIR:AXIS:" + index_name + "=VALUE (indices as in shapeproc show)");
   }
   const double value = parse_value(edit.substr(equals + 1), option, edit);
   for (std::size_t p : parse_indices(parts[0], m.interactions.size(), 0, "pair", option, edit)) {
@@ -70,10 +70,10 @@ void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::
 }
 
 int run_edit(const EditArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
-  if (io::extension_of(args.output) != "json") throw io::UsageError(args.output + ": the model is written as .json");
+  if (io::extension_of(args.output) != "json") throw core::UsageError(args.output + ": the model is written as .json");
   model::ShapeProcessModel m = io::read_model(args.model);
-  if (!(args.scale_beta > 0 && std::isfinite(args.scale_beta))) throw io::UsageError("--scale-beta must be positive");
-  if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds))) throw io::UsageError("--scale-thresholds must be positive");
+  if (!(args.scale_beta > 0 && std::isfinite(args.scale_beta))) throw core::UsageError("--scale-beta must be positive");
+  if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds))) throw core::UsageError("--scale-thresholds must be positive");
   nlohmann::json edits = nlohmann::json::array();
   if (args.isotropic) {
     // One axis per pair: thresholds and γ averaged over the axes (γ arithmetically, so that a
@@ -82,7 +82,7 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
       model::AxisParameters one = pair.axes.front();
       for (std::size_t a = 1; a < pair.axes.size(); ++a) {
         if (pair.axes[a].thresholds.size() != one.thresholds.size()) {
-          throw io::UsageError("--isotropic: the axes of a pair have different numbers of bands");
+          throw core::UsageError("--isotropic: the axes of a pair have different numbers of bands");
         }
         for (std::size_t k = 0; k < one.thresholds.size(); ++k) one.thresholds[k] += pair.axes[a].thresholds[k];
         for (std::size_t k = 0; k < one.gammas.size(); ++k) one.gammas[k] += pair.axes[a].gammas[k];
@@ -114,7 +114,7 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
   }
   for (const std::string& edit : args.beta) {
     const auto equals = edit.find('=');
-    if (equals == std::string::npos) throw io::UsageError("--beta " + edit + ": expected CATEGORY=VALUE");
+    if (equals == std::string::npos) throw core::UsageError("--beta " + edit + ": expected CATEGORY=VALUE");
     const std::string name = edit.substr(0, equals);
     const double value = parse_value(edit.substr(equals + 1), "--beta", edit);
     std::size_t index = m.categories.size();
@@ -141,7 +141,7 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
   try {
     model::validate(m);
   } catch (const std::exception& e) {
-    throw io::UsageError(std::string("the edited model is invalid: ") + e.what());
+    throw core::UsageError(std::string("the edited model is invalid: ") + e.what());
   }
   nlohmann::json fit = m.fit_json.empty() ? nlohmann::json::object() : nlohmann::json::parse(m.fit_json);
   nlohmann::json history = fit.value("edits", nlohmann::json::array());

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -25,13 +25,13 @@ struct FitArguments {
 
 std::vector<double> number_list(const std::string& text, const char* option) {
   const auto values = io::parse_number_list(text);
-  if (!values || values->empty()) throw io::UsageError(std::string(option) + ": expected numbers separated by commas, got '" + text + "'");
+  if (!values || values->empty()) throw core::UsageError(std::string(option) + ": expected numbers separated by commas, got '" + text + "'");
   return *values;
 }
 
 int run_fit(const FitArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
-  if (io::extension_of(args.output) != "json") throw io::UsageError(args.output + ": the model is written as .json");
+  if (io::extension_of(args.output) != "json") throw core::UsageError(args.output + ": the model is written as .json");
   const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments);
   io::write_model(result.model, args.output);
 
@@ -55,7 +55,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, con
   try {
     result = fit::fit_shape_process(exemplar, options);
   } catch (const std::invalid_argument& e) {
-    throw io::InputError(input, 0, e.what());
+    throw core::InputError(input, 0, e.what());
   }
   nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
   provenance["exemplar"] = input;
@@ -104,9 +104,9 @@ fit::FitOptions FitFlags::options() const {
   o.shapes_per_location = shapes_per_location;
   o.refinement = refine;
   o.lines = lines;
-  if (!(proxy_tolerance >= 0 && proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in [0, 1)");
+  if (!(proxy_tolerance >= 0 && proxy_tolerance < 1)) throw core::UsageError("--proxy-tolerance must be in [0, 1)");
   o.proxy_tolerance = proxy_tolerance;
-  if (!(data_weight >= 0 && data_weight < 1)) throw io::UsageError("--data-weight must be in [0, 1)");
+  if (!(data_weight >= 0 && data_weight < 1)) throw core::UsageError("--data-weight must be in [0, 1)");
   o.data_weight = data_weight;
   return o;
 }

@@ -34,12 +34,12 @@ struct FitFlags {
   double data_weight = fit::FitOptions{}.data_weight;
 
   void add_to(CLI::App& command);
-  fit::FitOptions options() const;  // throws io::UsageError
+  fit::FitOptions options() const;  // throws core::UsageError
   nlohmann::json to_json() const;
 };
 
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
-// reader and fit options. Fit failures become io::InputError naming the exemplar.
+// reader and fit options. Fit failures become core::InputError naming the exemplar.
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, const ReaderFlags& reader,
                             const std::vector<std::string>& arguments);
 

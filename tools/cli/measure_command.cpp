@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -47,9 +47,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 int run_measure(const MeasureArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
   const io::ReaderOptions reader = args.reader.options();
-  if (!(args.range > 0)) throw io::UsageError("--range must be positive");
+  if (!(args.range > 0)) throw core::UsageError("--range must be positive");
   if (!(args.proxy_tolerance >= 0 && args.proxy_tolerance < 1)) {
-    throw io::UsageError("--proxy-tolerance must be in [0, 1) (a fraction of the element's size)");
+    throw core::UsageError("--proxy-tolerance must be in [0, 1) (a fraction of the element's size)");
   }
   const geometry::Scene scene = io::read_scene(args.input, reader);
 
@@ -65,7 +65,7 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   try {
     measurer = std::make_unique<geometry::PairMeasurer>(scene, options);
   } catch (const std::invalid_argument& e) {
-    throw io::UsageError(std::string("--directions: ") + e.what());
+    throw core::UsageError(std::string("--directions: ") + e.what());
   }
   const double proxy_seconds = seconds_since(start);
   const auto measure_start = std::chrono::steady_clock::now();
@@ -94,9 +94,9 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   if (args.output.empty()) {
     write_pairs(out, scene.dimension, pairs);
   } else {
-    if (io::extension_of(args.output) != "csv") throw io::UsageError(args.output + ": pairs are written as .csv");
-    io::write_file_atomically(args.output, [&](std::ostream& file) { write_pairs(file, scene.dimension, pairs); });
-    io::write_file_atomically(args.output + ".json", [&](std::ostream& file) { file << provenance.json << '\n'; });
+    if (io::extension_of(args.output) != "csv") throw core::UsageError(args.output + ": pairs are written as .csv");
+    core::write_file_atomically(args.output, [&](std::ostream& file) { write_pairs(file, scene.dimension, pairs); });
+    core::write_file_atomically(args.output + ".json", [&](std::ostream& file) { file << provenance.json << '\n'; });
   }
   const geometry::ProxyStatistics& stats = measurer->statistics();
   const char* unit = scene.dimension == 2 ? "segments" : "triangles";

@@ -1,4 +1,5 @@
 #include "tools/cli/model_summary.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -11,7 +12,6 @@ namespace shapeproc::cli {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string g(double v, int digits = 4) {
   if (!std::isfinite(v)) return "-";
@@ -21,7 +21,7 @@ std::string g(double v, int digits = 4) {
 }
 
 std::string direction_text(const geometry::Vec3& d, int dimension) {
-  if (dimension == 2) return g(std::atan2(d.y(), d.x()) * 180 / kPi, 3) + " deg";
+  if (dimension == 2) return g(std::atan2(d.y(), d.x()) * 180 / core::kPi, 3) + " deg";
   return "(" + g(d.x(), 2) + ", " + g(d.y(), 2) + ", " + g(d.z(), 2) + ")";
 }
 

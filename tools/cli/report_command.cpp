@@ -4,8 +4,8 @@
 #include <memory>
 #include <sstream>
 
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/report/html_report.hpp"
 #include "tools/cli/commands.hpp"
@@ -72,7 +72,7 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
         }
       }
       if (std::filesystem::exists(args->directory) && !std::filesystem::is_directory(args->directory)) {
-        throw io::UsageError(args->directory + ": exists and is not a directory");
+        throw core::UsageError(args->directory + ": exists and is not a directory");
       }
       const EvaluatedScene exemplar = read_exemplar(args->exemplar, args->reader, flags);
       const Evaluation exemplar_eval = evaluate(exemplar, flags);
@@ -110,7 +110,7 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
                                 {"options", flags.to_json()}};
       for (std::size_t i = 0; i < outputs.size(); ++i) metrics["outputs"].push_back(evaluation_json(outputs[i], evals[i]));
       std::filesystem::create_directories(args->directory);
-      io::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
+      core::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
                                 [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
       r.timings.emplace_back("reading and metrics, in total",
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

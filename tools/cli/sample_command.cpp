@@ -11,11 +11,12 @@
 #include <optional>
 #include <thread>
 
-#include "libshapeproc/io/atomic_file.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "tools/cli/commands.hpp"
@@ -36,19 +37,19 @@ std::string suffixed(const std::string& path, int chain, int chains) {
 
 // The mask of an SVG domain: its filled shapes, rasterised over their own window, 2048 pixels
 // along the longer side.
-render::Raster domain_mask(const std::string& path) {
+geometry::Raster domain_mask(const std::string& path) {
   const std::string extension = io::extension_of(path);
-  if (extension == "png") return render::read_grayscale_png(path);
-  if (extension != "svg") throw io::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + path + "'");
+  if (extension == "png") return io::read_grayscale_png(path);
+  if (extension != "svg") throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + path + "'");
   const geometry::Scene shapes = io::read_scene(path, {});
-  if (shapes.dimension != 2 || shapes.elements.empty()) throw io::InputError(path, 0, "the domain has no filled shape");
+  if (shapes.dimension != 2 || shapes.elements.empty()) throw core::InputError(path, 0, "the domain has no filled shape");
   const geometry::Vec3 size = shapes.window.sizes();
   const double longest = std::max(size.x(), size.y());
   const int width = std::max(8, static_cast<int>(std::lround(2048 * size.x() / longest)));
   const int height = std::max(8, static_cast<int>(std::lround(2048 * size.y() / longest)));
-  render::Raster mask = render::rasterize_filled(shapes, shapes.window, width, height);
+  geometry::Raster mask = render::rasterize_filled(shapes, shapes.window, width, height);
   if (std::none_of(mask.values.begin(), mask.values.end(), [](float v) { return v >= 0.5f; })) {
-    throw io::InputError(path, 0, "the domain has no filled shape (nothing to sample in)");
+    throw core::InputError(path, 0, "the domain has no filled shape (nothing to sample in)");
   }
   return mask;
 }
@@ -80,19 +81,19 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   const auto sizes = io::parse_number_list(size);
   if (!sizes || static_cast<int>(sizes->size()) != model.dimension ||
       !std::all_of(sizes->begin(), sizes->end(), [](double v) { return v > 0 && std::isfinite(v); })) {
-    throw io::UsageError("--size: expected " + std::string(model.dimension == 2 ? "W,H" : "W,H,D") +
+    throw core::UsageError("--size: expected " + std::string(model.dimension == 2 ? "W,H" : "W,H,D") +
                          " (positive) for a " + std::to_string(model.dimension) + "D model, got '" + size + "'");
   }
-  if (!png.empty() && io::extension_of(png) != "png") throw io::UsageError("--png: expected a .png file, got '" + png + "'");
+  if (!png.empty() && io::extension_of(png) != "png") throw core::UsageError("--png: expected a .png file, got '" + png + "'");
   if (model.dimension != 2 && (!domain.empty() || !intensity.empty())) {
-    throw io::UsageError("--domain and --intensity are for 2D models");
+    throw core::UsageError("--domain and --intensity are for 2D models");
   }
-  if (boundary == "torus" && !domain.empty()) throw io::UsageError("--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
+  if (boundary == "torus" && !domain.empty()) throw core::UsageError("--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
   geometry::Box3 box(geometry::Vec3::Zero(), geometry::Vec3::Zero());
   for (int axis = 0; axis < model.dimension; ++axis) box.max()[axis] = (*sizes)[static_cast<std::size_t>(axis)];
-  std::optional<render::Raster> mask, map;
+  std::optional<geometry::Raster> mask, map;
   if (!domain.empty()) mask = domain_mask(domain);
-  if (!intensity.empty()) map = render::read_grayscale_png(intensity);
+  if (!intensity.empty()) map = io::read_grayscale_png(intensity);
 
   sample::SamplerOptions base;
   base.iterations = iterations;
@@ -158,7 +159,7 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   for (std::thread& t : pool) t.join();
   if (terminal && total == 0) std::fprintf(stderr, "\n");
   for (const std::string& e : errors)
-    if (!e.empty()) throw io::UsageError(e);
+    if (!e.empty()) throw core::UsageError(e);
 
   parameters["size"] = *sizes;
   parameters["seed"] = seed;
@@ -178,7 +179,7 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
     const std::string file = suffixed(output, c, chains);
     io::write_scene(result.scene, file, make_provenance(command_name, arguments, chain_parameters));
     if (!trace.empty()) {
-      io::write_file_atomically(suffixed(trace, c, chains), [&](std::ostream& f) {
+      core::write_file_atomically(suffixed(trace, c, chains), [&](std::ostream& f) {
         f << "# shapeproc " << command_name << " seed " << seed << " chain " << c + 1 << "\nstep,elements,log_density\n";
         for (const auto& t : result.trace) f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
       });
@@ -234,7 +235,7 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
   args->sample.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      if (!args->model.empty() && io::extension_of(args->model) != "json") throw io::UsageError(args->model + ": the model is written as .json");
+      if (!args->model.empty() && io::extension_of(args->model) != "json") throw core::UsageError(args->model + ": the model is written as .json");
       const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments);
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
       print_model_summary(fitted.model, out);

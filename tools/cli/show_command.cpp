@@ -1,8 +1,8 @@
 // shapeproc show model.json [--plot interaction.svg]: the summary of a model, and its picture.
 #include <memory>
 
-#include "libshapeproc/io/interaction_plot.hpp"
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -23,8 +23,8 @@ void add_show_command(CLI::App& app, Action& action) {
       const model::ShapeProcessModel model = io::read_model(args->model);
       print_model_summary(model, out);
       if (!args->plot.empty()) {
-        if (io::extension_of(args->plot) != "svg") throw io::UsageError(args->plot + ": the plot is written as .svg");
-        io::write_interaction_plot(model, args->plot);
+        if (io::extension_of(args->plot) != "svg") throw core::UsageError(args->plot + ": the plot is written as .svg");
+        render::write_interaction_plot(model, args->plot);
         out << "wrote " << args->plot << '\n';
       }
       return 0;

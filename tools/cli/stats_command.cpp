@@ -8,7 +8,7 @@
 #include <memory>
 #include <sstream>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -143,7 +143,7 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
     const nlohmann::json& p = e.provenance;
     e.periodic = p.contains("parameters") && p["parameters"].is_object() && p["parameters"].value("boundary", "") == "torus";
   }
-  if (e.scene.elements.empty()) throw io::InputError(file, 0, "the scene has no elements to measure");
+  if (e.scene.elements.empty()) throw core::InputError(file, 0, "the scene has no elements to measure");
   return e;
 }
 
@@ -169,9 +169,9 @@ void MetricFlags::add_to(CLI::App& command) {
 }
 
 metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene, double at_range) const {
-  if (!(range >= 0)) throw io::UsageError("--range must be positive");
-  if (!(neighbourhood >= 0)) throw io::UsageError("--neighbourhood must be positive");
-  if (!(proxy_tolerance > 0 && proxy_tolerance < 1)) throw io::UsageError("--proxy-tolerance must be in (0, 1)");
+  if (!(range >= 0)) throw core::UsageError("--range must be positive");
+  if (!(neighbourhood >= 0)) throw core::UsageError("--neighbourhood must be positive");
+  if (!(proxy_tolerance > 0 && proxy_tolerance < 1)) throw core::UsageError("--proxy-tolerance must be in (0, 1)");
   metrics::StatisticsOptions o;
   o.measurement.direction = direction_kind(direction);
   o.measurement.directions = directions > 0 ? directions : (scene.scene.dimension == 3 ? 12 : 8);
@@ -180,7 +180,7 @@ metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene, dou
   try {
     geometry::DirectionBins bins(scene.scene.dimension, o.measurement.directions);
   } catch (const std::invalid_argument& e) {
-    throw io::UsageError(std::string("--directions: ") + e.what());
+    throw core::UsageError(std::string("--directions: ") + e.what());
   }
   o.edge = edge == "border" ? metrics::EdgeTreatment::border
            : edge == "none" ? metrics::EdgeTreatment::none : metrics::EdgeTreatment::automatic;
@@ -197,7 +197,7 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags, const
                     const metrics::SceneStatistics* reference_statistics) {
   Evaluation e;
   if (reference && reference->scene.dimension != scene.scene.dimension) {
-    throw io::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " + reference->file + " is " +
+    throw core::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " + reference->file + " is " +
                          std::to_string(reference->scene.dimension) + "D");
   }
   const double range = reference_statistics ? reference_statistics->range : 0.0;

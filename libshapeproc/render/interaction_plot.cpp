@@ -1,17 +1,17 @@
-#include "libshapeproc/io/interaction_plot.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
 
-namespace shapeproc::io {
+namespace shapeproc::render {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // γ to colour: 0 → dark red, 1 → white, ≥ 4 → dark blue (log scale above 1).
 std::string colour(double gamma) {
@@ -68,11 +68,11 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
     const std::size_t axes = pair.axes.size();
     if (model.dimension == 2) {
       svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << outer << "\" fill=\"white\" stroke=\"#999\"/>\n";
-      const double half = axes <= 1 ? kPi : kPi / (2.0 * static_cast<double>(axes));  // each direction spans 2π/D
+      const double half = axes <= 1 ? core::kPi : core::kPi / (2.0 * static_cast<double>(axes));  // each direction spans 2π/D
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
         const double angle = std::atan2(a.direction.y(), a.direction.x());
-        for (const double centre : {angle, angle + kPi}) {
+        for (const double centre : {angle, angle + core::kPi}) {
           if (axes <= 1 && centre != angle) continue;
           const double a0 = centre - half, a1 = centre + half;
           svg << "<path d=\"" << sector(cx, cy, 0, radius(a.thresholds.front()), a0, a1) << "\" fill=\"black\"/>\n";
@@ -121,7 +121,7 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
 
 void write_interaction_plot(const model::ShapeProcessModel& model, const std::filesystem::path& file) {
   const std::string text = interaction_plot_svg(model);
-  write_file_atomically(file, [&](std::ostream& out) { out << text; });
+  core::write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
-}  // namespace shapeproc::io
+}  // namespace shapeproc::render

@@ -1,6 +1,6 @@
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 
-namespace shapeproc::io {
+namespace shapeproc::core {
 
 namespace {
 std::string locate(const std::string& file, int line, const std::string& message) {
@@ -13,4 +13,7 @@ std::string locate(const std::string& file, int line, const std::string& message
 InputError::InputError(std::string file, int line, const std::string& message)
     : std::runtime_error(locate(file, line, message)), file_(std::move(file)), line_(line) {}
 
-}  // namespace shapeproc::io
+ArgumentError::ArgumentError(const std::string& function, const std::string& message)
+    : std::invalid_argument(function + ": " + message) {}
+
+}  // namespace shapeproc::core

@@ -1,9 +1,9 @@
-#include "libshapeproc/model/neighbour_grid.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace shapeproc::model {
+namespace shapeproc::geometry {
 
 NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size, bool periodic)
     : window_(window), dimension_(dimension), periodic_(periodic) {
@@ -47,4 +47,4 @@ void NeighbourGrid::remove(int id, const geometry::Vec3& position) {
   }
 }
 
-}  // namespace shapeproc::model
+}  // namespace shapeproc::geometry

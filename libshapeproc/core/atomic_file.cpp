@@ -1,12 +1,12 @@
-#include "libshapeproc/io/atomic_file.hpp"
+#include "libshapeproc/core/atomic_file.hpp"
 
 #include <fstream>
 #include <random>
 #include <stdexcept>
 
-#include "libshapeproc/io/error.hpp"
+#include "libshapeproc/core/error.hpp"
 
-namespace shapeproc::io {
+namespace shapeproc::core {
 
 namespace fs = std::filesystem;
 
@@ -35,4 +35,4 @@ void write_file_atomically(const fs::path& target, const std::function<void(std:
   }
 }
 
-}  // namespace shapeproc::io
+}  // namespace shapeproc::core

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <random>
 
-namespace shapeproc::sample {
+namespace shapeproc::core {
 
 class Random {
  public:
@@ -30,4 +30,4 @@ class Random {
   std::mt19937_64 engine_;
 };
 
-}  // namespace shapeproc::sample
+}  // namespace shapeproc::core

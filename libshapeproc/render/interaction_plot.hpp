@@ -9,9 +9,9 @@
 
 #include "libshapeproc/model/shape_process_model.hpp"
 
-namespace shapeproc::io {
+namespace shapeproc::render {
 
 std::string interaction_plot_svg(const model::ShapeProcessModel& model);
 void write_interaction_plot(const model::ShapeProcessModel& model, const std::filesystem::path& file);
 
-}  // namespace shapeproc::io
+}  // namespace shapeproc::render

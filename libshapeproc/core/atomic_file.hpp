@@ -5,7 +5,7 @@
 #include <functional>
 #include <ostream>
 
-namespace shapeproc::io {
+namespace shapeproc::core {
 
 // Calls `write` with a stream on a temporary file beside `target`, then renames it to `target`.
 // If `write` throws or the stream fails, the temporary file is removed, `target` is left as it
@@ -13,4 +13,4 @@ namespace shapeproc::io {
 void write_file_atomically(const std::filesystem::path& target,
                            const std::function<void(std::ostream&)>& write);
 
-}  // namespace shapeproc::io
+}  // namespace shapeproc::core

@@ -7,7 +7,7 @@
 
 #include "libshapeproc/geometry/types.hpp"
 
-namespace shapeproc::model {
+namespace shapeproc::geometry {
 
 class NeighbourGrid {
  public:
@@ -52,4 +52,4 @@ class NeighbourGrid {
   std::vector<std::vector<int>> cells_;
 };
 
-}  // namespace shapeproc::model
+}  // namespace shapeproc::geometry

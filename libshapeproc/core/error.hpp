@@ -1,0 +1,48 @@
+// The project's errors, one message format for all of them:
+// - InputError: a file that cannot be read as what it claims to be ("FILE:LINE: MESSAGE");
+// - UsageError: options that make no sense together, independent of any file;
+// - ArgumentError: a library function called with arguments outside its domain
+//   ("FUNCTION: MESSAGE"; see check.hpp);
+// - InternalError: a broken invariant (SHAPEPROC_ASSERT; a bug, never the user's fault).
+// The command line turns the first three into a one-line message and exit code 2; an
+// InternalError or any other exception is an internal failure (exit code 1).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace shapeproc::core {
+
+// A problem in an input file. what() reads "FILE:LINE: MESSAGE", or "FILE: MESSAGE" when the
+// line is unknown (line 0).
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, int line, const std::string& message);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+
+ private:
+  std::string file_;
+  int line_;
+};
+
+// A bad option value or combination, independent of any file's contents.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A library function's argument outside its domain. what() reads "FUNCTION: MESSAGE".
+class ArgumentError : public std::invalid_argument {
+ public:
+  ArgumentError(const std::string& function, const std::string& message);
+};
+
+// A broken internal invariant, thrown by SHAPEPROC_ASSERT. what() reads
+// "internal error at FILE:LINE: CONDITION (MESSAGE)".
+class InternalError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+}  // namespace shapeproc::core
