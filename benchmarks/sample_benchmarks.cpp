@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -16,7 +17,7 @@ std::string data(const char* relative) { return std::string(SHAPEPROC_DATA_DIR) 
 
 struct Fitted {
   shapeproc::model::ShapeProcessModel model;
-  shapeproc::geometry::Box3 domain;
+  std::vector<double> domain;  // W,H of a torus
 };
 
 const Fitted& fitted(const char* file, const char* category_by, bool split) {
@@ -30,7 +31,7 @@ const Fitted& fitted(const char* file, const char* category_by, bool split) {
     entry = std::make_unique<Fitted>();
     entry->model = shapeproc::fit::fit_shape_process(exemplar, {}).model;
     const auto size = exemplar.window.sizes();
-    entry->domain = shapeproc::geometry::Box3(shapeproc::geometry::Vec3::Zero(), 2 * size);
+    entry->domain = {2 * size.x(), 2 * size.y()};
   }
   return *entry;
 }
@@ -40,8 +41,10 @@ void BM_Sample50k(benchmark::State& state, const char* file, const char* categor
   shapeproc::sample::SamplerOptions options;
   options.iterations = 50000;
   std::size_t elements = 0;
+  const auto domain = shapeproc::geometry::Domain::from_sizes(f.domain, shapeproc::geometry::Boundary::torus);
   for (auto _ : state) {
-    const auto result = shapeproc::sample::sample_shape_process(f.model, f.domain, options);
+    shapeproc::core::Random random(1);
+    const auto result = shapeproc::sample::sample_shape_process(f.model, domain, options, random);
     elements = result.scene.elements.size();
     benchmark::DoNotOptimize(elements);
   }

@@ -3,6 +3,7 @@
 // - UsageError: options that make no sense together, independent of any file;
 // - ArgumentError: a library function called with arguments outside its domain
 //   ("FUNCTION: MESSAGE"; see check.hpp);
+// - Cancelled: a long run stopped because its caller asked;
 // - InternalError: a broken invariant (SHAPEPROC_ASSERT; a bug, never the user's fault).
 // The command line turns the first three into a one-line message and exit code 2; an
 // InternalError or any other exception is an internal failure (exit code 1).
@@ -36,6 +37,12 @@ class UsageError : public std::runtime_error {
 class ArgumentError : public std::invalid_argument {
  public:
   ArgumentError(const std::string& function, const std::string& message);
+};
+
+// A run stopped at the caller's request (a cancellation flag was set).
+class Cancelled : public std::runtime_error {
+ public:
+  Cancelled() : std::runtime_error("cancelled") {}
 };
 
 // A broken internal invariant, thrown by SHAPEPROC_ASSERT. what() reads

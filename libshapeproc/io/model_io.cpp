@@ -247,8 +247,9 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     throw core::InputError(file_name, line, "malformed JSON: " + message);
   }
   const Reader r(file_name);
-  if (!document.is_object()) r.fail("(document)", "expected a JSON object");
-  if (r.text(r.field(document, "", "format"), "format") != kFormat) r.fail("format", std::string("expected \"") + kFormat + "\"");
+  if (!document.is_object() || !document.contains("format") || document["format"] != kFormat) {
+    throw core::InputError(file_name, 0, std::string("not a shapeproc model file (it has no \"format\": \"") + kFormat + "\")");
+  }
   const int version = r.integer(r.field(document, "", "version"), "version");
   if (version != kVersion) r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " + std::to_string(version));
   ShapeProcessModel model;
@@ -363,6 +364,11 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
 }
 
 ShapeProcessModel read_model(const std::filesystem::path& file) {
+  const std::string extension = extension_of(file);
+  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "off" || extension == "stl" || extension == "csv") {
+    throw core::UsageError(file.string() + ": this is an exemplar, not a model; use shapeproc synthesize " + file.string() +
+                           " (or shapeproc fit " + file.string() + " -o model.json first)");
+  }
   const std::string text = read_text_file(file);
   return parse_model(text, file.string());
 }

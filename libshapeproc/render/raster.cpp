@@ -16,6 +16,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/render/png_text.hpp"
 
 namespace shapeproc::render {
 
@@ -252,10 +253,11 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
     cairo_stroke(cr.get());
   }
   cairo_surface_flush(surface.get());
-  core::write_file_atomically(path, [&](std::ostream& out) {
-    const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &out);
-    if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
-  });
+  std::ostringstream bytes;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &bytes);
+  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
+  const std::string png = options.text.empty() ? bytes.str() : add_png_text(bytes.str(), options.text);
+  core::write_file_atomically(path, [&](std::ostream& out) { out << png; });
 }
 
 }  // namespace shapeproc::render

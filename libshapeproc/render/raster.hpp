@@ -7,6 +7,7 @@
 
 #include "libshapeproc/geometry/raster.hpp"
 #include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/render/png_text.hpp"
 
 namespace shapeproc::render {
 
@@ -19,6 +20,7 @@ struct RenderOptions {
   double scale = 0.0;                 // pixels per unit length; when positive, replaces long_side
   std::vector<bool> highlight;        // per element: draw in red with a red ring (collisions); may be empty
   bool draw_window = true;            // the window's outline, in grey
+  PngText text;                       // tEXt chunks (seed, command); none when empty
 };
 
 // Renders a scene to a PNG, written atomically: 2D with each drawable's style (fill, stroke,

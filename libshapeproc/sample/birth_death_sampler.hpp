@@ -8,64 +8,89 @@
 //   and category; wrapped on a torus, rejected when it leaves an open domain); the proposal is
 //   symmetric, so it is accepted with probability min(1, λ(x_i' | x \ x_i) / λ(x_i | x \ x_i)) and
 //   the chain keeps the same target density.
-// λ comes from model::Interaction and model::pair_effect, the implementation the fit uses.
+// λ comes from model::Interaction and model::pair_effect, the implementation the fit uses; the
+// domain's mask and intensity map multiply β by a local factor (0 outside the mask).
 #pragma once
 
-#include <cstdint>
-#include <functional>
+#include <memory>
 #include <vector>
 
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
-#include "libshapeproc/geometry/raster.hpp"
+#include "libshapeproc/synthesis/synthesizer.hpp"
+
+namespace shapeproc::geometry {
+class PairMeasurer;
+}
+namespace shapeproc::model {
+class Interaction;
+}
 
 namespace shapeproc::sample {
 
 struct SamplerOptions {
-  // Steps; 0 = run until the element count is stationary: checked after 20,000 steps and then
-  // every max(10,000, a quarter of the steps so far); the run stops once it has made at least
-  // 1,000 steps per element present and the second half of the run, cut into ten batches, has
-  // quarters whose mean counts differ by at most a quarter of max(1, 1% of the mean) plus two
-  // standard errors from the batch means; or at `max_iterations` (then SampleResult::stationary
-  // is false).
+  // Steps; 0 = run until the element count is stationary (stationarity.hpp), or at most
+  // `max_iterations` (then the result is not stationary).
   long long iterations = 0;
   long long max_iterations = 5'000'000;
   double shift_probability = 1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
   double shift_radius = 0.0;             // ρ; 0 = half the model's interaction range (1/20 of the
                                          // domain's shorter side for a model without interaction)
-  std::uint64_t seed = 1;
-  bool periodic = true;  // toroidal distances on the rectangular or box domain
-  long long trace_every = 0;  // record the state every so many steps (0: no trace)
-  // 2D, stretched over the domain (x right, y down): a shape mask (inside where ≥ 0.5; every
-  // element must lie inside entirely, its proxy outline tested at half-pixel spacing) and an
-  // intensity map (β_c × value). Either may be null. β = 0 outside the mask.
-  const geometry::Raster* mask = nullptr;
-  const geometry::Raster* intensity = nullptr;
-  // Called now and then with the steps done so far (for a progress bar); may be empty.
-  std::function<void(long long done, long long total)> progress;
+  long long trace_every = 0;             // record the state every so many steps (0: no trace)
 };
 
-struct TracePoint {
-  long long step = 0;
-  int elements = 0;
-  double log_density = 0.0;  // unnormalised log f(x)
+// How often each move was proposed and accepted.
+struct MoveCounts {
+  long long births_accepted = 0, births_proposed = 0;
+  long long deaths_accepted = 0, deaths_proposed = 0;
+  long long shifts_accepted = 0, shifts_proposed = 0;
 };
 
 struct SampleResult {
-  geometry::Scene scene;  // the model's shapes, the sampled elements, the domain as window
+  geometry::Scene scene;  // the model's shapes, the sampled elements, the domain's box as window
   long long iterations = 0;
-  long long births_accepted = 0, deaths_accepted = 0, births_proposed = 0, deaths_proposed = 0;
-  long long shifts_accepted = 0, shifts_proposed = 0;
+  MoveCounts moves;
   bool stationary = true;  // false when the automatic rule hit max_iterations
-  std::vector<TracePoint> trace;
+  std::vector<synthesis::TracePoint> trace;
 };
 
-// Seed of chain `chain` of a run seeded `seed` (chain 0 keeps the seed).
-std::uint64_t chain_seed(std::uint64_t seed, int chain);
+// The shape process as a synthesis method: construction validates the model and options and
+// builds what every chain shares (the shape space's proxies, the compiled interaction, the shapes
+// of each category); sample() runs one chain and may be called from several threads at once.
+class ShapeProcessSampler : public synthesis::Synthesizer {
+ public:
+  // Throws core::ArgumentError for an invalid model, a mask or intensity map on a 3D domain, a
+  // domain of another dimension than the model's, or options out of range.
+  ShapeProcessSampler(const model::ShapeProcessModel& model, geometry::Domain domain, SamplerOptions options = {});
+  ~ShapeProcessSampler() override;
 
-// Samples the model on `domain` (a rectangle in 2D, a box in 3D). Throws std::invalid_argument on
-// an empty domain, or a mask or intensity map given for a 3D model.
-SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Box3& domain,
-                                  const SamplerOptions& options);
+  std::string method() const override { return "shape-process"; }
+  synthesis::SynthesisResult synthesize(core::Random& random, const synthesis::ChainControl& control) const override;
+  SampleResult sample(core::Random& random, const synthesis::ChainControl& control = {}) const;
+
+  const geometry::Domain& domain() const { return domain_; }
+  double shift_radius() const { return shift_radius_; }
+
+ private:
+  class Chain;
+
+  model::ShapeProcessModel model_;
+  geometry::Domain domain_;
+  SamplerOptions options_;
+  geometry::Scene shape_space_;
+  std::unique_ptr<const model::Interaction> interaction_;
+  std::unique_ptr<const geometry::PairMeasurer> measurer_;
+  std::vector<std::vector<int>> shapes_of_;  // per category
+  std::vector<double> log_beta_;             // per category
+  double log_measure_categories_ = 0.0;      // log(|D| C)
+  double shift_radius_ = 0.0;
+  double reach_ = 0.0;  // farthest apart two interacting reference positions can be
+};
+
+// One chain on `domain`, for one-off use.
+SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Domain& domain,
+                                  const SamplerOptions& options, core::Random& random);
 
 }  // namespace shapeproc::sample

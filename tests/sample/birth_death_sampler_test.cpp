@@ -7,13 +7,19 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/model_io.hpp"
-#include "libshapeproc/render/raster.hpp"
+#include <memory>
 
 namespace shapeproc::sample {
 namespace {
 
 using geometry::Box3;
 using geometry::Vec3;
+
+SampleResult sample_with_seed(const model::ShapeProcessModel& m, const geometry::Domain& domain, const SamplerOptions& options,
+                              std::uint64_t seed) {
+  core::Random random(seed);
+  return sample_shape_process(m, domain, options, random);
+}
 
 model::ShapeProcessModel poisson_points(double beta) {
   model::ShapeProcessModel m;
@@ -25,14 +31,13 @@ model::ShapeProcessModel poisson_points(double beta) {
 TEST(BirthDeath, PoissonCountsFollowPoisson) {
   // γ = 1 everywhere: the number of elements is Poisson(β|D|) = Poisson(20).
   const model::ShapeProcessModel m = poisson_points(0.01);
-  const Box3 domain(Vec3(0, 0, 0), Vec3(50, 40, 0));
+  const geometry::Domain domain = geometry::Domain::from_sizes({50, 40}, geometry::Boundary::torus);
   const int runs = 300;
   std::vector<double> counts;
   for (int seed = 1; seed <= runs; ++seed) {
     SamplerOptions options;
-    options.seed = static_cast<std::uint64_t>(seed);
     options.iterations = 4000;
-    counts.push_back(static_cast<double>(sample_shape_process(m, domain, options).scene.elements.size()));
+    counts.push_back(static_cast<double>(sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements.size()));
   }
   double mean = 0, variance = 0;
   for (double c : counts) mean += c / runs;
@@ -55,11 +60,10 @@ const char* kSquares = R"({
 
 TEST(BirthDeath, HardCoreIsNeverViolated) {
   const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
-  const Box3 domain(Vec3(0, 0, 0), Vec3(60, 60, 0));
+  const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::torus);
   SamplerOptions options;
-  options.seed = 11;
   options.iterations = 30000;
-  const SampleResult result = sample_shape_process(m, domain, options);
+  const SampleResult result = sample_with_seed(m, domain, options, 11);
   ASSERT_GT(result.scene.elements.size(), 10u);
   const geometry::PairMeasurer measurer(result.scene, m.measurement_options(true));
   for (std::size_t i = 0; i < result.scene.elements.size(); ++i) {
@@ -72,16 +76,14 @@ TEST(BirthDeath, HardCoreIsNeverViolated) {
 
 TEST(BirthDeath, SameSeedSameOutput) {
   const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
-  const Box3 domain(Vec3(0, 0, 0), Vec3(40, 40, 0));
+  const geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
   SamplerOptions options;
-  options.seed = 5;
   options.iterations = 5000;
-  const SampleResult a = sample_shape_process(m, domain, options);
-  const SampleResult b = sample_shape_process(m, domain, options);
+  const SampleResult a = sample_with_seed(m, domain, options, 5);
+  const SampleResult b = sample_with_seed(m, domain, options, 5);
   ASSERT_EQ(a.scene.elements.size(), b.scene.elements.size());
   for (std::size_t i = 0; i < a.scene.elements.size(); ++i) EXPECT_EQ(a.scene.elements[i].position, b.scene.elements[i].position);
-  options.seed = 6;
-  const SampleResult c = sample_shape_process(m, domain, options);
+  const SampleResult c = sample_with_seed(m, domain, options, 6);
   EXPECT_TRUE(c.scene.elements.size() != a.scene.elements.size() ||
               c.scene.elements.front().position != a.scene.elements.front().position);
 }
@@ -107,14 +109,13 @@ TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
   const double area = 1.0 - blocked;
   const double weights[3] = {1.0, 10.0, 50.0 * area};
   const double total = weights[0] + weights[1] + weights[2];
-  const Box3 domain(Vec3(0, 0, 0), Vec3(1, 1, 0));
+  const geometry::Domain domain = geometry::Domain::from_sizes({1, 1}, geometry::Boundary::torus);
   const int runs = 600;
   int observed[3] = {0, 0, 0};
   for (int seed = 1; seed <= runs; ++seed) {
     SamplerOptions options;
-    options.seed = static_cast<std::uint64_t>(seed);
     options.iterations = 400;
-    const std::size_t n = sample_shape_process(m, domain, options).scene.elements.size();
+    const std::size_t n = sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements.size();
     ASSERT_LE(n, 2u);
     ++observed[n];
   }
@@ -138,17 +139,14 @@ geometry::Raster raster(int width, int height, float (*value)(int, int)) {
 TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
   const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
   // A ring: inside between radii 20 and 38 of the 80 x 80 domain's centre (1 pixel per unit).
-  const geometry::Raster mask = raster(80, 80, [](int x, int y) {
+  geometry::Domain domain = geometry::Domain::from_sizes({80, 80}, geometry::Boundary::open);
+  domain.set_mask(std::make_shared<const geometry::Raster>(raster(80, 80, [](int x, int y) {
     const double r = std::hypot(x + 0.5 - 40, y + 0.5 - 40);
     return r >= 20 && r <= 38 ? 1.0f : 0.0f;
-  });
-  const Box3 domain(Vec3(0, 0, 0), Vec3(80, 80, 0));
+  })));
   SamplerOptions options;
-  options.seed = 3;
-  options.periodic = false;
-  options.mask = &mask;
   options.iterations = 40000;
-  const SampleResult result = sample_shape_process(m, domain, options);
+  const SampleResult result = sample_with_seed(m, domain, options, 3);
   ASSERT_GT(result.scene.elements.size(), 20u);
   const geometry::PairMeasurer measurer(result.scene, m.measurement_options(false));
   for (const geometry::Element& e : result.scene.elements) {
@@ -166,15 +164,13 @@ TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
 TEST(BirthDeath, IntensityMapScalesTheDensity) {
   // Left half 0.25, right half 0.75: of a Poisson pattern's points, 3/4 fall on the right.
   const model::ShapeProcessModel m = poisson_points(0.05);
-  const geometry::Raster map = raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; });
-  const Box3 domain(Vec3(0, 0, 0), Vec3(40, 40, 0));
+  geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
+  domain.set_intensity(std::make_shared<const geometry::Raster>(raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; })));
   int left = 0, right = 0;
   for (int seed = 1; seed <= 60; ++seed) {
     SamplerOptions options;
-    options.seed = static_cast<std::uint64_t>(seed);
-    options.intensity = &map;
     options.iterations = 6000;
-    for (const geometry::Element& e : sample_shape_process(m, domain, options).scene.elements) (e.position.x() < 20 ? left : right)++;
+    for (const geometry::Element& e : sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements) (e.position.x() < 20 ? left : right)++;
   }
   const double n = left + right;
   EXPECT_NEAR(n / 60, 0.05 * 1600 * 0.5, 4 * std::sqrt(40.0 / 60));
@@ -198,10 +194,9 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   along_y.gammas = {0.2, 0.5};
   pair.axes = {along_x, along_y};
   truth.interactions.push_back(pair);
-  const Box3 domain(Vec3(0, 0, 0), Vec3(300, 300, 0));
+  const geometry::Domain domain = geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
   SamplerOptions options;
-  options.seed = 2024;
-  const SampleResult sampled = sample_shape_process(truth, domain, options);
+  const SampleResult sampled = sample_with_seed(truth, domain, options, 2024);
   ASSERT_GT(sampled.scene.elements.size(), 700u);
 
   fit::FitOptions fit_options;

@@ -42,10 +42,9 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
   const fit::FitResult fitted = fit::fit_shape_process(exemplar, fit::FitOptions{});
 
   const Vec3 size = exemplar.window.sizes();
-  const geometry::Box3 domain(Vec3::Zero(), Vec3(2 * size.x(), 2 * size.y(), 0));
-  SamplerOptions options;
-  options.seed = 1;
-  const SampleResult result = sample_shape_process(fitted.model, domain, options);
+  const geometry::Domain domain = geometry::Domain::from_sizes({2 * size.x(), 2 * size.y()}, geometry::Boundary::torus);
+  core::Random chain_random(1);
+  const SampleResult result = sample_shape_process(fitted.model, domain, SamplerOptions{}, chain_random);
   const geometry::Scene& output = result.scene;
 
   metrics::StatisticsOptions open;
@@ -66,7 +65,7 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
   geometry::Scene independent = output;
   core::Random random(2);
   for (geometry::Element& e : independent.elements) {
-    e.position = Vec3(random.uniform(0, domain.max().x()), random.uniform(0, domain.max().y()), 0.0);
+    e.position = Vec3(random.uniform(0, domain.box().max().x()), random.uniform(0, domain.box().max().y()), 0.0);
   }
   const metrics::Comparison baseline = metrics::compare(metrics::compute_statistics(independent, torus), reference);
   EXPECT_LT(c.all.nearest, baseline.all.nearest) << name;

@@ -1,5 +1,9 @@
 #include "tools/cli/common.hpp"
 
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/io/text.hpp"
+
 namespace shapeproc::cli {
 
 void ReaderFlags::add_to(CLI::App& command) {
@@ -54,6 +58,17 @@ geometry::DistanceKind distance_kind(const std::string& name) {
 
 geometry::DirectionKind direction_kind(const std::string& name) {
   return name == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+}
+
+void check_output_extension(const std::string& file, const std::string& option) {
+  const std::string extension = io::extension_of(file);
+  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "csv" || extension == "png") return;
+  throw core::UsageError(option + ": cannot write '" + file + "': expected .svg, .obj, .ply, .csv or .png (a picture)");
+}
+
+model::ShapeProcessModel read_model_argument(const std::string& file, const std::string& command) {
+  (void)command;
+  return io::read_model(file);
 }
 
 io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,

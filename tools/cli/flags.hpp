@@ -15,7 +15,9 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/synthesis/synthesis_record.hpp"
 #include "tools/cli/common.hpp"
+#include "tools/cli/progress.hpp"
 
 namespace shapeproc::cli {
 
@@ -50,12 +52,22 @@ struct SampleFlags {
   int chains = 1, threads = 0;
   double shift_probability = sample::SamplerOptions{}.shift_probability;
   double shift_radius = 0.0;
+  double png_scale = 0.0;
+  VerbosityFlags verbosity;
 
   void add_to(CLI::App& command);
-  // Samples `model` into `output` (suffixed per chain), with the outputs' provenance; prints a
-  // line per chain. Returns the exit code.
-  int run(const model::ShapeProcessModel& model, const std::string& output, const std::string& command,
-          const std::vector<std::string>& arguments, nlohmann::json parameters, std::ostream& out) const;
+  // Checks what can be checked before any expensive work: --size's syntax (and its count when
+  // `dimension` is known, else 2 or 3), the output, --png and --trace extensions, --boundary with
+  // --domain, and that the mask and map files exist. Throws core::UsageError or core::InputError.
+  void check(const std::string& output, int dimension = 0) const;
+  // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
+  // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
+  // exit code.
+  int run(const model::ShapeProcessModel& model, const std::string& output, synthesis::SynthesisRecord record,
+          std::ostream& out) const;
 };
+
+// A JSON object's leaves as (prefix.key, text) pairs, in key order (for a record's options).
+std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix, const nlohmann::json& object);
 
 }  // namespace shapeproc::cli

@@ -1,6 +1,7 @@
 #include "tools/cli/model_summary.hpp"
 #include "libshapeproc/core/constants.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -87,6 +88,26 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
       for (const auto& note : fit["notes"]) out << "note: " << note.get<std::string>() << '\n';
     }
   }
+}
+
+void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out) {
+  out << "fitted: " << model.dimension << "D";
+  for (const model::CategoryParameters& c : model.categories) {
+    out << ", " << c.name << " beta " << g(c.beta) << (c.beta_status == model::ParameterStatus::unbounded ? " (unbounded)" : "");
+  }
+  std::size_t bands = 0, unbounded = 0;
+  double range = 0.0;
+  for (const model::PairInteraction& pair : model.interactions) {
+    for (const model::AxisParameters& a : pair.axes) {
+      bands += a.gammas.size();
+      range = std::max(range, a.thresholds.back());
+      for (model::ParameterStatus st : a.status) unbounded += st == model::ParameterStatus::unbounded;
+    }
+  }
+  out << "; " << model.interactions.size() << " interacting pair(s), " << bands << " gamma(s), range " << g(range) << ' '
+      << model.units;
+  if (unbounded > 0) out << " (" << unbounded << " unbounded: the fit has no finite maximum, docs/fit.md)";
+  out << '\n';
 }
 
 }  // namespace shapeproc::cli

@@ -1,4 +1,4 @@
-// The readable summary of a model that `fit` and `show` print.
+// The readable summaries of a model that `fit`, `show` and `synthesize` print.
 #pragma once
 
 #include <ostream>
@@ -8,5 +8,8 @@
 namespace shapeproc::cli {
 
 void print_model_summary(const model::ShapeProcessModel& model, std::ostream& out);
+// Two or three lines for `synthesize`: categories with β, interaction bands and range, the fit's
+// notes (unbounded estimates); `shapeproc show MODEL` prints the whole summary.
+void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out);
 
 }  // namespace shapeproc::cli

@@ -15,22 +15,6 @@ namespace shapeproc::cli {
 
 namespace {
 
-// "seed 1, 38474 steps, torus" from a shapeproc output's provenance.
-std::string note_from_provenance(const nlohmann::json& provenance) {
-  if (!provenance.is_object() || !provenance.contains("parameters") || !provenance["parameters"].is_object()) return {};
-  const nlohmann::json& p = provenance["parameters"];
-  std::ostringstream s;
-  s << "shapeproc " << provenance.value("command", std::string("?"));
-  if (p.contains("seed")) s << ", seed " << p["seed"].dump();
-  if (p.contains("chain") && p.value("chains", 1) > 1) s << ", chain " << p["chain"].dump();
-  if (p.contains("steps")) s << ", " << p["steps"].dump() << " steps";
-  if (p.value("iterations", nlohmann::json()) == "stationary") s << " (until stationary)";
-  if (p.contains("boundary")) s << ", " << p.value("boundary", std::string());
-  if (p.contains("domain")) s << ", domain " << p.value("domain", std::string());
-  if (p.contains("intensity")) s << ", intensity map " << p.value("intensity", std::string());
-  return s.str();
-}
-
 std::string join(const std::vector<std::string>& arguments) {
   std::string out;
   for (std::size_t i = 0; i < arguments.size(); ++i) {
@@ -87,7 +71,7 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics, nullptr, nullptr, ""};
       for (std::size_t i = 0; i < outputs.size(); ++i) {
         r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics, &*evals[i].comparison,
-                             &*evals[i].neighbourhood, note_from_provenance(outputs[i].provenance)});
+                             &*evals[i].neighbourhood, outputs[i].record ? outputs[i].record->summary() : std::string()});
       }
       r.model = model.get();
       r.model_label = args->model;

@@ -1,24 +1,18 @@
 // shapeproc sample model.json -o out.svg --size W,H[,D]: birth-death Metropolis-Hastings, and
 // shapeproc synthesize EXEMPLAR -o out.svg --size ...: fit, then sample.
-#include <unistd.h>
-
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cstdio>
+#include <filesystem>
 #include <memory>
-#include <mutex>
-#include <optional>
-#include <thread>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/io/text.hpp"
-#include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "libshapeproc/synthesis/run_chains.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/flags.hpp"
@@ -35,23 +29,21 @@ std::string suffixed(const std::string& path, int chain, int chains) {
   return (p.parent_path() / (p.stem().string() + "-" + std::to_string(chain + 1) + p.extension().string())).string();
 }
 
-// The mask of an SVG domain: its filled shapes, rasterised over their own window, 2048 pixels
-// along the longer side.
-geometry::Raster domain_mask(const std::string& path) {
-  const std::string extension = io::extension_of(path);
-  if (extension == "png") return io::read_grayscale_png(path);
-  if (extension != "svg") throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + path + "'");
-  const geometry::Scene shapes = io::read_scene(path, {});
-  if (shapes.dimension != 2 || shapes.elements.empty()) throw core::InputError(path, 0, "the domain has no filled shape");
-  const geometry::Vec3 size = shapes.window.sizes();
-  const double longest = std::max(size.x(), size.y());
-  const int width = std::max(8, static_cast<int>(std::lround(2048 * size.x() / longest)));
-  const int height = std::max(8, static_cast<int>(std::lround(2048 * size.y() / longest)));
-  geometry::Raster mask = render::rasterize_filled(shapes, shapes.window, width, height);
-  if (std::none_of(mask.values.begin(), mask.values.end(), [](float v) { return v >= 0.5f; })) {
-    throw core::InputError(path, 0, "the domain has no filled shape (nothing to sample in)");
-  }
-  return mask;
+void write_trace(const std::string& file, const synthesis::SynthesisResult& result) {
+  core::write_file_atomically(file, [&](std::ostream& f) {
+    f << "# shapeproc " << result.record.command << " seed " << result.record.seed << " chain " << result.record.chain
+      << "\nstep,elements,log_density\n";
+    for (const auto& t : result.trace) f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
+  });
+}
+
+// The PNG's text chunks: what made it, so a picture found alone still says its seed and command.
+std::vector<std::pair<std::string, std::string>> png_text(const synthesis::SynthesisRecord& record) {
+  std::string command;
+  for (std::size_t i = 0; i < record.arguments.size(); ++i) command += (i ? " " : "") + (i == 0 ? std::string("shapeproc") : record.arguments[i]);
+  return {{"Software", std::string("shapeproc ") + SHAPEPROC_VERSION},
+          {"Comment", "seed " + std::to_string(record.chain_seed) + (record.chains > 1 ? " (chain " + std::to_string(record.chain) + " of run seed " + std::to_string(record.seed) + ")" : std::string())},
+          {"Source", command}};
 }
 
 }  // namespace
@@ -74,123 +66,81 @@ void SampleFlags::add_to(CLI::App& command) {
       ->check(CLI::IsMember({"torus", "open"}));
   command.add_option("--trace", trace, "write element count and log density every 1/1000 of the steps (.csv)");
   command.add_option("--png", png, "also render the output to this PNG");
+  command.add_option("--png-scale", png_scale, "pixels per unit length of the PNG (default: 800 pixels along the longer side)")
+      ->check(CLI::PositiveNumber);
+  verbosity.add_to(command);
 }
 
-int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output, const std::string& command_name,
-                     const std::vector<std::string>& arguments, nlohmann::json parameters, std::ostream& out) const {
+void SampleFlags::check(const std::string& output, int dimension) const {
   const auto sizes = io::parse_number_list(size);
-  if (!sizes || static_cast<int>(sizes->size()) != model.dimension ||
-      !std::all_of(sizes->begin(), sizes->end(), [](double v) { return v > 0 && std::isfinite(v); })) {
-    throw core::UsageError("--size: expected " + std::string(model.dimension == 2 ? "W,H" : "W,H,D") +
-                         " (positive) for a " + std::to_string(model.dimension) + "D model, got '" + size + "'");
+  const bool count_ok = sizes && (dimension > 0 ? static_cast<int>(sizes->size()) == dimension : sizes->size() == 2 || sizes->size() == 3);
+  if (!count_ok || !std::all_of(sizes->begin(), sizes->end(), [](double v) { return v > 0 && std::isfinite(v); })) {
+    const std::string expected = dimension == 2 ? "W,H" : dimension == 3 ? "W,H,D" : "W,H (2D) or W,H,D (3D)";
+    throw core::UsageError("--size: expected " + expected + " (positive)" +
+                           (dimension > 0 ? " for a " + std::to_string(dimension) + "D model" : std::string()) + ", got '" + size + "'");
   }
+  check_output_extension(output, "-o");
   if (!png.empty() && io::extension_of(png) != "png") throw core::UsageError("--png: expected a .png file, got '" + png + "'");
-  if (model.dimension != 2 && (!domain.empty() || !intensity.empty())) {
-    throw core::UsageError("--domain and --intensity are for 2D models");
-  }
+  if (!trace.empty() && io::extension_of(trace) != "csv") throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
   if (boundary == "torus" && !domain.empty()) throw core::UsageError("--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
-  geometry::Box3 box(geometry::Vec3::Zero(), geometry::Vec3::Zero());
-  for (int axis = 0; axis < model.dimension; ++axis) box.max()[axis] = (*sizes)[static_cast<std::size_t>(axis)];
-  std::optional<geometry::Raster> mask, map;
-  if (!domain.empty()) mask = domain_mask(domain);
-  if (!intensity.empty()) map = io::read_grayscale_png(intensity);
+  if (sizes->size() == 3 && (!domain.empty() || !intensity.empty())) throw core::UsageError("--domain and --intensity are for 2D models");
+  if (!domain.empty() && io::extension_of(domain) != "svg" && io::extension_of(domain) != "png") {
+    throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + domain + "'");
+  }
+  if (!intensity.empty() && io::extension_of(intensity) != "png") {
+    throw core::UsageError("--intensity: expected a grayscale .png, got '" + intensity + "'");
+  }
+  for (const std::string* file : {&domain, &intensity}) {
+    if (!file->empty() && !std::filesystem::is_regular_file(*file)) throw core::InputError(*file, 0, "no such file");
+  }
+}
 
-  sample::SamplerOptions base;
-  base.iterations = iterations;
-  base.periodic = boundary.empty() ? domain.empty() : boundary == "torus";
-  base.mask = mask ? &*mask : nullptr;
-  base.intensity = map ? &*map : nullptr;
-  base.shift_probability = shift_probability;
-  base.shift_radius = shift_radius;
-  if (!trace.empty()) base.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
+int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output, synthesis::SynthesisRecord record,
+                     std::ostream& out) const {
+  check(output, model.dimension);
+  io::DomainFiles files;
+  files.size = *io::parse_number_list(size);
+  files.boundary = boundary;
+  files.mask = domain;
+  files.intensity = intensity;
+  const geometry::Domain sample_domain = io::read_domain(files, model.dimension);
 
-  // A progress bar on a terminal, over all chains; with the automatic rule (unknown length), a
-  // count of the steps done.
-  const bool terminal = isatty(fileno(stderr)) != 0;
-  std::atomic<long long> done{0};
-  std::mutex print;
-  long long last_shown = -1;
-  const long long total = iterations * chains;
-  auto report = [&](long long add) {
-    const long long now = done += add;
-    std::lock_guard<std::mutex> lock(print);
-    if (total > 0) {
-      const long long percent = 100 * now / total;
-      if (percent == last_shown) return;
-      last_shown = percent;
-      const int filled = static_cast<int>(percent / 4);
-      std::fprintf(stderr, "\rsampling [%s%s] %3lld%%", std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                   std::string(static_cast<std::size_t>(25 - filled), ' ').c_str(), percent);
-      if (now >= total) std::fprintf(stderr, "\n");
-    } else {
-      std::fprintf(stderr, "\rsampling: %lld steps (until the element count is stationary)", now);
-    }
-    std::fflush(stderr);
-  };
+  sample::SamplerOptions options;
+  options.iterations = iterations;
+  options.shift_probability = shift_probability;
+  options.shift_radius = shift_radius;
+  if (!trace.empty()) options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
+  const sample::ShapeProcessSampler sampler(model, sample_domain, options);
 
-  std::vector<sample::SampleResult> results(static_cast<std::size_t>(chains));
-  std::vector<double> seconds(static_cast<std::size_t>(chains));
-  std::vector<std::string> errors(static_cast<std::size_t>(chains));
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int c = next++; c < chains; c = next++) {
-      sample::SamplerOptions options = base;
-      options.seed = sample::chain_seed(seed, c);
-      long long reported = 0;
-      if (terminal) {
-        options.progress = [&](long long step, long long) {
-          report(step - reported);
-          reported = step;
-        };
-      }
-      const auto start = std::chrono::steady_clock::now();
-      try {
-        results[static_cast<std::size_t>(c)] = sample::sample_shape_process(model, box, options);
-      } catch (const std::exception& e) {
-        errors[static_cast<std::size_t>(c)] = e.what();
-      }
-      seconds[static_cast<std::size_t>(c)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-  };
-  const int thread_count = std::max(1, std::min(chains, threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < thread_count; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (terminal && total == 0) std::fprintf(stderr, "\n");
-  for (const std::string& e : errors)
-    if (!e.empty()) throw core::UsageError(e);
+  synthesis::ChainOptions chains_options;
+  chains_options.chains = chains;
+  chains_options.threads = threads;
+  chains_options.seed = seed;
+  record.domain_file = domain;
+  record.intensity_file = intensity;
+  chains_options.record = std::move(record);
+  ProgressBar bar("sampling", verbosity.show_progress());
+  chains_options.progress = [&bar](long long done, long long total) { bar.update(done, total); };
+  const std::vector<synthesis::SynthesisResult> results = synthesis::run_chains(sampler, chains_options);
+  bar.finish();
 
-  parameters["size"] = *sizes;
-  parameters["seed"] = seed;
-  parameters["iterations"] = iterations > 0 ? nlohmann::json(iterations) : nlohmann::json("stationary");
-  parameters["shift_probability"] = shift_probability;
-  if (shift_radius > 0) parameters["shift_radius"] = shift_radius;
-  parameters["boundary"] = base.periodic ? "torus" : "open";
-  parameters["chains"] = chains;
-  if (!domain.empty()) parameters["domain"] = domain;
-  if (!intensity.empty()) parameters["intensity"] = intensity;
   for (int c = 0; c < chains; ++c) {
-    const sample::SampleResult& result = results[static_cast<std::size_t>(c)];
-    nlohmann::json chain_parameters = parameters;
-    chain_parameters["chain"] = c + 1;
-    chain_parameters["chain_seed"] = sample::chain_seed(seed, c);
-    chain_parameters["steps"] = result.iterations;
+    const synthesis::SynthesisResult& result = results[static_cast<std::size_t>(c)];
     const std::string file = suffixed(output, c, chains);
-    io::write_scene(result.scene, file, make_provenance(command_name, arguments, chain_parameters));
-    if (!trace.empty()) {
-      core::write_file_atomically(suffixed(trace, c, chains), [&](std::ostream& f) {
-        f << "# shapeproc " << command_name << " seed " << seed << " chain " << c + 1 << "\nstep,elements,log_density\n";
-        for (const auto& t : result.trace) f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
-      });
+    io::write_scene(result.scene, file, io::synthesis_provenance(result.record));
+    if (!trace.empty()) write_trace(suffixed(trace, c, chains), result);
+    if (!png.empty()) {
+      render::RenderOptions picture;
+      picture.scale = png_scale;
+      picture.text = png_text(result.record);
+      render::write_png(result.scene, suffixed(png, c, chains), picture);
     }
-    if (!png.empty()) render::write_png(result.scene, suffixed(png, c, chains));
-    out << "sampled " << result.scene.elements.size() << " elements in " << result.iterations << " steps ("
-        << seconds[static_cast<std::size_t>(c)] << " s; births accepted " << result.births_accepted << "/"
-        << result.births_proposed << ", deaths " << result.deaths_accepted << "/" << result.deaths_proposed << ", shifts "
-        << result.shifts_accepted << "/" << result.shifts_proposed << "), seed " << sample::chain_seed(seed, c) << '\n';
-    if (!result.stationary) {
-      out << "warning: the element count was still changing after " << result.iterations
+    out << "sampled " << result.scene.elements.size() << " elements in " << result.record.steps << " steps ("
+        << result.record.seconds << " s";
+    for (std::size_t k = 0; k < result.counters.size(); ++k) out << (k ? ", " : "; ") << result.counters[k].first << ' ' << result.counters[k].second;
+    out << "), seed " << result.record.chain_seed << '\n';
+    if (!result.record.stationary) {
+      out << "warning: the element count was still changing after " << result.record.steps
           << " steps; the output may not be at equilibrium (give --iterations)\n";
     }
     out << "wrote " << file;
@@ -198,6 +148,19 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
     out << '\n';
   }
   return 0;
+}
+
+std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix, const nlohmann::json& object) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
+    if (it->is_object()) {
+      for (auto& pair : flatten_options(key, *it)) out.push_back(std::move(pair));
+    } else {
+      out.emplace_back(key, it->is_string() ? it->get<std::string>() : it->dump());
+    }
+  }
+  return out;
 }
 
 void add_sample_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
@@ -212,8 +175,13 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
   args->sample.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      const model::ShapeProcessModel model = io::read_model(args->model);
-      return args->sample.run(model, args->output, "sample", arguments, {{"model", args->model}}, out);
+      args->sample.check(args->output);
+      const model::ShapeProcessModel model = read_model_argument(args->model, "sample");
+      synthesis::SynthesisRecord record;
+      record.command = "sample";
+      record.arguments = arguments;
+      record.inputs = {{"model", args->model}};
+      return args->sample.run(model, args->output, std::move(record), out);
     };
   });
 }
@@ -236,12 +204,22 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
       if (!args->model.empty() && io::extension_of(args->model) != "json") throw core::UsageError(args->model + ": the model is written as .json");
+      args->sample.check(args->output);
+      args->fit.options();  // its own checks, before reading or fitting anything
+      args->reader.options();
+      args->sample.verbosity.stage("fitting " + args->input);
       const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments);
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
-      print_model_summary(fitted.model, out);
-      out << '\n';
-      return args->sample.run(fitted.model, args->output, "synthesize", arguments,
-                              {{"exemplar", args->input}, {"fit", args->fit.to_json()}, {"reader", args->reader.to_json()}}, out);
+      print_model_brief(fitted.model, out);
+      synthesis::SynthesisRecord record;
+      record.command = "synthesize";
+      record.arguments = arguments;
+      record.inputs = {{"exemplar", args->input}};
+      if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
+      record.options = flatten_options("fit", args->fit.to_json());
+      for (auto& pair : flatten_options("reader", args->reader.to_json())) record.options.push_back(std::move(pair));
+      args->sample.verbosity.stage("sampling");
+      return args->sample.run(fitted.model, args->output, std::move(record), out);
     };
   });
 }

@@ -1,6 +1,8 @@
 // shapeproc stats SCENE [--against EXEMPLAR] [--json]: the metrics of docs/metrics.md.
 #include "tools/cli/stats_command.hpp"
 
+#include "libshapeproc/io/synthesis_record_io.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -132,16 +134,11 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
   EvaluatedScene e;
   e.file = file;
   e.scene = io::read_scene(file, reader.options());
-  const std::string record = io::read_provenance(file);
-  if (!record.empty()) {
-    e.provenance = nlohmann::json::parse(record, nullptr, false);
-    if (e.provenance.is_discarded()) e.provenance = nullptr;
-  }
+  e.record = io::read_synthesis_record(file);
   if (boundary == "torus") {
     e.periodic = true;
-  } else if (boundary == "auto" && e.provenance.is_object()) {
-    const nlohmann::json& p = e.provenance;
-    e.periodic = p.contains("parameters") && p["parameters"].is_object() && p["parameters"].value("boundary", "") == "torus";
+  } else if (boundary == "auto" && e.record) {
+    e.periodic = e.record->boundary == geometry::Boundary::torus;
   }
   if (e.scene.elements.empty()) throw core::InputError(file, 0, "the scene has no elements to measure");
   return e;

@@ -11,6 +11,7 @@
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
+#include "libshapeproc/synthesis/synthesis_record.hpp"
 #include "tools/cli/common.hpp"
 
 namespace shapeproc::cli {
@@ -19,15 +20,15 @@ struct EvaluatedScene {
   std::string file;
   geometry::Scene scene;
   bool periodic = false;
-  nlohmann::json provenance;  // null when the file carries none
+  std::optional<synthesis::SynthesisRecord> record;  // a synthesised output's record, else none
 };
 
 // Reads `file`; the boundary is `boundary` (torus|open), or with "auto" the one recorded in a
-// shapeproc output's provenance (open for anything else).
+// synthesised output's record (open for anything else).
 EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader, const std::string& boundary);
 
 struct MetricFlags;
-// The exemplar side of a comparison: open, unless its own provenance says torus (`--boundary`
+// The exemplar side of a comparison: open, unless its own record says torus (`--boundary`
 // names the outputs' boundary, not the exemplar's).
 EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader, const MetricFlags& flags);
 

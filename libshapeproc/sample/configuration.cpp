@@ -1,0 +1,126 @@
+#include "libshapeproc/sample/configuration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shapeproc::sample {
+
+Configuration::Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
+                             const geometry::Domain& domain, double reach)
+    : interaction_(interaction),
+      measurer_(measurer),
+      grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
+      domain_(domain) {
+  shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
+}
+
+double Configuration::log_interaction(const Element& xi, int skip, std::vector<Link>& links) const {
+  near_.clear();
+  links.clear();
+  // Candidates nearest first (by the minimum-image distance of reference positions), so that a
+  // hard core, most likely with the nearest, rejects after few measurements.
+  candidates_.clear();
+  grid_.for_each_candidate(xi.position, [&](int slot) {
+    if (slot == skip) return;
+    const Element& other = elements_[static_cast<std::size_t>(slot)];
+    if (!interaction_.interacts(xi.category, other.category)) return;
+    const Vec3 t = domain_.minimum_image(other.position - xi.position);
+    // Shape distances are at least the reference positions' distance minus both radii (t is
+    // the nearest image in every coordinate, so no other image is nearer).
+    const double squared = t.squaredNorm();
+    const double far =
+        interaction_.max_range(xi.category, other.category) + measurer_.radius(xi.shape) + measurer_.radius(other.shape);
+    if (shape_distances_ && squared >= far * far) return;
+    candidates_.emplace_back(squared, slot);
+  });
+  std::sort(candidates_.begin(), candidates_.end());
+  bool forbidden = false;
+  for (const auto& [squared, slot] : candidates_) {
+    const model::PairEffect effect = model::pair_distance_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
+    if (effect.band == model::Interaction::kHardCore) {
+      forbidden = true;
+      break;
+    }
+    if (effect.axis_pending) near_.emplace_back(slot, effect);
+  }
+  if (forbidden) return -std::numeric_limits<double>::infinity();
+  double total = 0.0;
+  for (auto& [slot, effect] : near_) {
+    const Element& other = elements_[static_cast<std::size_t>(slot)];
+    model::decide_axis(interaction_, measurer_, xi, other, effect);
+    if (effect.band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
+    if (effect.band >= 0) {
+      const double value = interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
+      links.push_back({slot, value});
+      total += value;
+    }
+  }
+  return total;
+}
+
+void Configuration::add(const Element& e, double local, const std::vector<Link>& links) {
+  int slot;
+  if (!free_.empty()) {
+    slot = free_.back();
+    free_.pop_back();
+    elements_[static_cast<std::size_t>(slot)] = e;
+  } else {
+    slot = static_cast<int>(elements_.size());
+    elements_.push_back(e);
+    links_.emplace_back();
+    local_.push_back(0.0);
+  }
+  position_in_alive_.resize(elements_.size(), -1);
+  position_in_alive_[static_cast<std::size_t>(slot)] = static_cast<int>(alive_.size());
+  alive_.push_back(slot);
+  grid_.insert(slot, e.position);
+  link(slot, local, links);
+}
+
+void Configuration::remove(int slot) {
+  grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
+  unlink(slot);
+  const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
+  const int last = alive_.back();
+  alive_[static_cast<std::size_t>(rank)] = last;
+  position_in_alive_[static_cast<std::size_t>(last)] = rank;
+  alive_.pop_back();
+  position_in_alive_[static_cast<std::size_t>(slot)] = -1;
+  free_.push_back(slot);
+}
+
+void Configuration::move(int slot, const Vec3& position, double local, const std::vector<Link>& links) {
+  Element& e = elements_[static_cast<std::size_t>(slot)];
+  grid_.remove(slot, e.position);
+  e.position = position;
+  grid_.insert(slot, position);
+  unlink(slot);
+  link(slot, local, links);
+}
+
+std::vector<Element> Configuration::elements() const {
+  std::vector<Element> out;
+  std::vector<int> slots = alive_;
+  std::sort(slots.begin(), slots.end());  // a deterministic order
+  for (int slot : slots) out.push_back(elements_[static_cast<std::size_t>(slot)]);
+  return out;
+}
+
+void Configuration::link(int slot, double local, const std::vector<Link>& links) {
+  local_[static_cast<std::size_t>(slot)] = local;
+  links_[static_cast<std::size_t>(slot)] = links;
+  for (const Link& l : links) links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.log_gamma});
+}
+
+void Configuration::unlink(int slot) {
+  for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
+    std::vector<Link>& back = links_[static_cast<std::size_t>(l.slot)];
+    const auto it = std::find_if(back.begin(), back.end(), [&](const Link& b) { return b.slot == slot; });
+    *it = back.back();
+    back.pop_back();
+  }
+  links_[static_cast<std::size_t>(slot)].clear();
+}
+
+}  // namespace shapeproc::sample

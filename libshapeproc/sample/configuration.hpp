@@ -1,0 +1,79 @@
+// The state of a shape-process chain: the configuration x, with for every element its links (the
+// neighbours it interacts with and log Γ of each pair) and the log of its local factor of β. The
+// links make a death, and the old position of a shift, cost a sum instead of a new measurement
+// of every neighbour: log λ(x_i | x \ x_i) − log β_c = local + Σ links.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/model/interaction.hpp"
+
+namespace shapeproc::sample {
+
+using geometry::Element;
+using geometry::Vec3;
+
+// One interaction of an element with a neighbour: the neighbour's slot and log Γ of the pair.
+struct Link {
+  int slot;
+  double log_gamma;
+};
+
+// Elements in a vector (ids are slots; removed slots are reused) and a grid of their positions.
+class Configuration {
+ public:
+  // `reach`: the farthest reference positions of two interacting elements can be.
+  Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
+                const geometry::Domain& domain, double reach);
+
+  int size() const { return static_cast<int>(alive_.size()); }
+  const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }
+  int slot_of_rank(std::size_t rank) const { return alive_[rank]; }
+
+  // Σ log Γ(ξ, x_m) over the elements except `skip`, −∞ on a hard core; `links` receives the
+  // pairs that interact. Two passes: the distances first (cheap, with the pair's reach as
+  // cut-off), so that a hard-core violation rejects before any direction is computed; then the
+  // axes of the neighbours in range.
+  double log_interaction(const Element& xi, int skip, std::vector<Link>& links) const;
+
+  // log λ(x | x \ x) − log β_c of an element of the configuration, from its links.
+  double log_lambda_over_beta(int slot) const {
+    double total = local_[static_cast<std::size_t>(slot)];
+    for (const Link& link : links_[static_cast<std::size_t>(slot)]) total += link.log_gamma;
+    return total;
+  }
+
+  // Adds `e` with its local term and the links log_interaction found for it.
+  void add(const Element& e, double local, const std::vector<Link>& links);
+
+  void remove(int slot);
+
+  // Moves an element to `position`, with its new local term and links.
+  void move(int slot, const Vec3& position, double local, const std::vector<Link>& links);
+
+  std::vector<Element> elements() const;
+
+ private:
+  void link(int slot, double local, const std::vector<Link>& links);
+
+  void unlink(int slot);
+
+  const model::Interaction& interaction_;
+  const geometry::PairMeasurer& measurer_;
+  geometry::NeighbourGrid grid_;
+  std::vector<Element> elements_;
+  std::vector<int> alive_, free_, position_in_alive_;
+  std::vector<std::vector<Link>> links_;  // per slot
+  std::vector<double> local_;             // per slot: log of the local factor of β
+  const geometry::Domain& domain_;
+  bool shape_distances_ = true;
+  mutable std::vector<std::pair<double, int>> candidates_;       // scratch of log_interaction: (squared distance, slot)
+  mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
+};
+
+}  // namespace shapeproc::sample

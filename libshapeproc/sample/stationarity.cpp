@@ -1,0 +1,41 @@
+#include "libshapeproc/sample/stationarity.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shapeproc::sample {
+
+// The means of the second half's two quarters, a quarter of the run apart: a trend that would
+// move the count by max(1, 1%) over as many steps again keeps the chain going (packed exemplars
+// creep up by an element every few ten thousand steps, with little noise).
+bool is_stationary(const std::vector<int>& counts) {
+  const std::size_t half = counts.size() / 2, length = counts.size() - half;
+  if (length < 100) return false;
+  constexpr int kBatches = 10;
+  std::vector<double> batch(kBatches, 0.0);
+  const std::size_t per_batch = length / kBatches;
+  for (int b = 0; b < kBatches; ++b) {
+    for (std::size_t i = 0; i < per_batch; ++i) batch[b] += counts[half + b * per_batch + i];
+    batch[b] /= static_cast<double>(per_batch);
+  }
+  double first = 0.0, second = 0.0, mean = 0.0;
+  for (int b = 0; b < kBatches; ++b) {
+    (b < kBatches / 2 ? first : second) += batch[b] / (kBatches / 2);
+    mean += batch[b] / kBatches;
+  }
+  double variance = 0.0;
+  for (double m : batch) variance += (m - mean) * (m - mean) / (kBatches - 1);
+  const double standard_error = std::sqrt(variance * (2.0 / (kBatches / 2)));
+  return std::abs(second - first) <= 0.25 * std::max(1.0, 0.01 * mean) + 2.0 * standard_error;
+}
+
+StationarityRule::Verdict StationarityRule::after_step(long long step, int elements) {
+  if (step % kStride == 0) counts_.push_back(elements);
+  if (step < next_check_) return Verdict::keep_going;
+  if (step >= kStepsPerElement * elements && is_stationary(counts_)) return Verdict::stationary;
+  if (step >= max_steps_) return Verdict::gave_up;
+  next_check_ = std::min(max_steps_, std::max(step + 10000, step + step / 4));
+  return Verdict::keep_going;
+}
+
+}  // namespace shapeproc::sample

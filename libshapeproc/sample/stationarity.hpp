@@ -1,0 +1,31 @@
+// The automatic stopping rule of a birth-death chain: run until the element count is stationary
+// (docs/sample.md). Checked after 20,000 steps and then every max(10,000, a quarter of the steps
+// so far); the chain stops once it has made at least 1,000 steps per element present and the
+// second half of the run, cut into ten batches, has quarters whose mean counts differ by at most
+// a quarter of max(1, 1% of the mean) plus two standard errors from the batch means; or at the
+// step limit (then it is not stationary).
+#pragma once
+
+#include <vector>
+
+namespace shapeproc::sample {
+
+// The test on counts recorded at even intervals: true when their second half looks stationary.
+bool is_stationary(const std::vector<int>& counts);
+
+class StationarityRule {
+ public:
+  explicit StationarityRule(long long max_steps) : max_steps_(max_steps) {}
+
+  enum class Verdict { keep_going, stationary, gave_up };
+  // Called after every step with the element count.
+  Verdict after_step(long long step, int elements);
+
+ private:
+  static constexpr long long kMinimumSteps = 20000, kStride = 10, kStepsPerElement = 1000;
+  long long max_steps_;
+  long long next_check_ = kMinimumSteps;
+  std::vector<int> counts_;  // every kStride steps
+};
+
+}  // namespace shapeproc::sample

@@ -1,0 +1,30 @@
+#include "libshapeproc/synthesis/synthesis_record.hpp"
+
+#include <sstream>
+
+namespace shapeproc::synthesis {
+
+namespace {
+std::string find(const std::vector<std::pair<std::string, std::string>>& list, const std::string& key) {
+  for (const auto& [k, v] : list)
+    if (k == key) return v;
+  return {};
+}
+}  // namespace
+
+std::string SynthesisRecord::option(const std::string& key) const { return find(options, key); }
+std::string SynthesisRecord::input(const std::string& key) const { return find(inputs, key); }
+
+std::string SynthesisRecord::summary() const {
+  std::ostringstream s;
+  s << "shapeproc " << (command.empty() ? "?" : command) << ", " << method << ", seed " << seed;
+  if (chains > 1) s << ", chain " << chain;
+  s << ", " << steps << " steps";
+  if (iterations == "stationary") s << " (until stationary)";
+  s << ", " << geometry::to_string(boundary);
+  if (!domain_file.empty()) s << ", domain " << domain_file;
+  if (!intensity_file.empty()) s << ", intensity map " << intensity_file;
+  return s.str();
+}
+
+}  // namespace shapeproc::synthesis
