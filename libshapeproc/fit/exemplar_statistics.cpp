@@ -1,0 +1,68 @@
+#include "libshapeproc/fit/exemplar_statistics.hpp"
+
+#include <sstream>
+
+#include "libshapeproc/core/check.hpp"
+
+namespace shapeproc::fit {
+
+using geometry::Element;
+using model::Interaction;
+
+FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double range) {
+  FitRegion region{exemplar.window, exemplar.dimension};
+  if (edge != EdgeTreatment::border) return region;
+  for (int axis = 0; axis < exemplar.dimension; ++axis) {
+    region.box.min()[axis] += range;
+    region.box.max()[axis] -= range;
+    core::check(region.box.max()[axis] > region.box.min()[axis], "fit",
+                "the border edge treatment leaves no window (the interaction range " + core::describe(range) +
+                    " is at least half the window); use no edge treatment or a periodic one");
+  }
+  return region;
+}
+
+ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const std::vector<geometry::PairRecord>& pairs,
+                                       const Interaction& interaction, const FitRegion& region,
+                                       model::ShapeProcessModel& model) {
+  const std::size_t n = exemplar.elements.size();
+  ExemplarStatistics s;
+  s.per_element.resize(n);
+  for (const geometry::PairRecord& p : pairs) {
+    const Element& a = exemplar.elements[static_cast<std::size_t>(p.i)];
+    const Element& b = exemplar.elements[static_cast<std::size_t>(p.j)];
+    const int band = interaction.band(a.category, b.category, p.measurement.axis, p.measurement.distance);
+    if (band == Interaction::kHardCore) {
+      std::ostringstream text;
+      text << "elements " << p.i << " and " << p.j << " are " << p.measurement.distance
+           << " apart, below the hard-core distance d0 of their axis: lower the thresholds";
+      throw core::ArgumentError("fit", text.str());
+    }
+    if (band < 0) continue;
+    const int parameter = interaction.parameter(a.category, b.category, p.measurement.axis, band);
+    s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
+    s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
+    const Interaction::Location where = interaction.locate(parameter);
+    ++model.interactions[static_cast<std::size_t>(where.pair)].axes[static_cast<std::size_t>(where.axis)]
+          .observed_pairs[static_cast<std::size_t>(where.band)];
+  }
+  const std::size_t categories = model.categories.size();
+  s.data_sum.assign(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
+  s.per_category.assign(categories, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Element& e = exemplar.elements[k];
+    if (!region.contains(e.position)) continue;
+    ++s.data_points;
+    ++s.per_category[static_cast<std::size_t>(e.category)];
+    s.data_sum[static_cast<std::size_t>(e.category)] += 1.0;
+    for (const auto& [parameter, count] : s.per_element[k].counts) s.data_sum[static_cast<std::size_t>(parameter)] += count;
+  }
+  for (std::size_t c = 0; c < categories; ++c) {
+    core::check(s.per_category[c] > 0, "fit",
+                "the border edge treatment keeps no element of category '" + model.categories[c].name + "' (none lies " +
+                    core::describe(interaction.range()) + " inside the window)");
+  }
+  return s;
+}
+
+}  // namespace shapeproc::fit

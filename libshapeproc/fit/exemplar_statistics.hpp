@@ -1,0 +1,43 @@
+// The data side of the log pseudo-likelihood (math note "Log pseudo-likelihood", "Edge
+// treatment"): the region whose points contribute, each exemplar element's statistic
+// t(z_n | z \ z_n), their sum over the elements inside the region, and the pairs observed in each
+// band.
+#pragma once
+
+#include <vector>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/model/interaction.hpp"
+
+namespace shapeproc::fit {
+
+// The window of the sums: W, or W eroded by the interaction range R for the border correction.
+struct FitRegion {
+  geometry::Box3 box;
+  int dimension = 2;
+  bool contains(const geometry::Vec3& p) const {
+    for (int axis = 0; axis < dimension; ++axis)
+      if (p[axis] < box.min()[axis] || p[axis] > box.max()[axis]) return false;
+    return true;
+  }
+};
+
+// Throws core::ArgumentError when the border treatment leaves no window.
+FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double range);
+
+struct ExemplarStatistics {
+  std::vector<model::InteractionCounts> per_element;  // t(z_n | z \ z_n), every element
+  std::vector<double> data_sum;                       // Σ_n t(z_n) over the region, β entries included
+  std::vector<int> per_category;                      // elements of each category inside the region
+  int data_points = 0;                                // elements inside the region
+};
+
+// The statistics of the exemplar's pairs under `interaction`; counts the pairs of each band into
+// model.interactions[...].observed_pairs. Throws core::ArgumentError when a pair lies below its
+// hard-core distance or the region keeps no element of a category.
+ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const std::vector<geometry::PairRecord>& pairs,
+                                       const model::Interaction& interaction, const FitRegion& region,
+                                       model::ShapeProcessModel& model);
+
+}  // namespace shapeproc::fit

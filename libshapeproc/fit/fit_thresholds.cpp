@@ -1,0 +1,171 @@
+#include "libshapeproc/fit/fit_thresholds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "libshapeproc/core/check.hpp"
+#include "libshapeproc/fit/quantile.hpp"
+
+namespace shapeproc::fit {
+
+using geometry::Element;
+
+namespace {
+
+std::vector<double> thresholds_from(std::vector<double> distances, const std::vector<double>& quantiles) {
+  std::sort(distances.begin(), distances.end());
+  std::vector<double> thresholds;
+  for (double q : quantiles) thresholds.push_back(quantile(distances, q));
+  return thresholds;
+}
+
+}  // namespace
+
+void check_fit_options(const FitOptions& o) {
+  if (o.thresholds.empty()) {
+    core::check(!o.quantiles.empty(), "fit", "give at least one quantile order (q0)");
+    for (std::size_t k = 0; k < o.quantiles.size(); ++k) {
+      const double q = o.quantiles[k];
+      core::check_in_range("fit", "quantile orders", q, 0.0, 1.0);
+      if (k > 0 && !(q > o.quantiles[k - 1])) {
+        std::ostringstream text;
+        text << "quantile orders must increase, got " << q << " after " << o.quantiles[k - 1];
+        throw core::ArgumentError("fit", text.str());
+      }
+    }
+  } else {
+    for (std::size_t k = 0; k < o.thresholds.size(); ++k) {
+      const double d = o.thresholds[k];
+      core::check_non_negative("fit", "thresholds", d);
+      if (k > 0 && d < o.thresholds[k - 1]) {
+        std::ostringstream text;
+        text << "thresholds must not decrease, got " << d << " after " << o.thresholds[k - 1];
+        throw core::ArgumentError("fit", text.str());
+      }
+    }
+  }
+  core::check(!(o.lines && o.refinement > 0), "fit", "refinement applies to cells, not to quadrature lines");
+  core::check_in_range("fit", "the data points' weight", o.data_weight, 0.0, 1.0, true);
+  core::check(o.quadrature >= 0 && o.shapes_per_location >= 0 && o.min_pairs_per_axis >= 1, "fit",
+              "quadrature, shapes per location and minimum pairs must be positive");
+}
+
+model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar, const FitOptions& options) {
+  core::check(!exemplar.elements.empty(), "fit", "the exemplar has no element");
+  const int dimension = exemplar.dimension;
+  core::check(!options.lines || dimension == 2, "fit", "quadrature lines are for 2D exemplars");
+  model::ShapeProcessModel model;
+  model.dimension = dimension;
+  model.units = exemplar.units;
+  model.measurement.distance = options.distance;
+  model.measurement.direction = options.direction;
+  model.measurement.directions = options.directions > 0 ? options.directions : (dimension == 3 ? 12 : 8);
+  model.measurement.proxy_tolerance = options.proxy_tolerance;
+  const std::vector<std::size_t> per_category = geometry::category_counts(exemplar);
+  for (std::size_t c = 0; c < exemplar.categories.size(); ++c) {
+    core::check(per_category[c] > 0, "fit", "category '" + exemplar.categories[c].name + "' has no element");
+    model.categories.push_back({exemplar.categories[c].name, 1.0});
+  }
+  // A shape may serve several categories (the single point shape of a point pattern): it takes
+  // the category of its first element.
+  std::vector<int> shape_category(exemplar.shapes.size(), -1);
+  for (const Element& e : exemplar.elements) {
+    if (shape_category[static_cast<std::size_t>(e.shape)] < 0) shape_category[static_cast<std::size_t>(e.shape)] = e.category;
+  }
+  bool points_only = true;
+  for (const auto& shape : exemplar.shapes) points_only = points_only && geometry::dimension(shape) == 0;
+  if (!points_only) {
+    for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) {
+      model.shapes.push_back({exemplar.shapes[s], std::max(0, shape_category[s])});
+    }
+  }
+  return model;
+}
+
+std::vector<std::vector<int>> shapes_by_category(const geometry::Scene& exemplar) {
+  std::vector<std::vector<int>> shapes_of(exemplar.categories.size());
+  for (const Element& e : exemplar.elements) {
+    std::vector<int>& own = shapes_of[static_cast<std::size_t>(e.category)];
+    if (std::find(own.begin(), own.end(), e.shape) == own.end()) own.push_back(e.shape);
+  }
+  return shapes_of;
+}
+
+void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exemplar,
+                    const std::vector<geometry::PairRecord>& pairs, const geometry::DirectionBins& bins,
+                    const FitOptions& options, std::vector<std::string>& notes) {
+  const int categories = static_cast<int>(model.categories.size());
+  const int axes = bins.axis_count();
+  std::vector<double> all_distances;
+  std::map<std::pair<int, int>, std::vector<std::vector<double>>> by_pair;  // (a, b) -> per axis
+  for (const geometry::PairRecord& p : pairs) {
+    int a = exemplar.elements[static_cast<std::size_t>(p.i)].category;
+    int b = exemplar.elements[static_cast<std::size_t>(p.j)].category;
+    if (a > b) std::swap(a, b);
+    auto& per_axis = by_pair[{a, b}];
+    per_axis.resize(static_cast<std::size_t>(axes));
+    per_axis[static_cast<std::size_t>(p.measurement.axis)].push_back(p.measurement.distance);
+    all_distances.push_back(p.measurement.distance);
+  }
+  const bool fixed_thresholds = !options.thresholds.empty();
+  if (!fixed_thresholds && all_distances.size() < 2) {
+    notes.push_back("the exemplar has " + std::to_string(all_distances.size()) +
+                    " pair(s) of elements: too few for thresholds, so the model is a Poisson process (no interaction)");
+    return;
+  }
+  for (int a = 0; a < categories; ++a) {
+    for (int b = a; b < categories; ++b) {
+      model::PairInteraction pair;
+      pair.first = a;
+      pair.second = b;
+      const auto found = by_pair.find({a, b});
+      std::vector<double> pooled;
+      if (found != by_pair.end())
+        for (const auto& d : found->second) pooled.insert(pooled.end(), d.begin(), d.end());
+      const std::string names = "'" + model.categories[static_cast<std::size_t>(a)].name + "'-'" +
+                                model.categories[static_cast<std::size_t>(b)].name + "'";
+      bool noted_pool = false;
+      for (int i = 0; i < axes; ++i) {
+        model::AxisParameters axis;
+        axis.direction = bins.axis_direction(i);
+        if (fixed_thresholds) {
+          axis.thresholds = options.thresholds;
+        } else {
+          const std::vector<double>* source = nullptr;
+          if (found != by_pair.end() &&
+              static_cast<int>(found->second[static_cast<std::size_t>(i)].size()) >= std::max(options.min_pairs_per_axis, 2)) {
+            source = &found->second[static_cast<std::size_t>(i)];
+          } else if (pooled.size() >= 2) {
+            source = &pooled;
+            if (!noted_pool) {
+              notes.push_back("pair " + names + ": axes with fewer than " + std::to_string(options.min_pairs_per_axis) +
+                              " pairs take thresholds from the pair's " + std::to_string(pooled.size()) +
+                              " pairs pooled over all axes");
+              noted_pool = true;
+            }
+          } else {
+            source = &all_distances;
+            if (!noted_pool) {
+              notes.push_back("pair " + names + ": fewer than 2 pairs, thresholds from all " +
+                              std::to_string(all_distances.size()) + " pairs of the exemplar");
+              noted_pool = true;
+            }
+          }
+          axis.thresholds = thresholds_from(*source, options.quantiles);
+        }
+        const std::size_t bands = axis.thresholds.size() - 1;
+        axis.gammas.assign(bands, 1.0);
+        axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());
+        axis.status.assign(bands, model::ParameterStatus::free);
+        axis.observed_pairs.assign(bands, 0);
+        pair.axes.push_back(std::move(axis));
+      }
+      model.interactions.push_back(std::move(pair));
+    }
+  }
+}
+
+}  // namespace shapeproc::fit
