@@ -17,10 +17,12 @@ Scene two_polygons(int n) {
   for (int k = 0; k < n; ++k) {
     const double angle = 2 * 3.14159265358979323846 * k / n;
     a.emplace_back(std::cos(angle), std::sin(angle));
-    b.emplace_back(std::cos(angle + 3.14159265358979323846 / n), std::sin(angle + 3.14159265358979323846 / n));
+    b.emplace_back(std::cos(angle + 3.14159265358979323846 / n),
+                   std::sin(angle + 3.14159265358979323846 / n));
   }
-  return fixtures::scene_of({fixtures::planar({fixtures::polygon(a)}), fixtures::planar({fixtures::polygon(b)})},
-                            {{0, 0}, {2.1, 0.4}});
+  return fixtures::scene_of(
+      {fixtures::planar({fixtures::polygon(a)}), fixtures::planar({fixtures::polygon(b)})},
+      {{0, 0}, {2.1, 0.4}});
 }
 
 MeasurementOptions exact_proxies() {
@@ -43,7 +45,8 @@ BENCHMARK(BM_Distance2D)->Arg(8)->Arg(50)->Arg(500);
 void BM_Direction2D(benchmark::State& state, bool apart) {
   const Scene scene = two_polygons(static_cast<int>(state.range(0)));
   const PairMeasurer measurer(scene, exact_proxies());
-  const Vec3 offset = apart ? Vec3(4.0, 3.0, 0.0) : Vec3(scene.elements[1].position - scene.elements[0].position);
+  const Vec3 offset =
+      apart ? Vec3(4.0, 3.0, 0.0) : Vec3(scene.elements[1].position - scene.elements[0].position);
   for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
   state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
 }
@@ -52,7 +55,8 @@ BENCHMARK_CAPTURE(BM_Direction2D, apart, true)->Arg(8)->Arg(50)->Arg(500);
 
 // UV spheres of radius 1, 0.2 apart: 50 triangles (5 x 6) or 500 (25 x 11).
 Scene two_spheres(int triangles) {
-  const TriangleMesh mesh = triangles <= 50 ? fixtures::uv_sphere(1, 5, 6) : fixtures::uv_sphere(1, 25, 11);
+  const TriangleMesh mesh =
+      triangles <= 50 ? fixtures::uv_sphere(1, 5, 6) : fixtures::uv_sphere(1, 25, 11);
   return fixtures::scene_of_meshes({mesh, mesh}, {{0, 0, 0}, {2.1, 0.3, 0.2}});
 }
 
@@ -64,8 +68,10 @@ void BM_Spheres(benchmark::State& state, int what) {
   const PairMeasurer measurer(scene, options);
   const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
   for (auto _ : state) {
-    if (what == 0) benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
-    else benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+    if (what == 0)
+      benchmark::DoNotOptimize(measurer.distance(0, 1, offset));
+    else
+      benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
   }
   state.counters["triangles"] = static_cast<double>(measurer.proxies3()[0].triangles.size());
 }
@@ -90,7 +96,8 @@ void BM_AllPairs1000(benchmark::State& state) {
   MeasurementOptions options;
   options.distance = state.range(0) == 0 ? DistanceKind::shape : DistanceKind::shape;
   const PairMeasurer measurer(scene, options);
-  const double range = state.range(0) == 0 ? PairMeasurer::kNoCutoff : static_cast<double>(state.range(0));
+  const double range =
+      state.range(0) == 0 ? PairMeasurer::kNoCutoff : static_cast<double>(state.range(0));
   std::size_t pairs = 0;
   for (auto _ : state) {
     pairs = measurer.all_pairs(scene.elements, range).size();

@@ -41,7 +41,8 @@ void BM_Sample50k(benchmark::State& state, const char* file, const char* categor
   shapeproc::sample::SamplerOptions options;
   options.iterations = 50000;
   std::size_t elements = 0;
-  const auto domain = shapeproc::geometry::Domain::from_sizes(f.domain, shapeproc::geometry::Boundary::torus);
+  const auto domain =
+      shapeproc::geometry::Domain::from_sizes(f.domain, shapeproc::geometry::Boundary::torus);
   for (auto _ : state) {
     shapeproc::core::Random random(1);
     const auto result = shapeproc::sample::sample_shape_process(f.model, domain, options, random);
@@ -49,14 +50,21 @@ void BM_Sample50k(benchmark::State& state, const char* file, const char* categor
     benchmark::DoNotOptimize(elements);
   }
   state.counters["elements"] = static_cast<double>(elements);
-  state.counters["proposals/s"] = benchmark::Counter(static_cast<double>(state.iterations() * 50000), benchmark::Counter::kIsRate);
+  state.counters["proposals/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * 50000), benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_Sample50k, dots_random, "svg/dots-random.svg", nullptr, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sample50k, dashes_rows, "svg/dashes-rows.svg", nullptr, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sample50k, crescents_grid, "svg/crescents-grid.svg", nullptr, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sample50k, two_kinds, "svg/two-kinds.svg", "fill", false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sample50k, rings, "svg/rings.svg", nullptr, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sample50k, bubbles, "third-party/hero-patterns/bubbles.svg", nullptr, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, dots_random, "svg/dots-random.svg", nullptr, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, dashes_rows, "svg/dashes-rows.svg", nullptr, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, crescents_grid, "svg/crescents-grid.svg", nullptr, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, two_kinds, "svg/two-kinds.svg", "fill", false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, rings, "svg/rings.svg", nullptr, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sample50k, bubbles, "third-party/hero-patterns/bubbles.svg", nullptr, true)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 BENCHMARK_MAIN();

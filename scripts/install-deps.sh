@@ -2,7 +2,7 @@
 # Installs the Debian packages libshapeproc needs, only those that are missing (idempotent).
 set -euo pipefail
 packages=(
-  cmake g++ ninja-build ccache
+  cmake g++ ninja-build ccache clang-format
   libeigen3-dev libboost-dev libcgal-dev libopenmesh-dev libpugixml-dev libsvgpp-dev
   libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev

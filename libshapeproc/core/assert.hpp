@@ -12,8 +12,8 @@ namespace shapeproc::core::detail {
                                  const std::string& message);
 }  // namespace shapeproc::core::detail
 
-#define SHAPEPROC_ASSERT(condition, message)                                                  \
-  do {                                                                                        \
-    if (!(condition))                                                                         \
-      ::shapeproc::core::detail::fail_assertion(__FILE__, __LINE__, #condition, (message));  \
+#define SHAPEPROC_ASSERT(condition, message)                                                \
+  do {                                                                                      \
+    if (!(condition))                                                                       \
+      ::shapeproc::core::detail::fail_assertion(__FILE__, __LINE__, #condition, (message)); \
   } while (false)

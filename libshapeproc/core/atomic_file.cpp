@@ -10,7 +10,8 @@ namespace shapeproc::core {
 
 namespace fs = std::filesystem;
 
-void write_file_atomically(const fs::path& target, const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(const fs::path& target,
+                           const std::function<void(std::ostream&)>& write) {
   std::error_code ec;
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   if (fs::is_directory(target, ec)) {

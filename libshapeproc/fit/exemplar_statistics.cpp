@@ -16,13 +16,15 @@ FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double
     region.box.min()[axis] += range;
     region.box.max()[axis] -= range;
     core::check(region.box.max()[axis] > region.box.min()[axis], "fit",
-                "the border edge treatment leaves no window (the interaction range " + core::describe(range) +
+                "the border edge treatment leaves no window (the interaction range " +
+                    core::describe(range) +
                     " is at least half the window); use no edge treatment or a periodic one");
   }
   return region;
 }
 
-ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const std::vector<geometry::PairRecord>& pairs,
+ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
+                                       const std::vector<geometry::PairRecord>& pairs,
                                        const Interaction& interaction, const FitRegion& region,
                                        model::ShapeProcessModel& model) {
   const std::size_t n = exemplar.elements.size();
@@ -31,7 +33,8 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const st
   for (const geometry::PairRecord& p : pairs) {
     const Element& a = exemplar.elements[static_cast<std::size_t>(p.i)];
     const Element& b = exemplar.elements[static_cast<std::size_t>(p.j)];
-    const int band = interaction.band(a.category, b.category, p.measurement.axis, p.measurement.distance);
+    const int band =
+        interaction.band(a.category, b.category, p.measurement.axis, p.measurement.distance);
     if (band == Interaction::kHardCore) {
       std::ostringstream text;
       text << "elements " << p.i << " and " << p.j << " are " << p.measurement.distance
@@ -43,7 +46,8 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const st
     s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
     s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
     const Interaction::Location where = interaction.locate(parameter);
-    ++model.interactions[static_cast<std::size_t>(where.pair)].axes[static_cast<std::size_t>(where.axis)]
+    ++model.interactions[static_cast<std::size_t>(where.pair)]
+          .axes[static_cast<std::size_t>(where.axis)]
           .observed_pairs[static_cast<std::size_t>(where.band)];
   }
   const std::size_t categories = model.categories.size();
@@ -55,11 +59,13 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const st
     ++s.data_points;
     ++s.per_category[static_cast<std::size_t>(e.category)];
     s.data_sum[static_cast<std::size_t>(e.category)] += 1.0;
-    for (const auto& [parameter, count] : s.per_element[k].counts) s.data_sum[static_cast<std::size_t>(parameter)] += count;
+    for (const auto& [parameter, count] : s.per_element[k].counts)
+      s.data_sum[static_cast<std::size_t>(parameter)] += count;
   }
   for (std::size_t c = 0; c < categories; ++c) {
     core::check(s.per_category[c] > 0, "fit",
-                "the border edge treatment keeps no element of category '" + model.categories[c].name + "' (none lies " +
+                "the border edge treatment keeps no element of category '" +
+                    model.categories[c].name + "' (none lies " +
                     core::describe(interaction.range()) + " inside the window)");
   }
   return s;

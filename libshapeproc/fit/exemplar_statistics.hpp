@@ -28,16 +28,17 @@ FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double
 
 struct ExemplarStatistics {
   std::vector<model::InteractionCounts> per_element;  // t(z_n | z \ z_n), every element
-  std::vector<double> data_sum;                       // Σ_n t(z_n) over the region, β entries included
-  std::vector<int> per_category;                      // elements of each category inside the region
-  int data_points = 0;                                // elements inside the region
+  std::vector<double> data_sum;   // Σ_n t(z_n) over the region, β entries included
+  std::vector<int> per_category;  // elements of each category inside the region
+  int data_points = 0;            // elements inside the region
 };
 
 // The statistics of the exemplar's pairs under `interaction`; counts the pairs of each band into
 // model.interactions[...].observed_pairs. Throws core::ArgumentError when a pair lies below its
 // hard-core distance or the region keeps no element of a category.
-ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar, const std::vector<geometry::PairRecord>& pairs,
-                                       const model::Interaction& interaction, const FitRegion& region,
-                                       model::ShapeProcessModel& model);
+ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
+                                       const std::vector<geometry::PairRecord>& pairs,
+                                       const model::Interaction& interaction,
+                                       const FitRegion& region, model::ShapeProcessModel& model);
 
 }  // namespace shapeproc::fit

@@ -25,6 +25,7 @@ bool check_existence(const PseudoLikelihoodDesign& heavier, MpleResult& mple);
 
 // The notes that explain unbounded parameters: those that follow the data points' share, and
 // those left at the search bound by separated statistics.
-void add_existence_notes(const MpleResult& mple, bool follows_share, std::vector<std::string>& notes);
+void add_existence_notes(const MpleResult& mple, bool follows_share,
+                         std::vector<std::string>& notes);
 
 }  // namespace shapeproc::fit

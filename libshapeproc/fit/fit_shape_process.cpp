@@ -22,9 +22,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 const char* to_string(EdgeTreatment edge) {
   switch (edge) {
-    case EdgeTreatment::none: return "none";
-    case EdgeTreatment::periodic: return "periodic";
-    case EdgeTreatment::border: return "border";
+    case EdgeTreatment::none:
+      return "none";
+    case EdgeTreatment::periodic:
+      return "periodic";
+    case EdgeTreatment::border:
+      return "border";
   }
   return "none";
 }
@@ -48,12 +51,13 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
   const model::Interaction interaction(model);
   const FitRegion region = fit_region(exemplar, options.edge, interaction.range());
-  const ExemplarStatistics statistics = exemplar_statistics(exemplar, pairs, interaction, region, model);
+  const ExemplarStatistics statistics =
+      exemplar_statistics(exemplar, pairs, interaction, region, model);
   result.data_points = statistics.data_points;
 
   clock = std::chrono::steady_clock::now();
-  const QuadratureDesign quadrature =
-      quadrature_design(exemplar, options, region, measurer, interaction, statistics, shapes_of, periodic);
+  const QuadratureDesign quadrature = quadrature_design(
+      exemplar, options, region, measurer, interaction, statistics, shapes_of, periodic);
   result.quadrature_cells = quadrature.cells;
   result.quadrature_lines = quadrature.lines;
   result.quadrature_points = static_cast<int>(quadrature.design.points.size());
@@ -69,7 +73,8 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   clock = std::chrono::steady_clock::now();
   const double measure = region.box.sizes().head(exemplar.dimension).prod();
   std::vector<double> start(static_cast<std::size_t>(design.parameter_count), 0.0);
-  for (std::size_t c = 0; c < model.categories.size(); ++c) start[c] = std::log(statistics.per_category[c] / measure);
+  for (std::size_t c = 0; c < model.categories.size(); ++c)
+    start[c] = std::log(statistics.per_category[c] / measure);
   MpleResult mple = maximise_pseudo_likelihood(design, start);
   const bool follows_share = existence && check_existence(heavier, mple);
   result.seconds.optimisation = seconds_since(clock);

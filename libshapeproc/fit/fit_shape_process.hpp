@@ -51,7 +51,7 @@ struct FitResult {
   int data_points = 0;        // data points in the LPL's sum
   int quadrature_points = 0;  // dummy and data points in the quadrature (λ > 0)
   int quadrature_cells = 0;
-  bool quadrature_lines = false;  // 2D: rows of cells integrated as exact lines
+  bool quadrature_lines = false;   // 2D: rows of cells integrated as exact lines
   std::vector<std::string> notes;  // fallbacks and special cases, one sentence each
   struct {
     double proxies = 0, measurements = 0, quadrature = 0, optimisation = 0;

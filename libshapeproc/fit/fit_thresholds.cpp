@@ -15,7 +15,8 @@ using geometry::Element;
 
 namespace {
 
-std::vector<double> thresholds_from(std::vector<double> distances, const std::vector<double>& quantiles) {
+std::vector<double> thresholds_from(std::vector<double> distances,
+                                    const std::vector<double>& quantiles) {
   std::sort(distances.begin(), distances.end());
   std::vector<double> thresholds;
   for (double q : quantiles) thresholds.push_back(quantile(distances, q));
@@ -47,13 +48,15 @@ void check_fit_options(const FitOptions& o) {
       }
     }
   }
-  core::check(!(o.lines && o.refinement > 0), "fit", "refinement applies to cells, not to quadrature lines");
+  core::check(!(o.lines && o.refinement > 0), "fit",
+              "refinement applies to cells, not to quadrature lines");
   core::check_in_range("fit", "the data points' weight", o.data_weight, 0.0, 1.0, true);
   core::check(o.quadrature >= 0 && o.shapes_per_location >= 0 && o.min_pairs_per_axis >= 1, "fit",
               "quadrature, shapes per location and minimum pairs must be positive");
 }
 
-model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar, const FitOptions& options) {
+model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar,
+                                        const FitOptions& options) {
   core::check(!exemplar.elements.empty(), "fit", "the exemplar has no element");
   const int dimension = exemplar.dimension;
   core::check(!options.lines || dimension == 2, "fit", "quadrature lines are for 2D exemplars");
@@ -62,21 +65,25 @@ model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar, const F
   model.units = exemplar.units;
   model.measurement.distance = options.distance;
   model.measurement.direction = options.direction;
-  model.measurement.directions = options.directions > 0 ? options.directions : (dimension == 3 ? 12 : 8);
+  model.measurement.directions =
+      options.directions > 0 ? options.directions : (dimension == 3 ? 12 : 8);
   model.measurement.proxy_tolerance = options.proxy_tolerance;
   const std::vector<std::size_t> per_category = geometry::category_counts(exemplar);
   for (std::size_t c = 0; c < exemplar.categories.size(); ++c) {
-    core::check(per_category[c] > 0, "fit", "category '" + exemplar.categories[c].name + "' has no element");
+    core::check(per_category[c] > 0, "fit",
+                "category '" + exemplar.categories[c].name + "' has no element");
     model.categories.push_back({exemplar.categories[c].name, 1.0});
   }
   // A shape may serve several categories (the single point shape of a point pattern): it takes
   // the category of its first element.
   std::vector<int> shape_category(exemplar.shapes.size(), -1);
   for (const Element& e : exemplar.elements) {
-    if (shape_category[static_cast<std::size_t>(e.shape)] < 0) shape_category[static_cast<std::size_t>(e.shape)] = e.category;
+    if (shape_category[static_cast<std::size_t>(e.shape)] < 0)
+      shape_category[static_cast<std::size_t>(e.shape)] = e.category;
   }
   bool points_only = true;
-  for (const auto& shape : exemplar.shapes) points_only = points_only && geometry::dimension(shape) == 0;
+  for (const auto& shape : exemplar.shapes)
+    points_only = points_only && geometry::dimension(shape) == 0;
   if (!points_only) {
     for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) {
       model.shapes.push_back({exemplar.shapes[s], std::max(0, shape_category[s])});
@@ -95,8 +102,9 @@ std::vector<std::vector<int>> shapes_by_category(const geometry::Scene& exemplar
 }
 
 void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exemplar,
-                    const std::vector<geometry::PairRecord>& pairs, const geometry::DirectionBins& bins,
-                    const FitOptions& options, std::vector<std::string>& notes) {
+                    const std::vector<geometry::PairRecord>& pairs,
+                    const geometry::DirectionBins& bins, const FitOptions& options,
+                    std::vector<std::string>& notes) {
   const int categories = static_cast<int>(model.categories.size());
   const int axes = bins.axis_count();
   std::vector<double> all_distances;
@@ -113,7 +121,8 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
   const bool fixed_thresholds = !options.thresholds.empty();
   if (!fixed_thresholds && all_distances.size() < 2) {
     notes.push_back("the exemplar has " + std::to_string(all_distances.size()) +
-                    " pair(s) of elements: too few for thresholds, so the model is a Poisson process (no interaction)");
+                    " pair(s) of elements: too few for thresholds, so the model is a Poisson "
+                    "process (no interaction)");
     return;
   }
   for (int a = 0; a < categories; ++a) {
@@ -136,14 +145,16 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
         } else {
           const std::vector<double>* source = nullptr;
           if (found != by_pair.end() &&
-              static_cast<int>(found->second[static_cast<std::size_t>(i)].size()) >= std::max(options.min_pairs_per_axis, 2)) {
+              static_cast<int>(found->second[static_cast<std::size_t>(i)].size()) >=
+                  std::max(options.min_pairs_per_axis, 2)) {
             source = &found->second[static_cast<std::size_t>(i)];
           } else if (pooled.size() >= 2) {
             source = &pooled;
             if (!noted_pool) {
-              notes.push_back("pair " + names + ": axes with fewer than " + std::to_string(options.min_pairs_per_axis) +
-                              " pairs take thresholds from the pair's " + std::to_string(pooled.size()) +
-                              " pairs pooled over all axes");
+              notes.push_back("pair " + names + ": axes with fewer than " +
+                              std::to_string(options.min_pairs_per_axis) +
+                              " pairs take thresholds from the pair's " +
+                              std::to_string(pooled.size()) + " pairs pooled over all axes");
               noted_pool = true;
             }
           } else {

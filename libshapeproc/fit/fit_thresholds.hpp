@@ -27,7 +27,8 @@ std::vector<std::vector<int>> shapes_by_category(const geometry::Scene& exemplar
 // than options.min_pairs_per_axis, or of all pairs when the pair has fewer than 2 (each fallback
 // noted once per pair in `notes`). γ = 1, no standard errors yet.
 void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exemplar,
-                    const std::vector<geometry::PairRecord>& pairs, const geometry::DirectionBins& bins,
-                    const FitOptions& options, std::vector<std::string>& notes);
+                    const std::vector<geometry::PairRecord>& pairs,
+                    const geometry::DirectionBins& bins, const FitOptions& options,
+                    std::vector<std::string>& notes);
 
 }  // namespace shapeproc::fit

@@ -1,10 +1,11 @@
 #include "libshapeproc/fit/line_quadrature.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::fit {
 
@@ -14,13 +15,12 @@ using model::Interaction;
 
 namespace {
 
-
 // What a neighbour does at one place on the line: its band under the axis of that place (the
 // axis kept only while it matters), and how far along the line that cannot change.
 struct State {
   int band = Interaction::kBeyond;
-  int axis = -1;          // -1 beyond the pair's range
-  bool exact = false;     // `distance` is exact (else a lower bound beyond the range)
+  int axis = -1;       // -1 beyond the pair's range
+  bool exact = false;  // `distance` is exact (else a lower bound beyond the range)
   double distance = 0.0;
   double gap = 0.0;         // the distance cannot cross a threshold of `axis` within this length
   double axis_reach = 0.0;  // the axis cannot change within this length
@@ -37,16 +37,23 @@ struct Transition {
 
 class NeighbourMarch {
  public:
-  NeighbourMarch(const LineContext& context, int category, int shape, const Element& neighbour, const Vec3& image,
-                 const Vec3& start)
-      : c_(context), category_(category), shape_(shape), other_(neighbour), image_(image), start_(start) {
+  NeighbourMarch(const LineContext& context, int category, int shape, const Element& neighbour,
+                 const Vec3& image, const Vec3& start)
+      : c_(context),
+        category_(category),
+        shape_(shape),
+        other_(neighbour),
+        image_(image),
+        start_(start) {
     reach_ = c_.interaction->max_range(category, neighbour.category);
     const int d = c_.measurer->bins().directions();
-    sector_angle_ = c_.dimension == 2 ? (d > 1 ? 2 * core::kPi / d : 0.0) : (d > 1 ? core::kPi / 3 : 0.0);
+    sector_angle_ =
+        c_.dimension == 2 ? (d > 1 ? 2 * core::kPi / d : 0.0) : (d > 1 ? core::kPi / 3 : 0.0);
   }
 
   double distance_at(double x) const {
-    return c_.measurer->distance(shape_, other_.shape, image_ - (start_ + x * Vec3::UnitX()), 2 * reach_);
+    return c_.measurer->distance(shape_, other_.shape, image_ - (start_ + x * Vec3::UnitX()),
+                                 2 * reach_);
   }
 
   State at(double x) const {
@@ -84,7 +91,8 @@ class NeighbourMarch {
         s.axis = m.bins().axis_of(direction);
         if (c_.dimension == 2) {
           const double angle = std::atan2(direction.y(), direction.x());
-          const double margin = 0.5 * sector_angle_ - std::abs(std::remainder(angle, sector_angle_));
+          const double margin =
+              0.5 * sector_angle_ - std::abs(std::remainder(angle, sector_angle_));
           s.axis_reach = std::min(quarter, 0.5 * margin * length);
         } else {
           s.axis_reach = 0.5 * quarter;
@@ -142,9 +150,11 @@ class NeighbourMarch {
         double where;
         if (s.exact && t.exact && s.axis == t.axis && s.axis >= 0) {
           // A threshold of one axis: the distance crosses it once (the step was chosen so).
-          const std::vector<double>& th = c_.interaction->thresholds(category_, other_.category, s.axis);
-          const double level = s.distance < t.distance ? *std::upper_bound(th.begin(), th.end(), s.distance)
-                                                       : *(std::upper_bound(th.begin(), th.end(), s.distance) - 1);
+          const std::vector<double>& th =
+              c_.interaction->thresholds(category_, other_.category, s.axis);
+          const double level = s.distance < t.distance
+                                   ? *std::upper_bound(th.begin(), th.end(), s.distance)
+                                   : *(std::upper_bound(th.begin(), th.end(), s.distance) - 1);
           where = crossing(x, next, level);
           next = std::min(x1, where + 0.5 * tolerance);
           t = at(next);
@@ -182,8 +192,8 @@ class NeighbourMarch {
 
 }  // namespace
 
-std::vector<LinePiece> integrate_line(const LineContext& context, int category, int shape, const Vec3& start,
-                                      double length) {
+std::vector<LinePiece> integrate_line(const LineContext& context, int category, int shape,
+                                      const Vec3& start, double length) {
   const Interaction& interaction = *context.interaction;
   const geometry::PairMeasurer& measurer = *context.measurer;
   const double own_radius = measurer.radius(shape);
@@ -196,19 +206,22 @@ std::vector<LinePiece> integrate_line(const LineContext& context, int category, 
   const int images = context.period.head(context.dimension).maxCoeff() > 0 ? 1 : 0;
   for (const Element& other : *context.data) {
     if (!interaction.interacts(category, other.category)) continue;
-    const double reach = interaction.max_range(category, other.category) + own_radius + measurer.radius(other.shape);
+    const double reach =
+        interaction.max_range(category, other.category) + own_radius + measurer.radius(other.shape);
     for (int iz = -images; iz <= images; ++iz)
       for (int iy = -images; iy <= images; ++iy)
         for (int ix = -images; ix <= images; ++ix) {
           if (context.dimension == 2 && iz != 0) continue;
-          const Vec3 shift(ix * context.period.x(), iy * context.period.y(), iz * context.period.z());
+          const Vec3 shift(ix * context.period.x(), iy * context.period.y(),
+                           iz * context.period.z());
           const Vec3 image = other.position + shift;
           // Across the line: the image must be the minimum image there.
           double across = 0.0;
           bool minimum = true;
           for (int axis = 1; axis < context.dimension; ++axis) {
             const double delta = image[axis] - start[axis];
-            if (context.period[axis] > 0 && std::abs(delta) > 0.5 * context.period[axis]) minimum = false;
+            if (context.period[axis] > 0 && std::abs(delta) > 0.5 * context.period[axis])
+              minimum = false;
             across += delta * delta;
           }
           if (!minimum || across >= reach * reach) continue;
@@ -227,7 +240,8 @@ std::vector<LinePiece> integrate_line(const LineContext& context, int category, 
         }
   }
   // Sweep: the statistics are constant between consecutive transitions.
-  std::stable_sort(transitions.begin(), transitions.end(), [](const Transition& a, const Transition& b) { return a.x < b.x; });
+  std::stable_sort(transitions.begin(), transitions.end(),
+                   [](const Transition& a, const Transition& b) { return a.x < b.x; });
   struct Current {
     int band = Interaction::kBeyond, axis = -1;
   };
@@ -241,7 +255,8 @@ std::vector<LinePiece> integrate_line(const LineContext& context, int category, 
     for (std::size_t k = 0; k < current.size(); ++k) {
       if (current[k].band == Interaction::kHardCore) return;
       if (current[k].band >= 0) {
-        counts.add(interaction.parameter(category, marches[k].other_category(), current[k].axis, current[k].band));
+        counts.add(interaction.parameter(category, marches[k].other_category(), current[k].axis,
+                                         current[k].band));
       }
     }
     measure[counts.counts] += end - x;
@@ -251,7 +266,8 @@ std::vector<LinePiece> integrate_line(const LineContext& context, int category, 
     close_interval(at);
     x = std::max(x, at);
     for (; t < transitions.size() && std::clamp(transitions[t].x, 0.0, length) <= x; ++t) {
-      current[static_cast<std::size_t>(transitions[t].neighbour)] = {transitions[t].band, transitions[t].axis};
+      current[static_cast<std::size_t>(transitions[t].neighbour)] = {transitions[t].band,
+                                                                     transitions[t].axis};
     }
   }
   close_interval(length);

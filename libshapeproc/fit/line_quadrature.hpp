@@ -24,8 +24,9 @@ struct LineContext {
   const geometry::PairMeasurer* measurer = nullptr;
   const std::vector<geometry::Element>* data = nullptr;
   int dimension = 2;
-  geometry::Vec3 period = geometry::Vec3::Zero();  // window sizes when periodic (minimum image), else 0
-  double tolerance = 1e-6;                         // length to which changes are located
+  geometry::Vec3 period =
+      geometry::Vec3::Zero();  // window sizes when periodic (minimum image), else 0
+  double tolerance = 1e-6;     // length to which changes are located
 };
 
 struct LinePiece {
@@ -35,7 +36,7 @@ struct LinePiece {
 
 // Pieces of the line {start + x e_0 : 0 ≤ x ≤ length} where shape `shape` of `category` has
 // λ > 0 (hard-core stretches left out), one piece per distinct statistic.
-std::vector<LinePiece> integrate_line(const LineContext& context, int category, int shape, const geometry::Vec3& start,
-                                      double length);
+std::vector<LinePiece> integrate_line(const LineContext& context, int category, int shape,
+                                      const geometry::Vec3& start, double length);
 
 }  // namespace shapeproc::fit

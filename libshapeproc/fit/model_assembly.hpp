@@ -8,10 +8,11 @@
 
 namespace shapeproc::fit {
 
-void assign_estimates(model::ShapeProcessModel& model, const model::Interaction& interaction, const MpleResult& mple);
+void assign_estimates(model::ShapeProcessModel& model, const model::Interaction& interaction,
+                      const MpleResult& mple);
 
 // The `fit` record of the model file: window, options, quadrature, optimiser, notes and times.
-std::string fit_record_json(const geometry::Scene& exemplar, const FitOptions& options, const FitResult& result,
-                            int cells_along, const MpleResult& mple);
+std::string fit_record_json(const geometry::Scene& exemplar, const FitOptions& options,
+                            const FitResult& result, int cells_along, const MpleResult& mple);
 
 }  // namespace shapeproc::fit

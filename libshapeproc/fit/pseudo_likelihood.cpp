@@ -1,11 +1,10 @@
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
-
-#include <Eigen/Dense>
 #include <nlopt.hpp>
 #include <stdexcept>
 
@@ -14,7 +13,7 @@ namespace shapeproc::fit {
 namespace {
 constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
 constexpr double kBound = 30.0;
-}
+}  // namespace
 
 double log_pseudo_likelihood(const PseudoLikelihoodDesign& design, const std::vector<double>& theta,
                              std::vector<double>* gradient, std::vector<double>* hessian) {
@@ -27,26 +26,31 @@ double log_pseudo_likelihood(const PseudoLikelihoodDesign& design, const std::ve
   if (hessian) hessian->assign(p * p, 0.0);
   for (const QuadraturePoint& q : design.points) {
     double eta = theta[static_cast<std::size_t>(q.category)];
-    for (const auto& [index, count] : q.counts) eta += theta[static_cast<std::size_t>(index)] * count;
+    for (const auto& [index, count] : q.counts)
+      eta += theta[static_cast<std::size_t>(index)] * count;
     if (eta == kMinusInfinity) continue;
     const double mass = q.weight * std::exp(eta);
     value -= mass;
     if (gradient) {
       (*gradient)[static_cast<std::size_t>(q.category)] -= mass;
-      for (const auto& [index, count] : q.counts) (*gradient)[static_cast<std::size_t>(index)] -= mass * count;
+      for (const auto& [index, count] : q.counts)
+        (*gradient)[static_cast<std::size_t>(index)] -= mass * count;
     }
     if (hessian) {
       // t = e_category + Σ count e_index
       std::vector<std::pair<int, double>> t{{q.category, 1.0}};
       for (const auto& [index, count] : q.counts) t.emplace_back(index, static_cast<double>(count));
       for (const auto& [i, ti] : t)
-        for (const auto& [j, tj] : t) (*hessian)[static_cast<std::size_t>(i) * p + static_cast<std::size_t>(j)] -= mass * ti * tj;
+        for (const auto& [j, tj] : t)
+          (*hessian)[static_cast<std::size_t>(i) * p + static_cast<std::size_t>(j)] -=
+              mass * ti * tj;
     }
   }
   return value;
 }
 
-MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, const std::vector<double>& start) {
+MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design,
+                                      const std::vector<double>& start) {
   const std::size_t p = static_cast<std::size_t>(design.parameter_count);
   MpleResult result;
   result.theta = start;
@@ -57,7 +61,8 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
   std::vector<double> exposure(p, 0.0);
   for (const QuadraturePoint& q : design.points) {
     exposure[static_cast<std::size_t>(q.category)] += q.weight;
-    for (const auto& [index, count] : q.counts) exposure[static_cast<std::size_t>(index)] += q.weight * count;
+    for (const auto& [index, count] : q.counts)
+      exposure[static_cast<std::size_t>(index)] += q.weight * count;
   }
   std::vector<int> free;
   for (std::size_t k = 0; k < p; ++k) {
@@ -78,7 +83,8 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
     return theta;
   };
   std::vector<double> x(free.size());
-  for (std::size_t k = 0; k < free.size(); ++k) x[k] = result.theta[static_cast<std::size_t>(free[k])];
+  for (std::size_t k = 0; k < free.size(); ++k)
+    x[k] = result.theta[static_cast<std::size_t>(free[k])];
 
   if (!free.empty()) {
     // Minimise −LPL with L-BFGS and the analytic gradient.
@@ -103,8 +109,10 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
           auto* c = static_cast<Context*>(data);
           ++c->evaluations;
           std::vector<double> g;
-          const double value = log_pseudo_likelihood(*c->design, c->full(v), grad.empty() ? nullptr : &g);
-          for (std::size_t k = 0; k < grad.size(); ++k) grad[k] = -g[static_cast<std::size_t>((*c->free)[k])];
+          const double value =
+              log_pseudo_likelihood(*c->design, c->full(v), grad.empty() ? nullptr : &g);
+          for (std::size_t k = 0; k < grad.size(); ++k)
+            grad[k] = -g[static_cast<std::size_t>((*c->free)[k])];
           return -value;
         },
         &context);
@@ -120,7 +128,8 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
     }
     result.evaluations = context.evaluations;
     if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
-      for (std::size_t k = 0; k < free.size(); ++k) x[k] = result.theta[static_cast<std::size_t>(free[k])];
+      for (std::size_t k = 0; k < free.size(); ++k)
+        x[k] = result.theta[static_cast<std::size_t>(free[k])];
     }
 
     // Newton polish with backtracking on the concave LPL.
@@ -146,7 +155,8 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
       bool improved = false;
       for (int halving = 0; halving < 40; ++halving) {
         for (std::size_t k = 0; k < x.size(); ++k) {
-          trial[k] = std::clamp(x[k] + scale * direction[static_cast<Eigen::Index>(k)], lower[k], upper[k]);
+          trial[k] = std::clamp(x[k] + scale * direction[static_cast<Eigen::Index>(k)], lower[k],
+                                upper[k]);
         }
         const double trial_value = log_pseudo_likelihood(design, full(trial));
         if (std::isfinite(trial_value) && trial_value >= value - 1e-12 * std::abs(value)) {
@@ -165,7 +175,8 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
   // Parameters stuck on the search box have no finite maximum.
   for (std::size_t k = 0; k < free.size(); ++k) {
     const double start_value = start[static_cast<std::size_t>(free[k])];
-    if (std::abs(x[k] - start_value) >= kBound - 1e-6) result.status[static_cast<std::size_t>(free[k])] = model::ParameterStatus::unbounded;
+    if (std::abs(x[k] - start_value) >= kBound - 1e-6)
+      result.status[static_cast<std::size_t>(free[k])] = model::ParameterStatus::unbounded;
   }
   result.theta = full(x);
   std::vector<double> gradient, hessian;
@@ -175,15 +186,17 @@ MpleResult maximise_pseudo_likelihood(const PseudoLikelihoodDesign& design, cons
     Eigen::MatrixXd information(n, n);
     for (Eigen::Index i = 0; i < n; ++i)
       for (Eigen::Index j = 0; j < n; ++j)
-        information(i, j) = -hessian[static_cast<std::size_t>(free[static_cast<std::size_t>(i)]) * p +
-                                     static_cast<std::size_t>(free[static_cast<std::size_t>(j)])];
+        information(i, j) =
+            -hessian[static_cast<std::size_t>(free[static_cast<std::size_t>(i)]) * p +
+                     static_cast<std::size_t>(free[static_cast<std::size_t>(j)])];
     const Eigen::LDLT<Eigen::MatrixXd> solver(information);
     if (solver.info() == Eigen::Success) {
       const Eigen::MatrixXd covariance = solver.solve(Eigen::MatrixXd::Identity(n, n));
       for (Eigen::Index i = 0; i < n; ++i) {
         const double variance = covariance(i, i);
         if (variance > 0 && std::isfinite(variance)) {
-          result.standard_errors[static_cast<std::size_t>(free[static_cast<std::size_t>(i)])] = std::sqrt(variance);
+          result.standard_errors[static_cast<std::size_t>(free[static_cast<std::size_t>(i)])] =
+              std::sqrt(variance);
         }
       }
     }

@@ -1,11 +1,12 @@
 #include "libshapeproc/fit/quadrature_cell.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::fit {
 
@@ -20,7 +21,8 @@ namespace {
 constexpr double kSectorReach = 1.5;
 
 double cell_radius(int dimension, double measure) {
-  return dimension == 2 ? std::sqrt(measure / core::kPi) : std::cbrt(3.0 * measure / (4.0 * core::kPi));
+  return dimension == 2 ? std::sqrt(measure / core::kPi)
+                        : std::cbrt(3.0 * measure / (4.0 * core::kPi));
 }
 
 // A place where the statistics change inside the cell: with probability `fraction` the
@@ -149,7 +151,8 @@ int piece_axis(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts, std::
 
 // A distance of the piece's interval between `axis`'s thresholds: with the cuts of that axis at
 // b_0 < … < b_m-1, a piece below k of them lies in [b_{m-k-1}, b_{m-k}).
-double piece_distance(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts, std::uint64_t inside, int axis) {
+double piece_distance(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts,
+                      std::uint64_t inside, int axis) {
   double lower = -1.0, upper = -1.0;  // breakpoints of the piece's interval (-1: none)
   int m = 0, below = 0;
   for (int c = n.first_cut; c < n.first_cut + n.cut_count; ++c) {
@@ -176,7 +179,8 @@ double piece_distance(const PlaneNeighbour& n, const std::vector<PlaneCut>& cuts
 // Corners of the cell, in units of half its side.
 constexpr std::array<Point2, 4> kCorners{{{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}};
 
-std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+std::vector<CellPart> integrate_cell_plane(const CellContext& context,
+                                           const geometry::Element& dummy, const Vec3& size,
                                            bool* uniform, CornerCache* cache) {
   const Interaction& interaction = *context.interaction;
   const geometry::PairMeasurer& measurer = *context.measurer;
@@ -187,16 +191,22 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
   const double sample_reach = 3 * (context.top_corner > 0 ? context.top_corner : corner);
   // Lattice coordinates of the corners, when they lie on the lattice.
   std::array<long, 4> lattice_x{}, lattice_y{};
-  bool on_lattice = cache != nullptr && context.lattice_step.x() > 0 && context.lattice_step.y() > 0;
+  bool on_lattice =
+      cache != nullptr && context.lattice_step.x() > 0 && context.lattice_step.y() > 0;
   for (std::size_t i = 0; i < 4 && on_lattice; ++i) {
-    const double fx = (dummy.position.x() + kCorners[i].x * hx - context.lattice_origin.x()) / context.lattice_step.x();
-    const double fy = (dummy.position.y() + kCorners[i].y * hy - context.lattice_origin.y()) / context.lattice_step.y();
+    const double fx = (dummy.position.x() + kCorners[i].x * hx - context.lattice_origin.x()) /
+                      context.lattice_step.x();
+    const double fy = (dummy.position.y() + kCorners[i].y * hy - context.lattice_origin.y()) /
+                      context.lattice_step.y();
     lattice_x[i] = std::lround(fx);
     lattice_y[i] = std::lround(fy);
-    on_lattice = std::abs(fx - static_cast<double>(lattice_x[i])) < 1e-6 && std::abs(fy - static_cast<double>(lattice_y[i])) < 1e-6;
+    on_lattice = std::abs(fx - static_cast<double>(lattice_x[i])) < 1e-6 &&
+                 std::abs(fy - static_cast<double>(lattice_y[i])) < 1e-6;
   }
   // Whether the line n·p = c meets the cell.
-  const auto meets = [&](double nx, double ny, double c) { return std::abs(c) < std::abs(nx) * hx + std::abs(ny) * hy; };
+  const auto meets = [&](double nx, double ny, double c) {
+    return std::abs(c) < std::abs(nx) * hx + std::abs(ny) * hy;
+  };
   // Work space kept by the thread (integrate_cell_adaptive calls this function again only after
   // it returned).
   thread_local std::vector<PlaneNeighbour> neighbours;
@@ -220,14 +230,16 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     if (!interaction.interacts(dummy.category, other.category)) return;
     Vec3 offset = other.position - dummy.position;
     for (int axis = 0; axis < 2; ++axis) {
-      if (context.period[axis] > 0) offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
+      if (context.period[axis] > 0)
+        offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
     }
     const double gap = offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape);
     if (gap >= interaction.max_range(dummy.category, other.category) + corner) return;
     candidates.push_back({gap, k, offset});
   });
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& a, const Candidate& b) { return a.gap < b.gap || (a.gap == b.gap && a.k < b.k); });
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.gap < b.gap || (a.gap == b.gap && a.k < b.k);
+  });
   for (const Candidate& candidate : candidates) {
     if (forbidden) break;
     const int k = candidate.k;
@@ -249,11 +261,13 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     const double cutoff = reach + sample_reach;
     const std::vector<double>& breakpoints = interaction.breakpoints(ca, cb);
     const auto within = [](const std::vector<double>& marks, double low, double high) {
-      return std::any_of(marks.begin(), marks.end(), [&](double t) { return t > low && t <= high; });
+      return std::any_of(marks.begin(), marks.end(),
+                         [&](double t) { return t > low && t <= high; });
     };
     const auto any_within = [&](double low, double high) { return within(breakpoints, low, high); };
     const int certain = measurer.certain_axis(dummy.shape, other.shape, offset, corner);
-    const std::vector<double>& deciding = certain >= 0 ? interaction.thresholds(ca, cb, certain) : breakpoints;
+    const std::vector<double>& deciding =
+        certain >= 0 ? interaction.thresholds(ca, cb, certain) : breakpoints;
     double d = lo;
     const bool exact = within(deciding, lo - corner, hi + corner);
     if (exact) {
@@ -267,9 +281,15 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     // The dummy moved by p sees the neighbour at offset − p.
     const Vec3 image = offset - (other.position - dummy.position);
     const auto key = [&](std::size_t i) {
-      return CornerCache::Key{dummy.shape, k, lattice_x[i], lattice_y[i],
-                              context.period.x() > 0 ? static_cast<int>(std::lround(image.x() / context.period.x())) : 0,
-                              context.period.y() > 0 ? static_cast<int>(std::lround(image.y() / context.period.y())) : 0};
+      return CornerCache::Key{
+          dummy.shape,
+          k,
+          lattice_x[i],
+          lattice_y[i],
+          context.period.x() > 0 ? static_cast<int>(std::lround(image.x() / context.period.x()))
+                                 : 0,
+          context.period.y() > 0 ? static_cast<int>(std::lround(image.y() / context.period.y()))
+                                 : 0};
     };
     const auto at_corner = [&](std::size_t i) {
       Vec3 o = offset;
@@ -278,7 +298,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       return o;
     };
     const auto sample_distance = [&](std::size_t i) {
-      const auto measure = [&] { return measurer.distance(dummy.shape, other.shape, at_corner(i), cutoff); };
+      const auto measure = [&] {
+        return measurer.distance(dummy.shape, other.shape, at_corner(i), cutoff);
+      };
       return on_lattice ? cache->distance(key(i), measure) : measure();
     };
     const auto sample_angle = [&](std::size_t i) {
@@ -288,15 +310,15 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       };
       return on_lattice ? cache->angle(key(i), measure) : measure();
     };
-    PlaneNeighbour n{cb, certain, d,
-                     static_cast<int>(cuts.size()), 0};
+    PlaneNeighbour n{cb, certain, d, static_cast<int>(cuts.size()), 0};
     std::uint64_t axes = 0;  // axes whose thresholds matter in the cell
     if (n.axis < 0 && (exact ? !any_within(d - corner, d + corner) : true)) {
       // Every axis keeps one band over the cell: when all are a hard core, or all beyond, the
       // axis does not matter.
       const int first = interaction.band(ca, cb, 0, d);
       bool same = first < 0;
-      for (int axis = 1; axis < measurer.bins().axis_count() && same; ++axis) same = interaction.band(ca, cb, axis, d) == first;
+      for (int axis = 1; axis < measurer.bins().axis_count() && same; ++axis)
+        same = interaction.band(ca, cb, axis, d) == first;
       if (same) n.axis = 0;
     }
     if (n.axis < 0) {
@@ -309,7 +331,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       const long sector = std::lround(angle / step);
       const double margin = step / 2 - std::abs(angle - static_cast<double>(sector) * step);
       // Whether two axes give different bands somewhere in the cell's range of distances.
-      const double range_low = exact ? d - corner : lo - corner, range_high = exact ? d + corner : hi + corner;
+      const double range_low = exact ? d - corner : lo - corner,
+                   range_high = exact ? d + corner : hi + corner;
       // (Bands of two axes are other parameters unless both are a hard core or beyond.)
       const auto differ = [&](int axis_a, int axis_b) {
         const auto differ_at = [&](double x) {
@@ -317,13 +340,17 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           return band_a >= 0 || band_a != interaction.band(ca, cb, axis_b, x);
         };
         if (differ_at(std::max(0.0, range_low))) return true;
-        return std::any_of(breakpoints.begin(), breakpoints.end(),
-                           [&](double t) { return t > range_low && t <= range_high && differ_at(t); });
+        return std::any_of(breakpoints.begin(), breakpoints.end(), [&](double t) {
+          return t > range_low && t <= range_high && differ_at(t);
+        });
       };
       const long half_turn = directions / 2;
-      const auto axis_of_sector = [&](long s) { return static_cast<int>(((s % half_turn) + half_turn) % half_turn); };
+      const auto axis_of_sector = [&](long s) {
+        return static_cast<int>(((s % half_turn) + half_turn) % half_turn);
+      };
       const long nearest_other = sector + (angle > static_cast<double>(sector) * step ? 1 : -1);
-      if (directions > 2 && margin * offset.norm() < kSectorReach * corner && differ(n.axis, axis_of_sector(nearest_other))) {
+      if (directions > 2 && margin * offset.norm() < kSectorReach * corner &&
+          differ(n.axis, axis_of_sector(nearest_other))) {
         // The angle at the four corners, relative to the centre's; its slope by least squares.
         std::array<double, 4> turns;
         for (std::size_t i = 0; i < 4; ++i) {
@@ -365,7 +392,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
         if (!holds(axes, axis)) continue;
         for (const double t : interaction.thresholds(ca, cb, axis)) {
           if (t <= low || t > high) continue;
-          auto at = std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == t; });
+          auto at =
+              std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == t; });
           if (at == found.end()) {
             found.push_back({t, 0});
             at = found.end() - 1;
@@ -417,7 +445,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           }
           const bool curved = off_contact >= 3 && weight > 1e-3 * corner4;
           // A curvature radius below the cell's half-diagonal is taken as that radius.
-          const double bend = std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner, 1.0 / corner);
+          const double bend =
+              std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner, 1.0 / corner);
           // The level set ξ = level − bend·η² as chords across the cell, each moved towards
           // the parabola by 2/3 of its sagitta so that the areas balance; the convex side is
           // the intersection of the chords' half-planes.
@@ -425,7 +454,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
           const int chords = sagitta < 0.05 * side ? 1 : sagitta < 0.5 * side ? 2 : 4;
           for (const auto& [b, threshold_axes] : crossing) {
             const double level = (b - d) / slope;
-            PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides.size()), chords};
+            PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides.size()),
+                         chords};
             const double sign = cut.inside_below ? 1.0 : -1.0;
             for (int i = 0; i < chords; ++i) {
               const double e0 = -corner + 2 * corner * i / chords, e1 = e0 + 2 * corner / chords;
@@ -454,8 +484,9 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
   // Cut the cell along every boundary, nearest neighbours first (their hard cores drop pieces
   // early); after a neighbour's cuts, pieces in its hard core are dropped. A distance cut only
   // splits pieces on the side of the axes whose threshold it is.
-  std::stable_sort(neighbours.begin(), neighbours.end(),
-                   [](const PlaneNeighbour& a, const PlaneNeighbour& b) { return a.distance < b.distance; });
+  std::stable_sort(
+      neighbours.begin(), neighbours.end(),
+      [](const PlaneNeighbour& a, const PlaneNeighbour& b) { return a.distance < b.distance; });
   constexpr std::size_t kMaxCuts = 64, kMaxPieces = 256;
   thread_local std::vector<Piece> pieces, next;
   pieces.assign(1, Piece{});
@@ -475,7 +506,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
       const HalfPlane* last = first + cut.side_count;
       if (static_cast<std::size_t>(c) >= kMaxCuts || pieces.size() >= kMaxPieces) {
         // Too many boundaries: the rest keep the centre's side.
-        const bool centre_inside = std::all_of(first, last, [](const HalfPlane& h) { return h.c >= 0; });
+        const bool centre_inside =
+            std::all_of(first, last, [](const HalfPlane& h) { return h.c >= 0; });
         if (static_cast<std::size_t>(c) < kMaxCuts && centre_inside) {
           for (Piece& piece : pieces) piece.inside |= std::uint64_t{1} << c;
         }
@@ -510,8 +542,8 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     next.clear();
     for (const Piece& piece : pieces) {
       const int axis = piece_axis(n, cuts, piece.inside);
-      if (interaction.band(dummy.category, n.category, axis, piece_distance(n, cuts, piece.inside, axis)) !=
-          Interaction::kHardCore) {
+      if (interaction.band(dummy.category, n.category, axis,
+                           piece_distance(n, cuts, piece.inside, axis)) != Interaction::kHardCore) {
         next.push_back(piece);
       }
     }
@@ -524,23 +556,27 @@ std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geo
     model::InteractionCounts counts = base;
     for (const PlaneNeighbour& n : neighbours) {
       const int axis = piece_axis(n, cuts, piece.inside);
-      const int band = interaction.band(dummy.category, n.category, axis, piece_distance(n, cuts, piece.inside, axis));
+      const int band = interaction.band(dummy.category, n.category, axis,
+                                        piece_distance(n, cuts, piece.inside, axis));
       if (band >= 0) counts.add(interaction.parameter(dummy.category, n.category, axis, band));
     }
     const double fraction = piece.polygon.area() / cell_area;
-    const auto same = std::find_if(result.begin(), result.end(), [&](const CellPart& p) { return p.counts == counts.counts; });
+    const auto same = std::find_if(result.begin(), result.end(),
+                                   [&](const CellPart& p) { return p.counts == counts.counts; });
     if (same != result.end()) {
       same->fraction += fraction;
     } else {
       result.push_back({fraction, std::move(counts.counts)});
     }
   }
-  std::sort(result.begin(), result.end(), [](const CellPart& a, const CellPart& b) { return a.counts < b.counts; });
+  std::sort(result.begin(), result.end(),
+            [](const CellPart& a, const CellPart& b) { return a.counts < b.counts; });
   return result;
 }
 
 // 3D: each boundary cuts the ball of the cell's measure at its estimated distance.
-std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+std::vector<CellPart> integrate_cell_ball(const CellContext& context,
+                                          const geometry::Element& dummy, const Vec3& size,
                                           bool* uniform) {
   double measure = 1.0;
   for (int axis = 0; axis < context.dimension; ++axis) measure *= size[axis];
@@ -562,9 +598,12 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
     const double reach = interaction.max_range(dummy.category, other.category);
     Vec3 offset = other.position - dummy.position;
     for (int axis = 0; axis < context.dimension; ++axis) {
-      if (context.period[axis] > 0) offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
+      if (context.period[axis] > 0)
+        offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
     }
-    if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >= reach + corner) return;
+    if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >=
+        reach + corner)
+      return;
     auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
     if (lo >= reach + corner) return;
     int axis = measurer.axis_from_boxes(dummy.shape, other.shape, offset, corner);
@@ -606,7 +645,8 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
     bool neighbour_near = false;
     if (exact) {
       // The nearest threshold on either side within the cell.
-      const int below = interaction.band(dummy.category, other.category, axis, std::max(0.0, d - corner));
+      const int below =
+          interaction.band(dummy.category, other.category, axis, std::max(0.0, d - corner));
       const int above = interaction.band(dummy.category, other.category, axis, d + corner);
       if (below != band || above != band) {
         neighbour_near = true;
@@ -615,12 +655,17 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
         double inside = d, outside = downward ? std::max(0.0, d - corner) : d + corner;
         for (int it = 0; it < 60; ++it) {
           const double mid = 0.5 * (inside + outside);
-          if (interaction.band(dummy.category, other.category, axis, mid) == band) inside = mid; else outside = mid;
+          if (interaction.band(dummy.category, other.category, axis, mid) == band)
+            inside = mid;
+          else
+            outside = mid;
         }
         const double x = std::abs(0.5 * (inside + outside) - d);
         const int other_band = downward ? below : above;
         // Only the nearest crossing on that side is modelled; a second one within the cell is rare.
-        if (x < radius) cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, axis});
+        if (x < radius)
+          cuts.push_back(
+              {index, cut_fraction(context.dimension, cell_measure, x), other_band, axis});
       }
     }
     if (angular_margin >= 0 && d < reach + corner) {
@@ -630,14 +675,16 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
         const int other_band = interaction.band(dummy.category, other.category, other_axis, d);
         // Another axis means other parameters even in the same band.
         if (other_band != band || other_band >= 0) {
-          cuts.push_back({index, cut_fraction(context.dimension, cell_measure, x), other_band, other_axis});
+          cuts.push_back(
+              {index, cut_fraction(context.dimension, cell_measure, x), other_band, other_axis});
         }
       }
     }
     near_boundary = near_boundary || neighbour_near;
     if (band == Interaction::kHardCore) {
       bool rescued = false;
-      for (const Cut& cut : cuts) rescued = rescued || (cut.neighbour == index && cut.other_band != Interaction::kHardCore);
+      for (const Cut& cut : cuts)
+        rescued = rescued || (cut.neighbour == index && cut.other_band != Interaction::kHardCore);
       // Deep inside a hard core (no boundary of this neighbour within the cell) the whole cell is
       // forbidden, whatever the others do.
       if (!rescued && !neighbour_near) {
@@ -674,7 +721,8 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
         forbidden = true;
         break;
       }
-      if (n.band >= 0) counts.add(interaction.parameter(dummy.category, n.category, n.axis, n.band));
+      if (n.band >= 0)
+        counts.add(interaction.parameter(dummy.category, n.category, n.axis, n.band));
     }
     if (!forbidden) parts.push_back({fraction, std::move(counts.counts)});
   }
@@ -683,13 +731,14 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geom
 
 }  // namespace
 
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
-                                     bool* uniform, CornerCache* cache) {
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy,
+                                     const Vec3& size, bool* uniform, CornerCache* cache) {
   if (context.dimension == 2) return integrate_cell_plane(context, dummy, size, uniform, cache);
   return integrate_cell_ball(context, dummy, size, uniform);
 }
 
-std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context,
+                                              const geometry::Element& dummy, const Vec3& size,
                                               int depth, CornerCache* cache) {
   bool uniform = true;
   std::vector<CellPart> parts = integrate_cell(context, dummy, size, &uniform, cache);

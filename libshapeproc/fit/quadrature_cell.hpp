@@ -27,9 +27,9 @@
 #include <utility>
 #include <vector>
 
+#include "libshapeproc/geometry/neighbour_grid.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/geometry/neighbour_grid.hpp"
 
 namespace shapeproc::fit {
 
@@ -63,8 +63,8 @@ class CornerCache {
     long x, y;
     int image_x, image_y;
     bool operator==(const Key& o) const {
-      return shape == o.shape && neighbour == o.neighbour && x == o.x && y == o.y && image_x == o.image_x &&
-             image_y == o.image_y;
+      return shape == o.shape && neighbour == o.neighbour && x == o.x && y == o.y &&
+             image_x == o.image_x && image_y == o.image_y;
     }
   };
   // The value stored under `key` (distances and angles apart), measure() the first time.
@@ -94,8 +94,9 @@ class CornerCache {
   };
   static std::size_t hash(const Key& k, int kind) {
     std::size_t h = std::hash<long>()(k.x * 1000003L + k.y);
-    h ^= std::hash<long>()((static_cast<long>(k.shape) << 40) ^ (static_cast<long>(k.neighbour) << 8) ^
-                           ((k.image_x + 2) << 4) ^ (k.image_y + 2) ^ (static_cast<long>(kind) << 60)) +
+    h ^= std::hash<long>()((static_cast<long>(k.shape) << 40) ^
+                           (static_cast<long>(k.neighbour) << 8) ^ ((k.image_x + 2) << 4) ^
+                           (k.image_y + 2) ^ (static_cast<long>(kind) << 60)) +
          0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
     return h * 0x9e3779b97f4a7c15ULL;
   }
@@ -137,13 +138,16 @@ class CornerCache {
 // Parts of the rectangular (box) cell of extents `size` around `dummy` with λ > 0 (hard-core
 // parts dropped; an empty result when the whole cell is hard core). `uniform` tells whether no
 // boundary crosses the cell, so that the result is exact.
-std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy, const geometry::Vec3& size,
-                                     bool* uniform = nullptr, CornerCache* cache = nullptr);
+std::vector<CellPart> integrate_cell(const CellContext& context, const geometry::Element& dummy,
+                                     const geometry::Vec3& size, bool* uniform = nullptr,
+                                     CornerCache* cache = nullptr);
 
 // integrate_cell, refined: a cell that is not uniform is split into 2^dim sub-cells, down to
 // `depth` levels; the finest cells use the cut estimate. Fractions are of the top cell.
-std::vector<CellPart> integrate_cell_adaptive(const CellContext& context, const geometry::Element& dummy, const geometry::Vec3& size,
-                                              int depth, CornerCache* cache = nullptr);
+std::vector<CellPart> integrate_cell_adaptive(const CellContext& context,
+                                              const geometry::Element& dummy,
+                                              const geometry::Vec3& size, int depth,
+                                              CornerCache* cache = nullptr);
 
 // Fraction of a disc (2D) or ball (3D) of the given measure lying beyond a plane at distance
 // x ≥ 0 from its centre.

@@ -48,8 +48,9 @@ struct CellGrid {
   int index_of(const FitRegion& region, const Vec3& p) const {
     int index = 0;
     for (int axis = region.dimension - 1; axis >= 0; --axis) {
-      const int k = std::clamp(static_cast<int>(std::floor((p[axis] - region.box.min()[axis]) / sizes[axis] * count[axis])), 0,
-                               count[axis] - 1);
+      const int k = std::clamp(static_cast<int>(std::floor((p[axis] - region.box.min()[axis]) /
+                                                           sizes[axis] * count[axis])),
+                               0, count[axis] - 1);
       index = index * count[axis] + k;
     }
     return index;
@@ -80,11 +81,13 @@ void on_threads(const F& evaluate) {
 // With every shape at every location, shapes with the same proxy (copies of one drawing) measure
 // alike: one dummy stands for all of them, its weight multiplied. Empty when only some shapes are
 // used at each location.
-std::vector<std::pair<int, int>> distinct_shapes(const std::vector<int>& shapes, int m, const geometry::PairMeasurer& measurer) {
+std::vector<std::pair<int, int>> distinct_shapes(const std::vector<int>& shapes, int m,
+                                                 const geometry::PairMeasurer& measurer) {
   std::vector<std::pair<int, int>> distinct;  // (shape, copies)
   if (m != static_cast<int>(shapes.size())) return distinct;
   for (const int shape : shapes) {
-    auto same = std::find_if(distinct.begin(), distinct.end(), [&](const auto& d) { return measurer.same_proxy(d.first, shape); });
+    auto same = std::find_if(distinct.begin(), distinct.end(),
+                             [&](const auto& d) { return measurer.same_proxy(d.first, shape); });
     if (same == distinct.end()) {
       distinct.push_back({shape, 1});
     } else {
@@ -97,17 +100,20 @@ std::vector<std::pair<int, int>> distinct_shapes(const std::vector<int>& shapes,
 // Every row of cells as the line through the cell centres, integrated exactly along its length.
 // Dummies of a row are its cells left to right; the first of each (category, row, shape) carries
 // the whole line, the others nothing.
-void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid, const FitRegion& region,
-                     const LineContext& context, std::vector<std::vector<CellPart>>& parts) {
+void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid,
+                     const FitRegion& region, const LineContext& context,
+                     std::vector<std::vector<CellPart>>& parts) {
   const double row_length = grid.sizes.x();
   on_threads([&](std::size_t begin, std::size_t step) {
     for (std::size_t d = begin; d < dummies.size(); d += step) {
       const Element& dummy = dummies[d].element;
-      const int column = static_cast<int>(std::floor((dummy.position.x() - region.box.min().x()) / grid.sizes.x() * grid.count[0]));
+      const int column = static_cast<int>(
+          std::floor((dummy.position.x() - region.box.min().x()) / grid.sizes.x() * grid.count[0]));
       if (column != 0) continue;
       Vec3 start = dummy.position;
       start.x() = region.box.min().x();
-      for (LinePiece& piece : integrate_line(context, dummy.category, dummy.shape, start, row_length)) {
+      for (LinePiece& piece :
+           integrate_line(context, dummy.category, dummy.shape, start, row_length)) {
         parts[d].push_back({piece.length / row_length, std::move(piece.counts)});
       }
     }
@@ -117,11 +123,12 @@ void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid, co
 // Each dummy integrated over its cell, by blocks of 4 rows of cells that one thread takes at a
 // time; corners on a lattice fine enough for three levels of refinement are shared by the cells
 // of a block (the results do not depend on the blocks).
-void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::size_t>& block_start, const CellGrid& grid,
-                     const FitRegion& region, CellContext context, double range, int refinement,
-                     std::vector<std::vector<CellPart>>& parts) {
+void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::size_t>& block_start,
+                     const CellGrid& grid, const FitRegion& region, CellContext context,
+                     double range, int refinement, std::vector<std::vector<CellPart>>& parts) {
   Vec3 cell_size = Vec3::Zero();
-  for (int axis = 0; axis < region.dimension; ++axis) cell_size[axis] = grid.sizes[axis] / grid.count[axis];
+  for (int axis = 0; axis < region.dimension; ++axis)
+    cell_size[axis] = grid.sizes[axis] / grid.count[axis];
   context.lattice_origin = region.box.min();
   context.lattice_step = cell_size / 8.0;
   context.top_corner = 0.5 * cell_size.norm();
@@ -132,7 +139,8 @@ void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::s
       cache.clear();
       for (std::size_t d = block_start[b]; d < block_start[b + 1]; ++d) {
         parts[d] = range <= 0 ? std::vector<CellPart>{CellPart{}}
-                              : integrate_cell_adaptive(context, dummies[d].element, cell_size, refinement, &cache);
+                              : integrate_cell_adaptive(context, dummies[d].element, cell_size,
+                                                        refinement, &cache);
       }
     }
   });
@@ -140,14 +148,16 @@ void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::s
 
 }  // namespace
 
-QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options, const FitRegion& region,
-                                   const geometry::PairMeasurer& measurer, const model::Interaction& interaction,
-                                   const ExemplarStatistics& statistics, const std::vector<std::vector<int>>& shapes_of,
-                                   bool periodic) {
+QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
+                                   const FitRegion& region, const geometry::PairMeasurer& measurer,
+                                   const model::Interaction& interaction,
+                                   const ExemplarStatistics& statistics,
+                                   const std::vector<std::vector<int>>& shapes_of, bool periodic) {
   const int dimension = region.dimension;
   const int categories = static_cast<int>(shapes_of.size());
   const std::size_t n = exemplar.elements.size();
-  const CellGrid grid(region, options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 48));
+  const CellGrid grid(region,
+                      options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 48));
   QuadratureDesign out;
   out.cells = grid.cells;
   out.cells_along = grid.cells_along;
@@ -156,14 +166,16 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   design.data_sum = statistics.data_sum;
 
   // Data points by category and cell.
-  std::vector<std::vector<std::vector<int>>> data_in_cell(static_cast<std::size_t>(categories),
-                                                         std::vector<std::vector<int>>(static_cast<std::size_t>(grid.cells)));
+  std::vector<std::vector<std::vector<int>>> data_in_cell(
+      static_cast<std::size_t>(categories),
+      std::vector<std::vector<int>>(static_cast<std::size_t>(grid.cells)));
   std::vector<int> data_of_category(static_cast<std::size_t>(categories), 0);
   for (std::size_t k = 0; k < n; ++k) {
     const Element& e = exemplar.elements[k];
     if (!region.contains(e.position)) continue;
-    data_in_cell[static_cast<std::size_t>(e.category)][static_cast<std::size_t>(grid.index_of(region, e.position))].push_back(
-        static_cast<int>(k));
+    data_in_cell[static_cast<std::size_t>(e.category)]
+                [static_cast<std::size_t>(grid.index_of(region, e.position))]
+                    .push_back(static_cast<int>(k));
     ++data_of_category[static_cast<std::size_t>(e.category)];
   }
   const double region_measure = grid.cell_measure * grid.cells;
@@ -174,7 +186,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   for (int c = 0; c < categories; ++c) {
     const std::vector<int>& shapes = shapes_of[static_cast<std::size_t>(c)];
     const int m_c = static_cast<int>(shapes.size());
-    const int m = options.shapes_per_location > 0 ? std::min(m_c, options.shapes_per_location) : m_c;
+    const int m =
+        options.shapes_per_location > 0 ? std::min(m_c, options.shapes_per_location) : m_c;
     const std::vector<std::pair<int, int>> distinct = distinct_shapes(shapes, m, measurer);
     const int data_count = data_of_category[static_cast<std::size_t>(c)];
     const double data_share = data_count > 0 ? options.data_weight : 0.0;
@@ -188,12 +201,14 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
       if (!distinct.empty()) {
         for (const auto& [shape, copies] : distinct) {
           e.shape = shape;
-          dummies.push_back({e, weight * copies, grid.cell_measure / static_cast<double>(m) * copies * grid.count[0]});
+          dummies.push_back({e, weight * copies,
+                             grid.cell_measure / static_cast<double>(m) * copies * grid.count[0]});
         }
       } else {
         for (int r = 0; r < m; ++r) {
           e.shape = shapes[static_cast<std::size_t>((static_cast<long>(cell) * m + r) % m_c)];
-          dummies.push_back({e, weight, grid.cell_measure / static_cast<double>(m) * grid.count[0]});
+          dummies.push_back(
+              {e, weight, grid.cell_measure / static_cast<double>(m) * grid.count[0]});
         }
       }
       for (int k : data_in_cell[static_cast<std::size_t>(c)][static_cast<std::size_t>(cell)]) {
@@ -211,7 +226,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   // Each dummy integrated against the data.
   const double range = interaction.range();
   double max_radius = 0.0;
-  for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
+  for (std::size_t s = 0; s < exemplar.shapes.size(); ++s)
+    max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
   out.lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> parts(dummies.size());
   const Vec3 period = periodic ? Vec3(exemplar.window.sizes()) : Vec3(Vec3::Zero());
@@ -226,10 +242,14 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     integrate_lines(dummies, grid, region, context, parts);
   } else {
     geometry::NeighbourGrid neighbours(
-        exemplar.window, dimension, range + 2 * max_radius + std::sqrt(static_cast<double>(dimension)) * grid.longest / grid.cells_along,
+        exemplar.window, dimension,
+        range + 2 * max_radius +
+            std::sqrt(static_cast<double>(dimension)) * grid.longest / grid.cells_along,
         periodic);
-    for (std::size_t k = 0; k < n; ++k) neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
-    const CellContext context{&interaction, &measurer, &exemplar.elements, &neighbours, dimension, period};
+    for (std::size_t k = 0; k < n; ++k)
+      neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
+    const CellContext context{&interaction, &measurer, &exemplar.elements,
+                              &neighbours,  dimension, period};
     integrate_cells(dummies, block_start, grid, region, context, range, options.refinement, parts);
   }
 
@@ -238,12 +258,15 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   std::vector<double> line_scale(static_cast<std::size_t>(categories), 1.0);
   if (out.lines) {
     const double measure = grid.sizes.head(dimension).prod();
-    for (const QuadraturePoint& q : design.points) line_scale[static_cast<std::size_t>(q.category)] -= q.weight / measure;
+    for (const QuadraturePoint& q : design.points)
+      line_scale[static_cast<std::size_t>(q.category)] -= q.weight / measure;
   }
   for (std::size_t d = 0; d < dummies.size(); ++d) {
     for (CellPart& part : parts[d]) {
       QuadraturePoint q;
-      q.weight = out.lines ? dummies[d].line_weight * line_scale[static_cast<std::size_t>(dummies[d].element.category)] * part.fraction
+      q.weight = out.lines ? dummies[d].line_weight *
+                                 line_scale[static_cast<std::size_t>(dummies[d].element.category)] *
+                                 part.fraction
                            : dummies[d].weight * part.fraction;
       q.category = dummies[d].element.category;
       q.counts = std::move(part.counts);
@@ -253,10 +276,12 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   return out;
 }
 
-PseudoLikelihoodDesign with_data_share(const QuadratureDesign& quadrature, double data_weight, double factor) {
+PseudoLikelihoodDesign with_data_share(const QuadratureDesign& quadrature, double data_weight,
+                                       double factor) {
   PseudoLikelihoodDesign heavier = quadrature.design;
   const double dummy_scale = (1 - factor * data_weight) / (1 - data_weight);
-  for (std::size_t i = 0; i < heavier.points.size(); ++i) heavier.points[i].weight *= i < quadrature.data_points ? factor : dummy_scale;
+  for (std::size_t i = 0; i < heavier.points.size(); ++i)
+    heavier.points[i].weight *= i < quadrature.data_points ? factor : dummy_scale;
   return heavier;
 }
 

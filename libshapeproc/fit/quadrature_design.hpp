@@ -25,14 +25,16 @@ struct QuadratureDesign {
 
 // The design for `exemplar` (its statistics in `statistics`), integrated on up to two threads
 // (the result does not depend on the thread count). `periodic`: the exemplar's window is a torus.
-QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options, const FitRegion& region,
-                                   const geometry::PairMeasurer& measurer, const model::Interaction& interaction,
-                                   const ExemplarStatistics& statistics, const std::vector<std::vector<int>>& shapes_of,
-                                   bool periodic);
+QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
+                                   const FitRegion& region, const geometry::PairMeasurer& measurer,
+                                   const model::Interaction& interaction,
+                                   const ExemplarStatistics& statistics,
+                                   const std::vector<std::vector<int>>& shapes_of, bool periodic);
 
 // The same design with the data points' share multiplied by `factor` (the dummies' share scaled
 // so the weights still sum to |W|).
-PseudoLikelihoodDesign with_data_share(const QuadratureDesign& quadrature, double data_weight, double factor);
+PseudoLikelihoodDesign with_data_share(const QuadratureDesign& quadrature, double data_weight,
+                                       double factor);
 
 // Points with the same category and statistics contribute w·exp(θ·t) with the same t: merged
 // (most dummies see no neighbour or the same few), in a deterministic order.

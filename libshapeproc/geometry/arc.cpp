@@ -1,19 +1,20 @@
 #include "libshapeproc/geometry/arc.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::geometry {
 
 namespace {
 
-
 // Appends the arc of the ellipse (centre, radii, rotation) between parameter angles theta1 and
 // theta1 + delta as cubic pieces of at most 90 degrees, ending exactly at `end`.
 void append_arc_pieces(Path2& path, const Vec2& centre, double rx, double ry, double phi,
                        double theta1, double delta, const Vec2& start, const Vec2& end) {
-  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (core::kPi / 2) - 1e-9)));
+  const int pieces =
+      std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (core::kPi / 2) - 1e-9)));
   const double step = delta / pieces;
   // Control-point distance for a circular arc of angle `step` on the unit circle.
   const double k = 4.0 / 3.0 * std::tan(step / 4.0);

@@ -2,14 +2,13 @@
 // 3D, mass points), and the dual-tree search for the closest pair of primitives of two shapes.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 namespace shapeproc::geometry {
 
@@ -20,8 +19,8 @@ struct BoxTree {
 
   struct Node {
     Box box;
-    int first = 0;   // children are nodes[first] and nodes[first + 1] for inner nodes;
-    int count = 0;   // for leaves (count > 0) primitives order[first .. first + count)
+    int first = 0;  // children are nodes[first] and nodes[first + 1] for inner nodes;
+    int count = 0;  // for leaves (count > 0) primitives order[first .. first + count)
   };
   std::vector<Node> nodes;  // nodes[0] is the root (absent when there is no primitive)
   std::vector<int> order;   // primitive indices, grouped by leaf
@@ -56,8 +55,9 @@ struct BoxTree {
     int axis = 0;
     (centres.max() - centres.min()).maxCoeff(&axis);
     const int middle = begin + (end - begin) / 2;
-    std::nth_element(order.begin() + begin, order.begin() + middle, order.begin() + end,
-                     [&](int a, int b) { return boxes[a].center()[axis] < boxes[b].center()[axis]; });
+    std::nth_element(
+        order.begin() + begin, order.begin() + middle, order.begin() + end,
+        [&](int a, int b) { return boxes[a].center()[axis] < boxes[b].center()[axis]; });
     const int first = static_cast<int>(nodes.size());
     nodes[node].first = first;
     nodes[node].count = 0;
@@ -85,7 +85,8 @@ struct ExactMinimum {
 template <int D, class PrimitiveSquaredDistance, class Prune = ExactMinimum>
 double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
                                      const typename BoxTree<D>::Vec& offset, double squared_cutoff,
-                                     PrimitiveSquaredDistance&& squared_distance, Prune&& prune = Prune{}) {
+                                     PrimitiveSquaredDistance&& squared_distance,
+                                     Prune&& prune = Prune{}) {
   if (a.empty() || b.empty()) return squared_cutoff;
   double best = squared_cutoff;
   struct Pending {
@@ -121,8 +122,9 @@ double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
       continue;
     }
     // Split the node with the larger box (or the only inner one).
-    const bool split_a = node_b.count > 0 ||
-                         (node_a.count == 0 && node_a.box.sizes().squaredNorm() >= node_b.box.sizes().squaredNorm());
+    const bool split_a =
+        node_b.count > 0 ||
+        (node_a.count == 0 && node_a.box.sizes().squaredNorm() >= node_b.box.sizes().squaredNorm());
     Pending first, second;
     if (split_a) {
       first = {node_a.first, p.nb, box_distance2(node_a.first, p.nb)};
@@ -132,7 +134,8 @@ double closest_pair_squared_distance(const BoxTree<D>& a, const BoxTree<D>& b,
       second = {p.na, node_b.first + 1, box_distance2(p.na, node_b.first + 1)};
     }
     if (first.lower < second.lower) std::swap(first, second);
-    if (top + 2 > kCapacity) throw std::length_error("closest_pair_squared_distance: trees too deep");
+    if (top + 2 > kCapacity)
+      throw std::length_error("closest_pair_squared_distance: trees too deep");
     stack[top++] = first;   // farther one below
     stack[top++] = second;  // nearer one on top
   }
@@ -145,10 +148,11 @@ template <int D, class PrimitiveDistance>
 double closest_pair_distance(const BoxTree<D>& a, const BoxTree<D>& b,
                              const typename BoxTree<D>::Vec& offset, double cutoff,
                              PrimitiveDistance&& distance) {
-  return std::sqrt(closest_pair_squared_distance<D>(a, b, offset, cutoff * cutoff, [&](int i, int j, double) {
-    const double d = distance(i, j);
-    return d * d;
-  }));
+  return std::sqrt(
+      closest_pair_squared_distance<D>(a, b, offset, cutoff * cutoff, [&](int i, int j, double) {
+        const double d = distance(i, j);
+        return d * d;
+      }));
 }
 
 }  // namespace shapeproc::geometry

@@ -1,10 +1,11 @@
 #include "libshapeproc/geometry/directions.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::geometry {
 
@@ -39,16 +40,19 @@ Vec3 healpix_base_pixel_centre(int pixel) {
   return from_z_phi(-2.0 / 3.0, core::kPi / 4 + (pixel - 8) * core::kPi / 2);
 }
 
-DirectionBins::DirectionBins(int dimension, int directions) : dimension_(dimension), directions_(directions) {
-  if (directions < 1) throw std::invalid_argument("directions: need at least 1, got " + std::to_string(directions));
+DirectionBins::DirectionBins(int dimension, int directions)
+    : dimension_(dimension), directions_(directions) {
+  if (directions < 1)
+    throw std::invalid_argument("directions: need at least 1, got " + std::to_string(directions));
   if (directions == 1) {
     axes_.push_back(Vec3::UnitX());
     return;
   }
   if (dimension == 2) {
     if (directions % 2 != 0) {
-      throw std::invalid_argument("directions: an even number (or 1 for isotropic) is needed in 2D, got " +
-                                  std::to_string(directions));
+      throw std::invalid_argument(
+          "directions: an even number (or 1 for isotropic) is needed in 2D, got " +
+          std::to_string(directions));
     }
     for (int k = 0; k < directions / 2; ++k) {
       const double angle = 2 * core::kPi * k / directions;

@@ -18,9 +18,14 @@ Boundary parse_boundary(const std::string& text) {
 
 Domain::Domain(const Box3& box, int dimension, Boundary boundary)
     : box_(box), dimension_(dimension), boundary_(boundary) {
-  core::check(dimension == 2 || dimension == 3, "domain", "the dimension is 2 or 3, got " + std::to_string(dimension));
+  core::check(dimension == 2 || dimension == 3, "domain",
+              "the dimension is 2 or 3, got " + std::to_string(dimension));
   for (int axis = 0; axis < dimension; ++axis) {
-    core::check_positive("domain", axis == 0 ? "the width" : axis == 1 ? "the height" : "the depth", box.sizes()[axis]);
+    core::check_positive("domain",
+                         axis == 0   ? "the width"
+                         : axis == 1 ? "the height"
+                                     : "the depth",
+                         box.sizes()[axis]);
   }
   if (boundary == Boundary::torus) period_.head(dimension) = box.sizes().head(dimension);
 }
@@ -55,7 +60,8 @@ bool Domain::contains(const Vec3& position) const {
 
 void Domain::set_mask(std::shared_ptr<const Raster> mask) {
   core::check(!mask || dimension_ == 2, "domain", "shape masks are for 2D domains");
-  core::check(!mask || boundary_ == Boundary::open, "domain", "a torus needs a rectangular domain: a mask needs an open boundary");
+  core::check(!mask || boundary_ == Boundary::open, "domain",
+              "a torus needs a rectangular domain: a mask needs an open boundary");
   mask_ = std::move(mask);
 }
 
@@ -68,7 +74,8 @@ bool Domain::contains(const Proxy2& proxy, const Vec2& position) const {
   if (!mask_) return true;
   const Raster& mask = *mask_;
   if (mask.sample(box_, position) < 0.5f) return false;
-  const double pixel = 0.5 * std::min(box_.sizes().x() / mask.width, box_.sizes().y() / mask.height);
+  const double pixel =
+      0.5 * std::min(box_.sizes().x() / mask.width, box_.sizes().y() / mask.height);
   for (std::size_t k = 0; k < proxy.segment_start.size(); ++k) {
     const Vec2 a = proxy.segment_start[k] + position, b = proxy.segment_end[k] + position;
     const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / pixel)));

@@ -45,7 +45,8 @@ class Domain {
   // unchanged on an open domain.
   Vec3 minimum_image(Vec3 offset) const {
     for (int axis = 0; axis < 3; ++axis) {
-      if (period_[axis] > 0) offset[axis] -= period_[axis] * std::round(offset[axis] / period_[axis]);
+      if (period_[axis] > 0)
+        offset[axis] -= period_[axis] * std::round(offset[axis] / period_[axis]);
     }
     return offset;
   }

@@ -51,10 +51,11 @@ class NeighbourhoodIndex {
 
 // The greedy pairing of Ma et al.: (index in `output`, index in `exemplar`) pairs of one category,
 // closest first, each element used once, none at r or farther.
-std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& output, const Neighbourhood& exemplar,
-                                                      double radius);
+std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& output,
+                                                      const Neighbourhood& exemplar, double radius);
 
 // |n(o) − n(e)| of eq. 1, with the greedy pairing.
-double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar, double radius);
+double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
+                              double radius);
 
 }  // namespace shapeproc::geometry

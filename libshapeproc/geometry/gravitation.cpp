@@ -52,8 +52,8 @@ MassModel<D> build(std::vector<typename MassModel<D>::Vec> points, std::vector<d
 }
 
 template <int D>
-typename MassModel<D>::Vec kernel(const typename MassModel<D>::Vec& from, const typename MassModel<D>::Vec& to,
-                                  double weight) {
+typename MassModel<D>::Vec kernel(const typename MassModel<D>::Vec& from,
+                                  const typename MassModel<D>::Vec& to, double weight) {
   using Vec = typename MassModel<D>::Vec;
   const Vec r = to - from;
   const double r2 = r.squaredNorm();
@@ -89,12 +89,14 @@ typename MassModel<D>::Vec force(const MassModel<D>& a, const MassModel<D>& b,
         const int pa = a.tree.order[i];
         for (int j = node_b.first; j < node_b.first + node_b.count; ++j) {
           const int pb = b.tree.order[j];
-          total += kernel<D>(a.points[pa], Vec(b.points[pb] + offset), a.weights[pa] * b.weights[pb]);
+          total +=
+              kernel<D>(a.points[pa], Vec(b.points[pb] + offset), a.weights[pa] * b.weights[pb]);
         }
       }
       continue;
     }
-    const bool open_a = node_b.count > 0 || (node_a.count == 0 && a.node_radius[na] >= b.node_radius[nb]);
+    const bool open_a =
+        node_b.count > 0 || (node_a.count == 0 && a.node_radius[na] >= b.node_radius[nb]);
     if (open_a) {
       stack.emplace_back(node_a.first, nb);
       stack.emplace_back(node_a.first + 1, nb);

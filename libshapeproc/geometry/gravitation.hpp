@@ -45,8 +45,10 @@ MassModel3 make_mass_model(std::vector<Vec3> points, std::vector<double> weights
 //   (M : ∇∇K)_i = −3 (2 (M R)_i + tr(M) R_i) / |R|^5 + 15 R_i (R·M R) / |R|^7.
 // The error is O((r/|R|)^3) relative, r the masses' radii.
 template <int D>
-Eigen::Matrix<double, D, 1> far_field_force(double mass_a, const Eigen::Matrix<double, D, D>& moments_a,
-                                            double mass_b, const Eigen::Matrix<double, D, D>& moments_b,
+Eigen::Matrix<double, D, 1> far_field_force(double mass_a,
+                                            const Eigen::Matrix<double, D, D>& moments_a,
+                                            double mass_b,
+                                            const Eigen::Matrix<double, D, D>& moments_b,
                                             const Eigen::Matrix<double, D, 1>& between) {
   const double r2 = between.squaredNorm();
   const double r = std::sqrt(r2);

@@ -5,13 +5,16 @@
 
 namespace shapeproc::geometry {
 
-NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size, bool periodic)
+NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size,
+                             bool periodic)
     : window_(window), dimension_(dimension), periodic_(periodic) {
   const geometry::Vec3 sizes = window.sizes();
   for (int axis = 0; axis < 3; ++axis) {
     const bool used = axis < dimension && sizes[axis] > 0;
     // At most 256 cells per axis; a cell never smaller than cell_size.
-    const int n = used && cell_size > 0 ? std::clamp(static_cast<int>(std::floor(sizes[axis] / cell_size)), 1, 256) : 1;
+    const int n = used && cell_size > 0
+                      ? std::clamp(static_cast<int>(std::floor(sizes[axis] / cell_size)), 1, 256)
+                      : 1;
     counts_[axis] = n;
     cell_[axis] = used ? sizes[axis] / n : 1.0;
   }
@@ -36,7 +39,9 @@ bool NeighbourGrid::wrap(Eigen::Vector3i& c) const {
   return true;
 }
 
-void NeighbourGrid::insert(int id, const geometry::Vec3& position) { cells_[linear(cell_of(position))].push_back(id); }
+void NeighbourGrid::insert(int id, const geometry::Vec3& position) {
+  cells_[linear(cell_of(position))].push_back(id);
+}
 
 void NeighbourGrid::remove(int id, const geometry::Vec3& position) {
   auto& cell = cells_[linear(cell_of(position))];

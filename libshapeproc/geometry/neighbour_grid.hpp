@@ -31,7 +31,9 @@ class NeighbourGrid {
           Eigen::Vector3i c = centre + Eigen::Vector3i(dx, dy, dz);
           if (!wrap(c)) continue;
           const std::size_t index = linear(c);
-          if (std::find(visited.begin(), visited.begin() + visited_count, index) != visited.begin() + visited_count) continue;
+          if (std::find(visited.begin(), visited.begin() + visited_count, index) !=
+              visited.begin() + visited_count)
+            continue;
           visited[static_cast<std::size_t>(visited_count++)] = index;
           for (int id : cells_[index]) f(id);
         }

@@ -1,11 +1,11 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 
@@ -35,21 +35,21 @@ bool lexicographically_negative(const Vec3& v) {
 // Shortest distance from p to the outline of a 2D proxy.
 double point_to_outline(const Proxy2& proxy, const Vec2& p) {
   BoxTree<2> single = BoxTree<2>::build({Box2(p, p)});
-  return closest_pair_distance<2>(single, proxy.segment_tree, Vec2::Zero(), PairMeasurer::kNoCutoff,
-                                  [&](int, int j) {
-                                    return point_segment_distance(p, proxy.segment_start[j], proxy.segment_end[j]);
-                                  });
+  return closest_pair_distance<2>(
+      single, proxy.segment_tree, Vec2::Zero(), PairMeasurer::kNoCutoff, [&](int, int j) {
+        return point_segment_distance(p, proxy.segment_start[j], proxy.segment_end[j]);
+      });
 }
 
 double point_to_surface(const Proxy3& proxy, const Vec3& p) {
   if (proxy.point) return (p - proxy.vertices[0]).norm();
   BoxTree<3> single = BoxTree<3>::build({Box3(p, p)});
-  return closest_pair_distance<3>(single, proxy.triangle_tree, Vec3::Zero(), PairMeasurer::kNoCutoff,
-                                  [&](int, int j) {
-                                    const auto& t = proxy.triangles[j];
-                                    return point_triangle_distance(p, proxy.vertices[t[0]], proxy.vertices[t[1]],
-                                                                   proxy.vertices[t[2]]);
-                                  });
+  return closest_pair_distance<3>(
+      single, proxy.triangle_tree, Vec3::Zero(), PairMeasurer::kNoCutoff, [&](int, int j) {
+        const auto& t = proxy.triangles[j];
+        return point_triangle_distance(p, proxy.vertices[t[0]], proxy.vertices[t[1]],
+                                       proxy.vertices[t[2]]);
+      });
 }
 
 // Points along a 2D outline at most `step` apart.
@@ -58,7 +58,8 @@ std::vector<Vec2> outline_samples(const Proxy2& proxy, double step) {
   for (std::size_t i = 0; i < proxy.segment_start.size(); ++i) {
     const Vec2 a = proxy.segment_start[i], b = proxy.segment_end[i];
     const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
-    for (int s = 0; s <= pieces; ++s) samples.push_back(a + (static_cast<double>(s) / pieces) * (b - a));
+    for (int s = 0; s <= pieces; ++s)
+      samples.push_back(a + (static_cast<double>(s) / pieces) * (b - a));
   }
   return samples;
 }
@@ -79,7 +80,8 @@ std::vector<Vec3> surface_samples(const Proxy3& proxy, double step) {
 
 PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options)
     : dimension_(scene.dimension), options_(options), bins_(scene.dimension, options.directions) {
-  if (!(options.proxy.tolerance >= 0.0)) throw std::invalid_argument("proxy tolerance must not be negative");
+  if (!(options.proxy.tolerance >= 0.0))
+    throw std::invalid_argument("proxy tolerance must not be negative");
   if (!(options.gravitation_theta >= 0.0 && options.gravitation_theta < 1.0)) {
     throw std::invalid_argument("gravitation theta must be in [0, 1)");
   }
@@ -99,7 +101,8 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       mass[s] = p.mass.start.size();
       // Farthest corner of the box from the reference position (the origin).
       double r = 0.0;
-      for (int corner = 0; corner < 4; ++corner) r = std::max(r, p.box.corner(static_cast<Box2::CornerType>(corner)).norm());
+      for (int corner = 0; corner < 4; ++corner)
+        r = std::max(r, p.box.corner(static_cast<Box2::CornerType>(corner)).norm());
       radii_.push_back(r);
     } else {
       proxies3_.push_back(make_proxy3(shape, options.proxy));
@@ -109,13 +112,15 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       mass[s] = p.closed ? p.solid.triangles.size() : p.mass.points.size();
       // Farthest corner of the box from the reference position (the origin).
       double r = 0.0;
-      for (int corner = 0; corner < 8; ++corner) r = std::max(r, p.box.corner(static_cast<Box3::CornerType>(corner)).norm());
+      for (int corner = 0; corner < 8; ++corner)
+        r = std::max(r, p.box.corner(static_cast<Box3::CornerType>(corner)).norm());
       radii_.push_back(r);
     }
   }
   // One table of 325 complex numbers per pair of shapes (a ≤ b): up to 64 shapes (10 MB).
   constexpr std::size_t kMaximumExpansionShapes = 64;
-  if (dimension_ == 2 && options_.direction == DirectionKind::gravitation && scene.shapes.size() <= kMaximumExpansionShapes) {
+  if (dimension_ == 2 && options_.direction == DirectionKind::gravitation &&
+      scene.shapes.size() <= kMaximumExpansionShapes) {
     const std::size_t n = scene.shapes.size();
     expansions_ = std::make_shared<ExpansionCache>();
     expansions_->tables.resize(n * n);
@@ -153,10 +158,12 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
       const double lower = gap_x * gap_x + gap_y * gap_y;
       return lower >= bound ? kNoCutoff : segment_segment_squared_distance(a0, a1, b0, b1);
     };
-    double outline;       // distance between the outlines (or a value of its interval)
-    double first_positive = 0.0;  // the smallest positive breakpoint: below it 0 is in the same interval
+    double outline;  // distance between the outlines (or a value of its interval)
+    double first_positive =
+        0.0;  // the smallest positive breakpoint: below it 0 is in the same interval
     if (breakpoints == nullptr || breakpoints->empty()) {
-      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments));
+      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t,
+                                                           cutoff * cutoff, segments));
     } else {
       const std::vector<double>& marks = *breakpoints;
       const auto positive = std::upper_bound(marks.begin(), marks.end(), 0.0);
@@ -170,7 +177,8 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
         const double low = *(above - 1);
         return low * low;
       };
-      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments, floor));
+      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t,
+                                                           cutoff * cutoff, segments, floor));
     }
     // One shape inside the other's filled region (their outlines not crossing): one vertex of
     // every polyline decides. Needed only when 0 lies in another interval than the outlines' gap.
@@ -195,11 +203,12 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
   auto corner = [](const Proxy3& p, int t, int k) -> const Vec3& {
     return p.point ? p.vertices[0] : p.vertices[p.triangles[t][k]];
   };
-  return closest_pair_distance<3>(pa.triangle_tree, pb.triangle_tree, offset, cutoff, [&](int i, int j) {
-    return triangle_triangle_distance(corner(pa, i, 0), corner(pa, i, 1), corner(pa, i, 2),
-                                      corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
-                                      corner(pb, j, 2) + offset);
-  });
+  return closest_pair_distance<3>(
+      pa.triangle_tree, pb.triangle_tree, offset, cutoff, [&](int i, int j) {
+        return triangle_triangle_distance(corner(pa, i, 0), corner(pa, i, 1), corner(pa, i, 2),
+                                          corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
+                                          corner(pb, j, 2) + offset);
+      });
 }
 
 double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const {
@@ -208,27 +217,37 @@ double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const 
     const Proxy2& pa = proxies2_[a];
     const Proxy2& pb = proxies2_[b];
     const Vec2 t = offset.head<2>();
-    const double step = std::max(1e-9, 0.01 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
-    for (const Vec2& p : outline_samples(pa, step)) worst = std::max(worst, point_to_outline(pb, p - t));
-    for (const Vec2& p : outline_samples(pb, step)) worst = std::max(worst, point_to_outline(pa, p + t));
+    const double step =
+        std::max(1e-9, 0.01 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
+    for (const Vec2& p : outline_samples(pa, step))
+      worst = std::max(worst, point_to_outline(pb, p - t));
+    for (const Vec2& p : outline_samples(pb, step))
+      worst = std::max(worst, point_to_outline(pa, p + t));
     return worst;
   }
   const Proxy3& pa = proxies3_[a];
   const Proxy3& pb = proxies3_[b];
-  const double step = std::max(1e-9, 0.05 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
-  for (const Vec3& p : surface_samples(pa, step)) worst = std::max(worst, point_to_surface(pb, p - offset));
-  for (const Vec3& p : surface_samples(pb, step)) worst = std::max(worst, point_to_surface(pa, p + offset));
+  const double step =
+      std::max(1e-9, 0.05 * std::max(pa.box.diagonal().norm(), pb.box.diagonal().norm()));
+  for (const Vec3& p : surface_samples(pa, step))
+    worst = std::max(worst, point_to_surface(pb, p - offset));
+  for (const Vec3& p : surface_samples(pb, step))
+    worst = std::max(worst, point_to_surface(pa, p + offset));
   return worst;
 }
 
 double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff,
                               const std::vector<double>* breakpoints) const {
   // Canonical order, so that d(b, a) == d(a, b) bit for bit.
-  if (a > b || (a == b && lexicographically_negative(offset))) return distance(b, a, -offset, cutoff, breakpoints);
+  if (a > b || (a == b && lexicographically_negative(offset)))
+    return distance(b, a, -offset, cutoff, breakpoints);
   switch (options_.distance) {
-    case DistanceKind::shape: return shape_distance(a, b, offset, cutoff, breakpoints);
-    case DistanceKind::centroid: return std::min(cutoff, offset.norm());
-    case DistanceKind::hausdorff: return std::min(cutoff, hausdorff_distance(a, b, offset));
+    case DistanceKind::shape:
+      return shape_distance(a, b, offset, cutoff, breakpoints);
+    case DistanceKind::centroid:
+      return std::min(cutoff, offset.norm());
+    case DistanceKind::hausdorff:
+      return std::min(cutoff, hausdorff_distance(a, b, offset));
   }
   return cutoff;
 }
@@ -237,7 +256,8 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
   Vec3 force = Vec3::Zero();
   double scale = 0.0;
   if (dimension_ == 2) {
-    const Vec2 f = gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), expansion(a, b));
+    const Vec2 f =
+        gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), expansion(a, b));
     force.head<2>() = f;
     scale = proxies2_[a].mass.area * proxies2_[b].mass.area;
   } else {
@@ -252,7 +272,9 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
   }
   const double norm = force.norm();
   // A force that cancels (a dot centred in a ring) has no direction: fall back to the centroids.
-  if (!(norm > 1e-12 * scale / std::max(1e-300, std::pow(radii_[a] + radii_[b] + offset.norm(), dimension_ - 1)))) {
+  if (!(norm >
+        1e-12 * scale /
+            std::max(1e-300, std::pow(radii_[a] + radii_[b] + offset.norm(), dimension_ - 1)))) {
     return offset.norm() > 0 ? Vec3(offset.normalized()) : Vec3(Vec3::UnitX());
   }
   return force / norm;
@@ -260,9 +282,11 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
 
 const PairExpansion* PairMeasurer::expansion(int a, int b) const {
   if (!expansions_) return nullptr;
-  const std::size_t index = static_cast<std::size_t>(a) * proxies2_.size() + static_cast<std::size_t>(b);
-  std::call_once(expansions_->once[index],
-                 [&] { expansions_->tables[index] = pair_expansion(proxies2_[a].mass, proxies2_[b].mass); });
+  const std::size_t index =
+      static_cast<std::size_t>(a) * proxies2_.size() + static_cast<std::size_t>(b);
+  std::call_once(expansions_->once[index], [&] {
+    expansions_->tables[index] = pair_expansion(proxies2_[a].mass, proxies2_[b].mass);
+  });
   return &expansions_->tables[index];
 }
 
@@ -279,16 +303,20 @@ std::pair<double, double> PairMeasurer::distance_bounds(int a, int b, const Vec3
     const Vec2 t = offset.head<2>(), u = unit.head<2>();
     const double lo = std::sqrt(pa.box.squaredExteriorDistance(pb.box.translated(t)));
     Vec2 far_a = pa.segment_start.front(), near_b = pb.segment_start.front();
-    for (const Vec2& p : pa.segment_start) if (p.dot(u) > far_a.dot(u)) far_a = p;
-    for (const Vec2& p : pb.segment_start) if (p.dot(u) < near_b.dot(u)) near_b = p;
+    for (const Vec2& p : pa.segment_start)
+      if (p.dot(u) > far_a.dot(u)) far_a = p;
+    for (const Vec2& p : pb.segment_start)
+      if (p.dot(u) < near_b.dot(u)) near_b = p;
     return {lo, std::max(lo, (near_b + t - far_a).norm())};
   }
   const Proxy3& pa = proxies3_[a];
   const Proxy3& pb = proxies3_[b];
   const double lo = std::sqrt(pa.box.squaredExteriorDistance(pb.box.translated(offset)));
   Vec3 far_a = pa.vertices.front(), near_b = pb.vertices.front();
-  for (const Vec3& p : pa.vertices) if (p.dot(unit) > far_a.dot(unit)) far_a = p;
-  for (const Vec3& p : pb.vertices) if (p.dot(unit) < near_b.dot(unit)) near_b = p;
+  for (const Vec3& p : pa.vertices)
+    if (p.dot(unit) > far_a.dot(unit)) far_a = p;
+  for (const Vec3& p : pb.vertices)
+    if (p.dot(unit) < near_b.dot(unit)) near_b = p;
   return {lo, std::max(lo, (near_b + offset - far_a).norm())};
 }
 
@@ -310,14 +338,17 @@ bool PairMeasurer::same_proxy(int a, int b) const {
       return false;
     }
     for (std::size_t r = 0; r < pa.regions.size(); ++r) {
-      if (pa.regions[r].rings != pb.regions[r].rings || pa.regions[r].rule != pb.regions[r].rule) return false;
+      if (pa.regions[r].rings != pb.regions[r].rings || pa.regions[r].rule != pb.regions[r].rule)
+        return false;
     }
     for (std::size_t k = 0; k < pa.polylines.size(); ++k) {
-      if (pa.polylines[k].closed != pb.polylines[k].closed || !close(pa.polylines[k].points, pb.polylines[k].points, tolerance)) {
+      if (pa.polylines[k].closed != pb.polylines[k].closed ||
+          !close(pa.polylines[k].points, pb.polylines[k].points, tolerance)) {
         return false;
       }
     }
-    return close(pa.mass.start, pb.mass.start, tolerance) && close(pa.mass.end, pb.mass.end, tolerance);
+    return close(pa.mass.start, pb.mass.start, tolerance) &&
+           close(pa.mass.end, pb.mass.end, tolerance);
   }
   const Proxy3& pa = proxies3_[static_cast<std::size_t>(a)];
   const Proxy3& pb = proxies3_[static_cast<std::size_t>(b)];
@@ -334,7 +365,8 @@ int PairMeasurer::axis_from_boxes(int a, int b, const Vec3& offset, double slack
   // Difference box: every y − x with x in box_a and y in box_b + offset.
   const Vec2 low = box_b.min() + offset.head<2>() - box_a.max() - Vec2::Constant(slack);
   const Vec2 high = box_b.max() + offset.head<2>() - box_a.min() + Vec2::Constant(slack);
-  if (low.x() <= 0 && high.x() >= 0 && low.y() <= 0 && high.y() >= 0) return -1;  // holds the origin
+  if (low.x() <= 0 && high.x() >= 0 && low.y() <= 0 && high.y() >= 0)
+    return -1;  // holds the origin
   const Vec2 centre = 0.5 * (low + high);
   const double middle = std::atan2(centre.y(), centre.x());
   double lowest = 0.0, highest = 0.0;
@@ -387,7 +419,8 @@ Vec3 PairMeasurer::direction(int a, int b, const Vec3& offset) const {
   return gravitation_direction(a, b, offset);
 }
 
-Measurement PairMeasurer::measure(const Element& first, const Element& second, double cutoff) const {
+Measurement PairMeasurer::measure(const Element& first, const Element& second,
+                                  double cutoff) const {
   Measurement m = measure_distance(first, second, cutoff);
   if (m.distance >= cutoff) return m;
   m.direction = direction(first.shape, second.shape, m.offset);
@@ -395,7 +428,8 @@ Measurement PairMeasurer::measure(const Element& first, const Element& second, d
   return m;
 }
 
-Measurement PairMeasurer::measure_distance(const Element& first, const Element& second, double cutoff,
+Measurement PairMeasurer::measure_distance(const Element& first, const Element& second,
+                                           double cutoff,
                                            const std::vector<double>* breakpoints) const {
   Measurement m;
   const Vec3 base = second.position - first.position;
@@ -403,14 +437,17 @@ Measurement PairMeasurer::measure_distance(const Element& first, const Element& 
   // Every distance kind but Hausdorff is at least |offset| − r_a − r_b (0 for centroids): images
   // farther than the cut-off plus that reach are not measured.
   const double reach = options_.distance == DistanceKind::centroid ? 0.0
-                       : options_.distance == DistanceKind::shape ? radii_[first.shape] + radii_[second.shape]
-                                                                  : kNoCutoff;
+                       : options_.distance == DistanceKind::shape
+                           ? radii_[first.shape] + radii_[second.shape]
+                           : kNoCutoff;
   auto too_far = [&](const Vec3& offset, double limit) {
     const double r = limit + reach;
     return std::isfinite(r) && offset.squaredNorm() >= r * r;
   };
   if (!options_.periodic) {
-    m.distance = too_far(base, cutoff) ? cutoff : distance(first.shape, second.shape, base, cutoff, breakpoints);
+    m.distance = too_far(base, cutoff)
+                     ? cutoff
+                     : distance(first.shape, second.shape, base, cutoff, breakpoints);
     return m;
   }
   // Minimum image: the nearest of the 3^dim translates (k = 0 first, so ties keep it).
@@ -441,7 +478,8 @@ Measurement PairMeasurer::measure_distance(const Element& first, const Element& 
   return m;
 }
 
-std::vector<PairRecord> PairMeasurer::all_pairs(const std::vector<Element>& elements, double range) const {
+std::vector<PairRecord> PairMeasurer::all_pairs(const std::vector<Element>& elements,
+                                                double range) const {
   std::vector<PairRecord> records;
   const std::size_t n = elements.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -456,7 +494,8 @@ std::vector<PairRecord> PairMeasurer::all_pairs(const std::vector<Element>& elem
             if (period_[k] > 0) t[k] -= period_[k] * std::round(t[k] / period_[k]);
           }
         }
-        const double reach = options_.distance == DistanceKind::centroid ? 0.0 : radii_[a.shape] + radii_[b.shape];
+        const double reach =
+            options_.distance == DistanceKind::centroid ? 0.0 : radii_[a.shape] + radii_[b.shape];
         if (t.norm() - reach >= range) continue;
       }
       const Measurement m = measure(a, b, range);

@@ -39,7 +39,7 @@ struct Measurement {
   double distance = 0.0;
   Vec3 direction = Vec3::UnitX();  // unit vector from the first element towards the second
   int axis = 0;
-  Vec3 offset = Vec3::Zero();      // position of the second relative to the first (the image used)
+  Vec3 offset = Vec3::Zero();  // position of the second relative to the first (the image used)
 };
 
 struct PairRecord {
@@ -50,7 +50,7 @@ struct PairRecord {
 struct ProxyStatistics {
   double source_per_element = 0.0;  // mean segments (2D) or triangles (3D) per element, as drawn
   double proxy_per_element = 0.0;   // the same for the proxies
-  double mass_per_element = 0.0;  // mass boundary edges (2D) or cubature points (3D)
+  double mass_per_element = 0.0;    // mass boundary edges (2D) or cubature points (3D)
 };
 
 class PairMeasurer {
@@ -83,7 +83,8 @@ class PairMeasurer {
   // this, then direction(first.shape, second.shape, offset).
   // With `breakpoints`, as for distance(), the distance is a value of the interval holding d
   // (when several periodic images come within the cut-off, they are measured exactly).
-  Measurement measure_distance(const Element& first, const Element& second, double cutoff = kNoCutoff,
+  Measurement measure_distance(const Element& first, const Element& second,
+                               double cutoff = kNoCutoff,
                                const std::vector<double>* breakpoints = nullptr) const;
 
   // Cheap bounds lo <= d(a, b, offset) <= hi for the shape distance (no periodic images): lo from
@@ -108,7 +109,8 @@ class PairMeasurer {
   bool same_proxy(int a, int b) const;
 
   // Every unordered pair with d < range (all pairs for an infinite range), ordered by (i, j).
-  std::vector<PairRecord> all_pairs(const std::vector<Element>& elements, double range = kNoCutoff) const;
+  std::vector<PairRecord> all_pairs(const std::vector<Element>& elements,
+                                    double range = kNoCutoff) const;
 
   const DirectionBins& bins() const { return bins_; }
   const MeasurementOptions& options() const { return options_; }
@@ -120,7 +122,8 @@ class PairMeasurer {
   double radius(int shape) const { return radii_.at(static_cast<std::size_t>(shape)); }
 
  private:
-  double shape_distance(int a, int b, const Vec3& offset, double cutoff, const std::vector<double>* breakpoints) const;
+  double shape_distance(int a, int b, const Vec3& offset, double cutoff,
+                        const std::vector<double>* breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
   // The mutual-potential table of shapes a ≤ b (2D regions), built on first use; nullptr when
@@ -128,8 +131,8 @@ class PairMeasurer {
   const PairExpansion* expansion(int a, int b) const;
 
   struct ExpansionCache {
-    std::vector<PairExpansion> tables;          // a * shapes + b, a ≤ b
-    std::unique_ptr<std::once_flag[]> once;     // one per table
+    std::vector<PairExpansion> tables;       // a * shapes + b, a ≤ b
+    std::unique_ptr<std::once_flag[]> once;  // one per table
   };
 
   int dimension_;

@@ -85,7 +85,7 @@ std::vector<Vec2> flatten(const Path2& path, double tolerance) {
       // Uniform subdivision into n pieces keeps the chord error below
       // (3/4) max(|P0 - 2P1 + P2|, |P1 - 2P2 + P3|) / n^2.
       const double second = std::max((s.start - 2.0 * s.control1 + s.control2).norm(),
-                                      (s.control1 - 2.0 * s.control2 + s.end).norm());
+                                     (s.control1 - 2.0 * s.control2 + s.end).norm());
       const double needed = std::sqrt(0.75 * second / std::max(tolerance, 1e-300));
       const int n = std::clamp(static_cast<int>(std::ceil(needed)), 1, 1024);
       for (int i = 1; i < n; ++i) points.push_back(s.point_at(static_cast<double>(i) / n));
@@ -113,7 +113,8 @@ int winding_number(const std::vector<Vec2>& polygon, const Vec2& point) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& a = polygon[i];
     const Vec2& b = polygon[(i + 1) % n];
-    const double cross = (b.x() - a.x()) * (point.y() - a.y()) - (point.x() - a.x()) * (b.y() - a.y());
+    const double cross =
+        (b.x() - a.x()) * (point.y() - a.y()) - (point.x() - a.x()) * (b.y() - a.y());
     if (a.y() <= point.y()) {
       if (b.y() > point.y() && cross > 0.0) ++winding;
     } else if (b.y() <= point.y() && cross < 0.0) {
@@ -151,7 +152,7 @@ bool segments_overlap(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d
 }  // namespace
 
 bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
-                         bool b_closed) {
+                       bool b_closed) {
   const std::size_t na = a.size() < 2 ? 0 : (a_closed ? a.size() : a.size() - 1);
   const std::size_t nb = b.size() < 2 ? 0 : (b_closed ? b.size() : b.size() - 1);
   for (std::size_t i = 0; i < na; ++i) {

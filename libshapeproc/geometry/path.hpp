@@ -55,6 +55,6 @@ int winding_number(const std::vector<Vec2>& polygon, const Vec2& point);
 // True when the outlines of two polylines (closed when the flags say so) cross, or run together
 // along a piece of positive length; touching at isolated points does not count.
 bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
-                         bool b_closed);
+                       bool b_closed);
 
 }  // namespace shapeproc::geometry

@@ -58,7 +58,8 @@ struct Proxy2 {
 // Midpoint-rule samples of a 2D proxy's mass on the square lattice of spacing `cell` through
 // `lattice`, each cell tested at subsamples^2 points (weight = covered area, at the covered
 // centroid; with 1 subsample, plain cell centres): a dense, independent reference for tests.
-MassModel2 sample_mass(const Proxy2& proxy, double cell, const Vec2& lattice = Vec2::Zero(), int subsamples = 4);
+MassModel2 sample_mass(const Proxy2& proxy, double cell, const Vec2& lattice = Vec2::Zero(),
+                       int subsamples = 4);
 
 // 3D proxy: a simplified triangle mesh; closed meshes are solids.
 struct Proxy3 {

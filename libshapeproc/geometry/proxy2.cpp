@@ -1,10 +1,10 @@
-// 2D proxies: flattening, Douglas–Peucker, region tests, mass cubature (strips through Boost.Geometry).
-#include <cmath>
-#include <cstdlib>
-
+// 2D proxies: flattening, Douglas–Peucker, region tests, mass cubature (strips through
+// Boost.Geometry).
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/linestring.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
+#include <cmath>
+#include <cstdlib>
 
 #include "libshapeproc/geometry/proxy.hpp"
 
@@ -79,7 +79,8 @@ std::vector<Vec2> ring_points(const bg::model::ring<BgPoint>& ring) {
 BgMultiPolygon strip_around(const Proxy2::Polyline& polyline, double half_width) {
   BgLine line;
   for (const Vec2& p : polyline.points) line.emplace_back(p.x(), p.y());
-  if (polyline.closed && !polyline.points.empty()) line.emplace_back(polyline.points.front().x(), polyline.points.front().y());
+  if (polyline.closed && !polyline.points.empty())
+    line.emplace_back(polyline.points.front().x(), polyline.points.front().y());
   BgMultiPolygon result;
   if (line.size() < 2) {
     const Vec2 p = polyline.points.empty() ? Vec2::Zero() : polyline.points.front();
@@ -102,7 +103,8 @@ bool in_strip(const std::vector<std::vector<Vec2>>& rings, const Vec2& p) {
 // The boundary of the mass: every edge of a filled ring or strip ring that has mass on exactly
 // one side, with its normal towards the empty side. Edges inside the mass (shared by two rings,
 // overlapping strips) drop out.
-void build_mass(Proxy2& proxy, const std::vector<double>& strip_half_widths, double diagonal, const ProxyOptions&) {
+void build_mass(Proxy2& proxy, const std::vector<double>& strip_half_widths, double diagonal,
+                const ProxyOptions&) {
   for (std::size_t k = 0; k < proxy.polylines.size(); ++k) {
     if (strip_half_widths[k] <= 0.0) continue;
     for (const BgPolygon& polygon : strip_around(proxy.polylines[k], strip_half_widths[k])) {
@@ -125,7 +127,8 @@ void build_mass(Proxy2& proxy, const std::vector<double>& strip_half_widths, dou
   for (const auto& region : proxy.regions) {
     for (int ring : region.rings) {
       const auto& points = proxy.polylines[ring].points;
-      for (std::size_t i = 0; i < points.size(); ++i) consider(points[i], points[(i + 1) % points.size()]);
+      for (std::size_t i = 0; i < points.size(); ++i)
+        consider(points[i], points[(i + 1) % points.size()]);
     }
   }
   for (const auto& strip : proxy.strips) {
@@ -134,7 +137,8 @@ void build_mass(Proxy2& proxy, const std::vector<double>& strip_half_widths, dou
     }
   }
   proxy.mass.finish();
-  if (proxy.mass.point) proxy.mass.centroid = proxy.box.isEmpty() ? Vec2::Zero() : Vec2(proxy.box.center());
+  if (proxy.mass.point)
+    proxy.mass.centroid = proxy.box.isEmpty() ? Vec2::Zero() : Vec2(proxy.box.center());
 }
 
 }  // namespace
@@ -222,7 +226,8 @@ Proxy2 make_proxy2(const Shape& shape, const ProxyOptions& options) {
     for (const Path2& path : part.paths) {
       proxy.source_segments += path.segments.size();
       std::vector<Vec2> flat = flatten(path, std::max(tolerance / 4, diagonal * 1e-9));
-      Proxy2::Polyline polyline{simplify(flat, path.closed, tolerance), path.closed && flat.size() >= 3};
+      Proxy2::Polyline polyline{simplify(flat, path.closed, tolerance),
+                                path.closed && flat.size() >= 3};
       const bool ring = part.filled() && polyline.closed;
       if (ring) region.rings.push_back(static_cast<int>(proxy.polylines.size()));
       strip_half_widths.push_back(ring ? 0.0 : half_width);
@@ -255,7 +260,8 @@ Shape proxy_as_shape(const Proxy2& proxy) {
   for (const Proxy2::Polyline& polyline : proxy.polylines) {
     Path2 path;
     const std::size_t n = polyline.points.size();
-    for (std::size_t i = 0; i + 1 < n; ++i) path.segments.push_back(Segment2::line(polyline.points[i], polyline.points[i + 1]));
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      path.segments.push_back(Segment2::line(polyline.points[i], polyline.points[i + 1]));
     if (polyline.closed && n >= 2) {
       path.segments.push_back(Segment2::line(polyline.points.back(), polyline.points.front()));
       path.closed = true;

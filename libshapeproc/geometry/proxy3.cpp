@@ -1,15 +1,14 @@
 // 3D proxies: quadric-error edge collapses with OpenMesh's decimater, solid tests, mass cubature.
-#include <cmath>
-#include <map>
-
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModHausdorffT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <cmath>
+#include <map>
 
-#include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/geometry/proxy.hpp"
 
 namespace shapeproc::geometry {
 
@@ -20,7 +19,6 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
   using Normal = OpenMesh::Vec3d;
 };
 using OmMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
-
 
 // Signed solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee).
 double solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -53,7 +51,8 @@ void decimate(TriangleMesh& mesh, double tolerance) {
   if (tolerance <= 0.0 || mesh.triangles.size() <= 4) return;
   OmMesh om;
   std::vector<OmMesh::VertexHandle> handles;
-  for (const Vec3& v : mesh.vertices) handles.push_back(om.add_vertex(OmMesh::Point(v.x(), v.y(), v.z())));
+  for (const Vec3& v : mesh.vertices)
+    handles.push_back(om.add_vertex(OmMesh::Point(v.x(), v.y(), v.z())));
   for (const auto& t : mesh.triangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
   om.request_vertex_status();
   om.request_edge_status();
@@ -166,7 +165,8 @@ MassModel3 sample_mass(const Proxy3& proxy, double cell) {
   std::vector<Vec3> points;
   std::vector<double> weights;
   Eigen::Vector3i n;
-  for (int axis = 0; axis < 3; ++axis) n[axis] = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes()[axis] / cell)));
+  for (int axis = 0; axis < 3; ++axis)
+    n[axis] = std::max(1, static_cast<int>(std::ceil(proxy.box.sizes()[axis] / cell)));
   const Vec3 origin = proxy.box.center() - 0.5 * cell * n.cast<double>();
   for (int i = 0; i < n.x(); ++i)
     for (int j = 0; j < n.y(); ++j)

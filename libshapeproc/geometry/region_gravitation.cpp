@@ -1,15 +1,14 @@
 #include "libshapeproc/geometry/region_gravitation.hpp"
-#include "libshapeproc/core/constants.hpp"
-
-#include "libshapeproc/geometry/gravitation.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <complex>
+#include <limits>
 #include <vector>
 
+#include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/geometry/gravitation.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 
 namespace shapeproc::geometry {
@@ -31,8 +30,12 @@ GaussRule rule(int n) {
     for (double weight : weights) r.w[k++] = weight;
   };
   switch (n) {
-    case 1: set({0.0}, {2.0}); break;
-    case 2: set({-0.5773502691896257, 0.5773502691896257}, {1.0, 1.0}); break;
+    case 1:
+      set({0.0}, {2.0});
+      break;
+    case 2:
+      set({-0.5773502691896257, 0.5773502691896257}, {1.0, 1.0});
+      break;
     case 4:
       set({-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526},
           {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538});
@@ -62,8 +65,8 @@ constexpr std::size_t kLanes = 4;
 // product rule for the mean along edge i of ∫_edge_j h_j(x)/|y − x| ds_y, where
 // h_j(x) = (y − x)·n_j = n_j·start_j − n_j·x. The entries of the edges j not apart go to `near`.
 // (|h_j| ≤ |y − x|, and squared distances are kept above 1e-300, so no term is infinite.)
-double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, double x1x, double x1y, double mx,
-                 double my, double length_i, std::vector<std::size_t>& near) {
+double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, double x1x, double x1y,
+                 double mx, double my, double length_i, std::vector<std::size_t>& near) {
   using Lanes = Eigen::Array<double, kLanes, 1>;
   using Load = Eigen::Map<const Lanes>;
   using R = MassBoundary2::EdgeRule;
@@ -145,7 +148,8 @@ GaussTable gauss_legendre(int n) {
 // α_k = C(2k, k) / 4^k up to kMomentOrder.
 struct ExpansionConstants {
   std::array<double, kMomentOrder + 1> alpha{};
-  GaussTable moment_rule = gauss_legendre(kMomentOrder / 2 + 1);  // exact for degree kMomentOrder + 1
+  GaussTable moment_rule =
+      gauss_legendre(kMomentOrder / 2 + 1);  // exact for degree kMomentOrder + 1
   ExpansionConstants() {
     alpha[0] = 1.0;
     for (int k = 1; k <= kMomentOrder; ++k) alpha[k] = alpha[k - 1] * (2 * k - 1) / (2 * k);
@@ -183,7 +187,8 @@ double expanded_potential(const MassBoundary2& b, const Complex& x, int order) {
     for (int l = 0; 2 * l <= n; ++l) {
       const int k = n - l;
       const double weight = (k == l ? 1.0 : 2.0) * c.alpha[k] * c.alpha[l];
-      sum += weight * (b.complex_moments[moment_index(k, l)] * power[k] * std::conj(power[l])).real();
+      sum +=
+          weight * (b.complex_moments[moment_index(k, l)] * power[k] * std::conj(power[l])).real();
     }
   }
   return sum / std::abs(x);
@@ -228,12 +233,13 @@ void MassBoundary2::add_edge(const Vec2& a, const Vec2& b, const Vec2& outward_n
   end.push_back(b);
   normal.push_back(outward_normal);
   const double edge_length = (b - a).norm();
-  const double c = a.dot(outward_normal);  // x·n is constant along the edge
-  area += 0.5 * c * edge_length;           // ∫_A 1 = ½ ∮ x·n
+  const double c = a.dot(outward_normal);                 // x·n is constant along the edge
+  area += 0.5 * c * edge_length;                          // ∫_A 1 = ½ ∮ x·n
   centroid += (c * edge_length / 3.0) * (0.5 * (a + b));  // ∫_A x = ⅓ ∮ x (x·n)
   // ∫_A x x^T = ¼ ∮ x x^T (x·n), the edge integral by Simpson's rule (exact for quadratics).
   const Vec2 m = 0.5 * (a + b);
-  moments += (c * edge_length / 24.0) * (a * a.transpose() + 4.0 * m * m.transpose() + b * b.transpose());
+  moments +=
+      (c * edge_length / 24.0) * (a * a.transpose() + 4.0 * m * m.transpose() + b * b.transpose());
 }
 
 void MassBoundary2::finish() {
@@ -264,15 +270,17 @@ void MassBoundary2::finish() {
   };
   for (std::size_t i = 0; i < start.size(); ++i) {
     if (length[i] == 0.0) continue;
-    const Vec2 y0 = start[i] + kRules[1].x[0] * (end[i] - start[i]), y1 = start[i] + kRules[1].x[1] * (end[i] - start[i]);
+    const Vec2 y0 = start[i] + kRules[1].x[0] * (end[i] - start[i]),
+               y1 = start[i] + kRules[1].x[1] * (end[i] - start[i]);
     const Vec2 m = 0.5 * (start[i] + end[i]);
-    push({y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(), start[i].dot(normal[i]),
-          0.25 * length[i], length[i]},
+    push({y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(),
+          start[i].dot(normal[i]), 0.25 * length[i], length[i]},
          static_cast<int>(i));
   }
   // Padding: far away, no normal and no weight, so that its terms are exactly 0 and never near.
   constexpr double kAway = 1e100;
-  while (rule.edge.size() % kLanes != 0) push({kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0}, -1);
+  while (rule.edge.size() % kLanes != 0)
+    push({kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0}, -1);
   // M_kl = ∫ z^k z̄^l dA = 1/(2(l + 1)) ∮ n z^k z̄^{l+1} ds (complex Green's theorem with
   // dz = i n ds on the positively oriented boundary); the edge integrands are polynomials of
   // degree ≤ kMomentOrder + 1, integrated exactly.
@@ -292,7 +300,8 @@ void MassBoundary2::finish() {
       const Complex weight = c.moment_rule.w[g] * length[i] * n;
       for (int total = 0; total <= kMomentOrder; ++total) {
         for (int l = 0; l <= total; ++l) {
-          complex_moments[moment_index(total - l, l)] += weight * power[total - l] * conjugate[l + 1];
+          complex_moments[moment_index(total - l, l)] +=
+              weight * power[total - l] * conjugate[l + 1];
         }
       }
     }
@@ -304,8 +313,8 @@ void MassBoundary2::finish() {
 
 PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
   // 1/|R + w| with w = ξ − y (ξ about A's centroid, y about B's): the binomial expansion of
-  // w^k w̄^l in the moments of both, G_kl = α_k α_l Σ C(k, i) C(l, j) (−1)^{i+j} M^A_ij M^B_{k−i, l−j},
-  // computed as α_k α_l k! l! Σ a_ij b_{k−i, l−j} with a_ij = (−1)^{i+j} M^A_ij / (i! j!) and
+  // w^k w̄^l in the moments of both, G_kl = α_k α_l Σ C(k, i) C(l, j) (−1)^{i+j} M^A_ij M^B_{k−i,
+  // l−j}, computed as α_k α_l k! l! Σ a_ij b_{k−i, l−j} with a_ij = (−1)^{i+j} M^A_ij / (i! j!) and
   // b_ij = M^B_ij / (i! j!), so that the inner sum is one complex product per term.
   std::array<double, kMomentOrder + 1> factorial{};
   factorial[0] = 1.0;
@@ -329,7 +338,8 @@ PairExpansion pair_expansion(const MassBoundary2& a, const MassBoundary2& b) {
       for (int i = 0; i <= k; ++i) {
         for (int j = 0; j <= l; ++j) sum += scaled_a[i][j] * scaled_b[k - i][l - j];
       }
-      pair.g[static_cast<std::size_t>(moment_index(k, l))] = c.alpha[k] * c.alpha[l] * factorial[k] * factorial[l] * sum;
+      pair.g[static_cast<std::size_t>(moment_index(k, l))] =
+          c.alpha[k] * c.alpha[l] * factorial[k] * factorial[l] * sum;
     }
   }
   pair.order_bound.assign(kMomentOrder + 1, 0.0);
@@ -349,22 +359,25 @@ double monopole_deviation(const PairExpansion& pair, double radii, double distan
   // Orders 1..p from the table, by Horner in 1/|R|; beyond p, terms of order n are at most
   // (n + 1) s^n of the first (the potential's at most s^n, differentiation adds n + 1).
   double sum = 0.0;
-  for (int n = kMomentOrder; n >= 1; --n) sum = (sum + pair.order_bound[static_cast<std::size_t>(n)]) / distance;
+  for (int n = kMomentOrder; n >= 1; --n)
+    sum = (sum + pair.order_bound[static_cast<std::size_t>(n)]) / distance;
   const double tail = (kMomentOrder + 2.0) * std::pow(s, kMomentOrder + 1) / ((1 - s) * (1 - s));
   return sum / monopole + tail;
 }
 
 namespace {
 
-Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, const PairExpansion* pair,
-           bool expansions) {
+Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset,
+           const PairExpansion* pair, bool expansions) {
   const Vec2 between = b.centroid + offset - a.centroid;
   const double distance = between.norm();
-  if (a.point && b.point) return distance > 0 ? Vec2(between / (distance * distance * distance)) : Vec2::Zero();
+  if (a.point && b.point)
+    return distance > 0 ? Vec2(between / (distance * distance * distance)) : Vec2::Zero();
   if (expansions && pair != nullptr && distance > 0 && !a.point && !b.point) {
     const double s = (a.radius + b.radius) / distance;
     const int order = expansion_order(s, [&](int p) { return (p + 1.0) / ((1 - s) * (1 - s)); });
-    if (s < 1 && order >= 0) return expanded_force(*pair, Complex(-between.x(), -between.y()), order);
+    if (s < 1 && order >= 0)
+      return expanded_force(*pair, Complex(-between.x(), -between.y()), order);
   }
   if (distance > 5.0 * (a.radius + b.radius) && distance > 0) {
     return far_field_force<2>(a.area, a.moments, b.area, b.moments, between);
@@ -383,7 +396,8 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       const double h = std::abs(d.dot(Vec2(-u.y(), u.x())));
       const double s = -d.dot(u);
       if (h == 0.0 && s >= 0 && s <= length) continue;  // p on the edge: principal value
-      towards_region -= region.normal[j] * inverse_distance_integral(s, std::max(h, 1e-300), length);
+      towards_region -=
+          region.normal[j] * inverse_distance_integral(s, std::max(h, 1e-300), length);
     }
     return a_is_point ? towards_region : Vec2(-towards_region);
   }
@@ -405,8 +419,13 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       // Only where it is cheaper (tuned on benchmarks): (p + 1)(p + 2)/4 complex products per
       // point against one edge-pair term per edge of B.
       int affordable = -1;
-      while (affordable < kMomentOrder && g.n * (affordable + 2) * (affordable + 3) < 4 * static_cast<int>(nb)) ++affordable;
-      const int order = s < 0.6 && room > 0.4 ? expansion_order(s, [&](int) { return 1.0 / (1 - s); }, affordable) : -1;
+      while (affordable < kMomentOrder &&
+             g.n * (affordable + 2) * (affordable + 3) < 4 * static_cast<int>(nb))
+        ++affordable;
+      const int order = s < 0.6 && room > 0.4
+                            ? expansion_order(
+                                  s, [&](int) { return 1.0 / (1 - s); }, affordable)
+                            : -1;
       if (order >= 0) {
         for (int k = 0; k < g.n; ++k) {
           const Vec2 x = ai + g.x[k] * edge_i - b.centroid;
@@ -421,10 +440,12 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
       // median angle error of a force is 1e-5 rad (the 90th percentile, 1e-4 rad, comes from
       // the nearest edges). Nearer pairs: Gauss–Legendre along edge i of the exact integral
       // along edge j.
-      const Vec2 x0 = ai + kRules[1].x[0] * edge_i, x1 = ai + kRules[1].x[1] * edge_i, mid_i = ai + 0.5 * edge_i;
+      const Vec2 x0 = ai + kRules[1].x[0] * edge_i, x1 = ai + kRules[1].x[1] * edge_i,
+                 mid_i = ai + 0.5 * edge_i;
       thread_local std::vector<std::size_t> near;
       near.clear();
-      integral = apart_sum(b.rule, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(), length_i, near);
+      integral =
+          apart_sum(b.rule, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(), length_i, near);
       for (const std::size_t e : near) {
         using R = MassBoundary2::EdgeRule;
         const double dx = b.rule[R::mx][e] - mid_i.x(), dy = b.rule[R::my][e] - mid_i.y();
@@ -434,7 +455,8 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
         const GaussRule& g = ratio > 0.7 ? kRules[2] : kRules[3];
         double sum = 0.0;
         for (int k = 0; k < g.n; ++k) {
-          sum += g.w[k] * edge_term(ai + g.x[k] * edge_i, b.start[j], b.unit[j], b.length[j], b.normal[j]);
+          sum += g.w[k] *
+                 edge_term(ai + g.x[k] * edge_i, b.start[j], b.unit[j], b.length[j], b.normal[j]);
         }
         integral += sum;
       }
@@ -446,7 +468,8 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, c
 
 }  // namespace
 
-Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset, const PairExpansion* pair) {
+Vec2 gravitation_force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset,
+                       const PairExpansion* pair) {
   return force(a, b, offset, pair, true);
 }
 
@@ -483,7 +506,7 @@ int triangle_points(const std::array<Vec3, 3>& t, int level, std::array<Vec3, 12
 }  // namespace
 
 MassSurface3 MassSurface3::from_closed_mesh(const std::vector<Vec3>& vertices,
-                                           const std::vector<std::array<int, 3>>& triangles) {
+                                            const std::vector<std::array<int, 3>>& triangles) {
   MassSurface3 s;
   Vec3 first = Vec3::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
@@ -496,8 +519,8 @@ MassSurface3 MassSurface3::from_closed_mesh(const std::vector<Vec3>& vertices,
     const double area = 0.5 * twice_area;
     const double h = a.dot(n);  // x·n is constant on the triangle
     const Vec3 sum = a + b + c;
-    s.volume += h * area / 3.0;                   // ∫ 1 = ⅓ ∮ x·n
-    first += (h * area / 3.0 / 4.0) * sum;        // ∫ x = ¼ ∮ x (x·n); ∫_T x = A (a+b+c)/3
+    s.volume += h * area / 3.0;             // ∫ 1 = ⅓ ∮ x·n
+    first += (h * area / 3.0 / 4.0) * sum;  // ∫ x = ¼ ∮ x (x·n); ∫_T x = A (a+b+c)/3
     // ∫ x x^T = ⅕ ∮ x x^T (x·n); ∫_T x x^T = A/12 (Σ v v^T + S S^T)
     second += (h * area / 12.0 / 5.0) *
               (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
@@ -539,7 +562,8 @@ Vec3 gravitation_force(const MassSurface3& a, const MassSurface3& b, const Vec3&
   for (std::size_t i = 0; i < a.triangles.size(); ++i) {
     const auto& ti = a.triangles[i];
     const Vec3 ci = (ti[0] + ti[1] + ti[2]) / 3.0;
-    const double size_i = std::max({(ti[0] - ti[1]).norm(), (ti[1] - ti[2]).norm(), (ti[2] - ti[0]).norm()});
+    const double size_i =
+        std::max({(ti[0] - ti[1]).norm(), (ti[1] - ti[2]).norm(), (ti[2] - ti[0]).norm()});
     double integral = 0.0;
     for (std::size_t j = 0; j < b.triangles.size(); ++j) {
       const double ratio = (b_centre[j] - ci).norm() / (size_i + b_size[j]);

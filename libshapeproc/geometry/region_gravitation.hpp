@@ -46,7 +46,7 @@ struct MassBoundary2 {
   double area = 0.0;
   Vec2 centroid = Vec2::Zero();
   Eigen::Matrix2d moments = Eigen::Matrix2d::Zero();  // ∫ (x − c)(x − c)^T dA
-  double radius = 0.0;  // of the edges around the centroid
+  double radius = 0.0;                                // of the edges around the centroid
   bool point = false;
   // M_kl = ∫ z^k z̄^l dA about the centroid (moment_index layout; a point mass has M_00 = 1 only).
   std::vector<std::complex<double>> complex_moments;

@@ -22,11 +22,11 @@ struct Element {
 };
 
 struct Scene {
-  int dimension = 2;            // 2 or 3
-  Box3 window;                  // the observation window W; z = [0, 0] in 2D
-  std::string units = "px";     // length unit of every coordinate
+  int dimension = 2;         // 2 or 3
+  Box3 window;               // the observation window W; z = [0, 0] in 2D
+  std::string units = "px";  // length unit of every coordinate
   std::vector<Category> categories;
-  std::vector<Shape> shapes;    // local coordinates, bounding-box centre at the origin
+  std::vector<Shape> shapes;  // local coordinates, bounding-box centre at the origin
   std::vector<Element> elements;
 
   // Area (2D) or volume (3D) of the window.

@@ -21,7 +21,8 @@ namespace {
 double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 }  // namespace
 
-double segment_segment_squared_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+double segment_segment_squared_distance(const Vec2& a, const Vec2& b, const Vec2& c,
+                                        const Vec2& d) {
   // Proper or touching intersection: the end points of each segment lie on opposite sides (or on)
   // the other's line, and the segments are not collinear-and-apart.
   const double d1 = cross(d - c, a - c);
@@ -31,8 +32,9 @@ double segment_segment_squared_distance(const Vec2& a, const Vec2& b, const Vec2
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
     return 0.0;
   }
-  return std::min(std::min(point_segment_squared_distance(a, c, d), point_segment_squared_distance(b, c, d)),
-                  std::min(point_segment_squared_distance(c, a, b), point_segment_squared_distance(d, a, b)));
+  return std::min(
+      std::min(point_segment_squared_distance(a, c, d), point_segment_squared_distance(b, c, d)),
+      std::min(point_segment_squared_distance(c, a, b), point_segment_squared_distance(d, a, b)));
 }
 
 double segment_segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {

@@ -17,10 +17,10 @@ bool Drawable2::filled() const {
 }
 
 int dimension(const Shape& shape) {
-  return std::visit(Overloaded{[](const PointShape&) { return 0; },
-                               [](const PlanarShape&) { return 2; },
-                               [](const MeshShape&) { return 3; }},
-                    shape.geometry);
+  return std::visit(
+      Overloaded{[](const PointShape&) { return 0; }, [](const PlanarShape&) { return 2; },
+                 [](const MeshShape&) { return 3; }},
+      shape.geometry);
 }
 
 Box3 bounding_box(const Shape& shape) {

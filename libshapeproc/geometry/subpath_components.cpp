@@ -44,7 +44,7 @@ std::vector<Drawable2> split_disjoint_subpaths(const Drawable2& drawable) {
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!boxes[i].intersects(boxes[j])) continue;
       if (polylines_overlap(polylines[i], drawable.paths[i].closed, polylines[j],
-                              drawable.paths[j].closed)) {
+                            drawable.paths[j].closed)) {
         pieces.unite(i, j);
       }
     }

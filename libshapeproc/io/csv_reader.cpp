@@ -60,23 +60,28 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
     start = end + 1;
   }
   std::vector<std::string> fields;
-  if (!split_csv_line(lines.front(), fields)) throw core::InputError(file_name, 1, "bad quoting in the header");
+  if (!split_csv_line(lines.front(), fields))
+    throw core::InputError(file_name, 1, "bad quoting in the header");
   std::map<std::string, std::size_t> column;
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const std::string name = to_lower(fields[i]);
-    if (!column.emplace(name, i).second) throw core::InputError(file_name, 1, "column '" + name + "' appears twice");
+    if (!column.emplace(name, i).second)
+      throw core::InputError(file_name, 1, "column '" + name + "' appears twice");
   }
   if (!column.count("x") || !column.count("y")) {
-    throw core::InputError(file_name, 1, "the header must name columns x and y (and optionally z, category)");
+    throw core::InputError(file_name, 1,
+                           "the header must name columns x and y (and optionally z, category)");
   }
   const int dimension = column.count("z") ? 3 : 2;
   if (!options.window) {
-    throw core::InputError(file_name, 0, std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
-                                       (dimension == 3 ? ",zmin,zmax" : ""));
+    throw core::InputError(file_name, 0,
+                           std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
+                               (dimension == 3 ? ",zmin,zmax" : ""));
   }
   if (options.window->dimension != dimension) {
-    throw core::InputError(file_name, 0, "the points are " + std::to_string(dimension) + "D but --window is " +
-                                       std::to_string(options.window->dimension) + "D");
+    throw core::InputError(file_name, 0,
+                           "the points are " + std::to_string(dimension) + "D but --window is " +
+                               std::to_string(options.window->dimension) + "D");
   }
   geometry::Scene scene;
   scene.dimension = dimension;
@@ -88,10 +93,12 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
   for (std::size_t n = 1; n < lines.size(); ++n) {
     const int line_number = static_cast<int>(n + 1);
     if (trim(lines[n]).empty()) continue;
-    if (!split_csv_line(lines[n], fields)) throw core::InputError(file_name, line_number, "bad quoting");
+    if (!split_csv_line(lines[n], fields))
+      throw core::InputError(file_name, line_number, "bad quoting");
     if (fields.size() != width) {
-      throw core::InputError(file_name, line_number, "expected " + std::to_string(width) + " fields, got " +
-                                                   std::to_string(fields.size()));
+      throw core::InputError(
+          file_name, line_number,
+          "expected " + std::to_string(width) + " fields, got " + std::to_string(fields.size()));
     }
     geometry::Element element;
     element.shape = 0;
@@ -99,13 +106,15 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
       const std::string& value = fields[column.at(axes[axis])];
       const auto number = parse_number(value);
       if (!number) {
-        throw core::InputError(file_name, line_number, std::string("column ") + axes[axis] +
-                                                     ": expected a finite number, got '" + value + "'");
+        throw core::InputError(file_name, line_number,
+                               std::string("column ") + axes[axis] +
+                                   ": expected a finite number, got '" + value + "'");
       }
       element.position[axis] = *number;
     }
     const auto category = column.find("category");
-    const std::string category_name = category == column.end() ? "default" : fields[category->second];
+    const std::string category_name =
+        category == column.end() ? "default" : fields[category->second];
     if (category_name.empty()) throw core::InputError(file_name, line_number, "empty category");
     element.category = scene.category_index(category_name);
     const geometry::Vec3& p = element.position;
@@ -115,7 +124,8 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
     }
     scene.elements.push_back(element);
   }
-  if (scene.elements.empty()) throw core::InputError(file_name, 0, "no points: the file has a header only");
+  if (scene.elements.empty())
+    throw core::InputError(file_name, 0, "no points: the file has a header only");
   return scene;
 }
 

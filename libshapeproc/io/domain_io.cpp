@@ -15,9 +15,12 @@ namespace shapeproc::io {
 geometry::Raster read_domain_mask(const std::string& path) {
   const std::string extension = extension_of(path);
   if (extension == "png") return read_grayscale_png(path);
-  if (extension != "svg") throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + path + "'");
+  if (extension != "svg")
+    throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" +
+                           path + "'");
   const geometry::Scene shapes = read_scene(path, {});
-  if (shapes.dimension != 2 || shapes.elements.empty()) throw core::InputError(path, 0, "the domain has no filled shape");
+  if (shapes.dimension != 2 || shapes.elements.empty())
+    throw core::InputError(path, 0, "the domain has no filled shape");
   const geometry::Vec3 size = shapes.window.sizes();
   const double longest = std::max(size.x(), size.y());
   const int width = std::max(8, static_cast<int>(std::lround(2048 * size.x() / longest)));
@@ -32,23 +35,32 @@ geometry::Raster read_domain_mask(const std::string& path) {
 geometry::Domain read_domain(const DomainFiles& files, int dimension) {
   const auto& sizes = files.size;
   if (static_cast<int>(sizes.size()) != dimension ||
-      !std::all_of(sizes.begin(), sizes.end(), [](double v) { return v > 0 && std::isfinite(v); })) {
+      !std::all_of(sizes.begin(), sizes.end(),
+                   [](double v) { return v > 0 && std::isfinite(v); })) {
     std::string given;
-    for (std::size_t i = 0; i < sizes.size(); ++i) given += (i ? "," : "") + format_number(sizes[i]);
-    throw core::UsageError("--size: expected " + std::string(dimension == 2 ? "W,H" : "W,H,D") + " (positive) for a " +
-                           std::to_string(dimension) + "D model, got '" + given + "'");
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+      given += (i ? "," : "") + format_number(sizes[i]);
+    throw core::UsageError("--size: expected " + std::string(dimension == 2 ? "W,H" : "W,H,D") +
+                           " (positive) for a " + std::to_string(dimension) + "D model, got '" +
+                           given + "'");
   }
   if (dimension != 2 && (!files.mask.empty() || !files.intensity.empty())) {
     throw core::UsageError("--domain and --intensity are for 2D models");
   }
   if (files.boundary == "torus" && !files.mask.empty()) {
-    throw core::UsageError("--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
+    throw core::UsageError(
+        "--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
   }
-  const geometry::Boundary boundary = files.boundary.empty() ? (files.mask.empty() ? geometry::Boundary::torus : geometry::Boundary::open)
-                                                             : geometry::parse_boundary(files.boundary);
+  const geometry::Boundary boundary =
+      files.boundary.empty()
+          ? (files.mask.empty() ? geometry::Boundary::torus : geometry::Boundary::open)
+          : geometry::parse_boundary(files.boundary);
   geometry::Domain domain = geometry::Domain::from_sizes(sizes, boundary);
-  if (!files.mask.empty()) domain.set_mask(std::make_shared<const geometry::Raster>(read_domain_mask(files.mask)));
-  if (!files.intensity.empty()) domain.set_intensity(std::make_shared<const geometry::Raster>(read_grayscale_png(files.intensity)));
+  if (!files.mask.empty())
+    domain.set_mask(std::make_shared<const geometry::Raster>(read_domain_mask(files.mask)));
+  if (!files.intensity.empty())
+    domain.set_intensity(
+        std::make_shared<const geometry::Raster>(read_grayscale_png(files.intensity)));
   return domain;
 }
 

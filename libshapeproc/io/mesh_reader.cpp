@@ -1,13 +1,12 @@
 #include "libshapeproc/io/mesh_reader.hpp"
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <numeric>
 #include <sstream>
-
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -96,7 +95,8 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   const std::string ext = extension_of(file);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) throw core::InputError(name, 0, "no such file");
-  if (std::filesystem::file_size(file, ec) == 0) throw core::InputError(name, 0, "the file is empty");
+  if (std::filesystem::file_size(file, ec) == 0)
+    throw core::InputError(name, 0, "the file is empty");
   if (!std::ifstream(file)) throw core::InputError(name, 0, "cannot open the file for reading");
   if (options.mesh_split == MeshSplit::groups && ext != "obj") {
     throw core::UsageError("--split groups needs an OBJ file, got " + name);
@@ -112,11 +112,13 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     complaint = capture.first_line();
   }
   if (!read) {
-    throw core::InputError(name, 0, "cannot read as " + to_lower(ext) + " mesh" +
-                                  (complaint.empty() ? "" : " (" + complaint + ")"));
+    throw core::InputError(name, 0,
+                           "cannot read as " + to_lower(ext) + " mesh" +
+                               (complaint.empty() ? "" : " (" + complaint + ")"));
   }
   if (complaint.find("complex") != std::string::npos) {
-    throw core::InputError(name, 0, "non-manifold or inconsistently oriented faces (" + complaint + ")");
+    throw core::InputError(name, 0,
+                           "non-manifold or inconsistently oriented faces (" + complaint + ")");
   }
   if (!complaint.empty()) throw core::InputError(name, 0, "invalid mesh (" + complaint + ")");
   if (mesh.n_faces() == 0) throw core::InputError(name, 0, "no triangles");
@@ -128,7 +130,8 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     const auto& p = mesh.point(vh);
     points[vh.idx()] = geometry::Vec3(p[0], p[1], p[2]);
     if (!points[vh.idx()].allFinite()) {
-      throw core::InputError(name, 0, "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
+      throw core::InputError(name, 0,
+                             "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
     }
   }
   std::vector<std::array<int, 3>> triangles;
@@ -158,9 +161,10 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   if (options.mesh_split == MeshSplit::groups) {
     const ObjGroups groups = scan_obj_groups(file);
     if (groups.of_triangle.size() != triangles.size()) {
-      throw core::InputError(name, 0, "the faces read do not match the `f` lines (" +
-                                    std::to_string(triangles.size()) + " vs " +
-                                    std::to_string(groups.of_triangle.size()) + ")");
+      throw core::InputError(name, 0,
+                             "the faces read do not match the `f` lines (" +
+                                 std::to_string(triangles.size()) + " vs " +
+                                 std::to_string(groups.of_triangle.size()) + ")");
     }
     element_of_triangle = groups.of_triangle;
     element_names = groups.names;
@@ -177,7 +181,8 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     for (std::size_t f = 0; f < triangles.size(); ++f) {
       const std::size_t root = find_root(parent, triangles[f][0]);
       const auto inserted = component.emplace(root, static_cast<int>(component.size()));
-      if (inserted.second) element_names.push_back("component " + std::to_string(inserted.first->second));
+      if (inserted.second)
+        element_names.push_back("component " + std::to_string(inserted.first->second));
       element_of_triangle[f] = inserted.first->second;
     }
   }
@@ -206,12 +211,14 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   }
   for (std::size_t e = 0; e < pieces.size(); ++e) {
     if (pieces[e].triangles.empty()) continue;
-    geometry::add_element(scene, geometry::Shape{geometry::MeshShape{std::move(pieces[e])}, element_names[e]},
-                          category);
+    geometry::add_element(
+        scene, geometry::Shape{geometry::MeshShape{std::move(pieces[e])}, element_names[e]},
+        category);
   }
 
   if (options.window) {
-    if (options.window->dimension != 3) throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+    if (options.window->dimension != 3)
+      throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
     scene.window = options.window->box;
   } else {
     scene.window = box;

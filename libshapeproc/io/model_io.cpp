@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/atomic_file.hpp"
@@ -24,11 +23,12 @@ constexpr int kVersion = 1;
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string path_data(const geometry::Path2& path) {
-  std::string d = "M" + format_number(path.start_point().x()) + " " + format_number(path.start_point().y());
+  std::string d =
+      "M" + format_number(path.start_point().x()) + " " + format_number(path.start_point().y());
   for (const geometry::Segment2& s : path.segments) {
     if (s.cubic) {
-      d += "C" + format_number(s.control1.x()) + " " + format_number(s.control1.y()) + " " + format_number(s.control2.x()) +
-           " " + format_number(s.control2.y()) + " ";
+      d += "C" + format_number(s.control1.x()) + " " + format_number(s.control1.y()) + " " +
+           format_number(s.control2.x()) + " " + format_number(s.control2.y()) + " ";
     } else {
       d += "L";
     }
@@ -44,9 +44,10 @@ json shape_json(const geometry::Shape& shape) {
     for (const geometry::Drawable2& part : planar->parts) {
       std::string d;
       for (const geometry::Path2& path : part.paths) d += (d.empty() ? "" : " ") + path_data(path);
-      parts.push_back({{"d", d},
-                       {"fill_rule", part.fill_rule == geometry::FillRule::evenodd ? "evenodd" : "nonzero"},
-                       {"style", part.style}});
+      parts.push_back(
+          {{"d", d},
+           {"fill_rule", part.fill_rule == geometry::FillRule::evenodd ? "evenodd" : "nonzero"},
+           {"style", part.style}});
     }
     return {{"type", "paths"}, {"parts", parts}};
   }
@@ -61,9 +62,12 @@ json shape_json(const geometry::Shape& shape) {
 
 const char* distance_name(geometry::DistanceKind d) {
   switch (d) {
-    case geometry::DistanceKind::shape: return "shape";
-    case geometry::DistanceKind::centroid: return "centroid";
-    case geometry::DistanceKind::hausdorff: return "hausdorff";
+    case geometry::DistanceKind::shape:
+      return "shape";
+    case geometry::DistanceKind::centroid:
+      return "centroid";
+    case geometry::DistanceKind::hausdorff:
+      return "hausdorff";
   }
   return "shape";
 }
@@ -77,7 +81,8 @@ class Reader {
     throw core::InputError(file_, 0, where + ": " + what);
   }
   const json& field(const json& object, const std::string& where, const char* name) const {
-    if (!object.is_object() || !object.contains(name)) fail(where.empty() ? name : where + "." + name, "missing");
+    if (!object.is_object() || !object.contains(name))
+      fail(where.empty() ? name : where + "." + name, "missing");
     return object.at(name);
   }
   double number(const json& v, const std::string& where) const {
@@ -96,7 +101,8 @@ class Reader {
   std::vector<double> numbers(const json& v, const std::string& where) const {
     if (!v.is_array()) fail(where, "expected an array of numbers");
     std::vector<double> out;
-    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(number(v[k], where + "[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < v.size(); ++k)
+      out.push_back(number(v[k], where + "[" + std::to_string(k) + "]"));
     return out;
   }
   const json& array(const json& v, const std::string& where) const {
@@ -122,13 +128,16 @@ class Reader {
         if (drawable.paths.empty()) fail(at + ".d", "no path");
         if (parts[k].contains("fill_rule")) {
           const std::string rule = text(parts[k]["fill_rule"], at + ".fill_rule");
-          if (rule != "evenodd" && rule != "nonzero") fail(at + ".fill_rule", "expected evenodd or nonzero");
-          drawable.fill_rule = rule == "evenodd" ? geometry::FillRule::evenodd : geometry::FillRule::nonzero;
+          if (rule != "evenodd" && rule != "nonzero")
+            fail(at + ".fill_rule", "expected evenodd or nonzero");
+          drawable.fill_rule =
+              rule == "evenodd" ? geometry::FillRule::evenodd : geometry::FillRule::nonzero;
         }
         if (parts[k].contains("style")) {
           const json& style = parts[k]["style"];
           if (!style.is_object()) fail(at + ".style", "expected an object of SVG properties");
-          for (const auto& [name, value] : style.items()) drawable.style[name] = text(value, at + ".style." + name);
+          for (const auto& [name, value] : style.items())
+            drawable.style[name] = text(value, at + ".style." + name);
         }
         planar.parts.push_back(std::move(drawable));
       }
@@ -140,8 +149,10 @@ class Reader {
       geometry::MeshShape mesh;
       const json& vertices = array(field(j, where, "vertices"), where + ".vertices");
       for (std::size_t k = 0; k < vertices.size(); ++k) {
-        const std::vector<double> v = numbers(vertices[k], where + ".vertices[" + std::to_string(k) + "]");
-        if (v.size() != 3 || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
+        const std::vector<double> v =
+            numbers(vertices[k], where + ".vertices[" + std::to_string(k) + "]");
+        if (v.size() != 3 ||
+            !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
           fail(where + ".vertices[" + std::to_string(k) + "]", "expected three finite numbers");
         }
         mesh.mesh.vertices.emplace_back(v[0], v[1], v[2]);
@@ -154,13 +165,15 @@ class Reader {
         std::array<int, 3> tri{};
         for (int c = 0; c < 3; ++c) {
           tri[static_cast<std::size_t>(c)] = integer(t[static_cast<std::size_t>(c)], at);
-          if (tri[static_cast<std::size_t>(c)] < 0 || tri[static_cast<std::size_t>(c)] >= static_cast<int>(mesh.mesh.vertices.size())) {
+          if (tri[static_cast<std::size_t>(c)] < 0 ||
+              tri[static_cast<std::size_t>(c)] >= static_cast<int>(mesh.mesh.vertices.size())) {
             fail(at, "vertex index out of range");
           }
         }
         mesh.mesh.triangles.push_back(tri);
       }
-      if (mesh.mesh.triangles.empty()) fail(where + ".triangles", "at least one triangle is needed");
+      if (mesh.mesh.triangles.empty())
+        fail(where + ".triangles", "at least one triangle is needed");
       return geometry::Shape{std::move(mesh), ""};
     }
     fail(where + ".type", "expected paths, mesh or point, got '" + type + "'");
@@ -176,7 +189,8 @@ ParameterStatus status_from(const std::string& s, const Reader& reader, const st
   if (s == "unidentifiable") return ParameterStatus::unidentifiable;
   if (s == "unbounded") return ParameterStatus::unbounded;
   if (s == "fixed") return ParameterStatus::fixed;
-  reader.fail(where, "expected free, boundary, unidentifiable, unbounded or fixed, got '" + s + "'");
+  reader.fail(where,
+              "expected free, boundary, unidentifiable, unbounded or fixed, got '" + s + "'");
 }
 
 }  // namespace
@@ -197,11 +211,15 @@ std::string model_to_json(const ShapeProcessModel& model) {
       for (int k = 0; k < model.dimension; ++k) direction.push_back(a.direction[k]);
       json errors = json::array(), status = json::array();
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
-        errors.push_back(number_or_null(k < a.gamma_standard_errors.size() ? a.gamma_standard_errors[k] : NAN));
+        errors.push_back(
+            number_or_null(k < a.gamma_standard_errors.size() ? a.gamma_standard_errors[k] : NAN));
         status.push_back(to_string(k < a.status.size() ? a.status[k] : ParameterStatus::fixed));
       }
-      json axis = {{"direction", direction}, {"thresholds", a.thresholds}, {"gammas", a.gammas},
-                   {"gamma_standard_errors", errors}, {"status", status}};
+      json axis = {{"direction", direction},
+                   {"thresholds", a.thresholds},
+                   {"gammas", a.gammas},
+                   {"gamma_standard_errors", errors},
+                   {"status", status}};
       if (!a.observed_pairs.empty()) axis["observed_pairs"] = a.observed_pairs;
       axes.push_back(axis);
     }
@@ -219,7 +237,9 @@ std::string model_to_json(const ShapeProcessModel& model) {
                    {"units", model.units},
                    {"measurement",
                     {{"distance", distance_name(model.measurement.distance)},
-                     {"direction", model.measurement.direction == geometry::DirectionKind::centroid ? "centroid" : "gravitation"},
+                     {"direction", model.measurement.direction == geometry::DirectionKind::centroid
+                                       ? "centroid"
+                                       : "gravitation"},
                      {"directions", model.measurement.directions},
                      {"proxy_tolerance", model.measurement.proxy_tolerance}}},
                    {"categories", categories},
@@ -241,21 +261,28 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     document = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     const std::size_t byte = std::min(e.byte, text.size());
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
+    const int line = 1 + static_cast<int>(std::count(
+                             text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
     std::string message = e.what();
-    if (const std::size_t colon = message.rfind(": "); colon != std::string::npos) message = message.substr(colon + 2);
+    if (const std::size_t colon = message.rfind(": "); colon != std::string::npos)
+      message = message.substr(colon + 2);
     throw core::InputError(file_name, line, "malformed JSON: " + message);
   }
   const Reader r(file_name);
   if (!document.is_object() || !document.contains("format") || document["format"] != kFormat) {
-    throw core::InputError(file_name, 0, std::string("not a shapeproc model file (it has no \"format\": \"") + kFormat + "\")");
+    throw core::InputError(
+        file_name, 0,
+        std::string("not a shapeproc model file (it has no \"format\": \"") + kFormat + "\")");
   }
   const int version = r.integer(r.field(document, "", "version"), "version");
-  if (version != kVersion) r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " + std::to_string(version));
+  if (version != kVersion)
+    r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " +
+                          std::to_string(version));
   ShapeProcessModel model;
   model.dimension = r.integer(r.field(document, "", "dimension"), "dimension");
   if (model.dimension != 2 && model.dimension != 3) r.fail("dimension", "must be 2 or 3");
-  model.units = document.contains("units") ? r.text(document["units"], "units") : (model.dimension == 2 ? "px" : "1");
+  model.units = document.contains("units") ? r.text(document["units"], "units")
+                                           : (model.dimension == 2 ? "px" : "1");
 
   const json& categories = r.array(r.field(document, "", "categories"), "categories");
   for (std::size_t c = 0; c < categories.size(); ++c) {
@@ -263,9 +290,11 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     CategoryParameters category;
     category.name = r.text(r.field(categories[c], where, "name"), where + ".name");
     category.beta = r.number(r.field(categories[c], where, "beta"), where + ".beta");
-    if (categories[c].contains("beta_standard_error")) category.beta_standard_error = r.number(categories[c]["beta_standard_error"], where);
+    if (categories[c].contains("beta_standard_error"))
+      category.beta_standard_error = r.number(categories[c]["beta_standard_error"], where);
     if (categories[c].contains("beta_status")) {
-      category.beta_status = status_from(r.text(categories[c]["beta_status"], where + ".beta_status"), r, where + ".beta_status");
+      category.beta_status = status_from(
+          r.text(categories[c]["beta_status"], where + ".beta_status"), r, where + ".beta_status");
     }
     model.categories.push_back(category);
   }
@@ -284,20 +313,24 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     for (std::size_t i = 0; i < axes.size(); ++i) {
       const std::string at = where + ".axes[" + std::to_string(i) + "]";
       AxisParameters axis;
-      const std::vector<double> direction = r.numbers(r.field(axes[i], at, "direction"), at + ".direction");
+      const std::vector<double> direction =
+          r.numbers(r.field(axes[i], at, "direction"), at + ".direction");
       if (static_cast<int>(direction.size()) != model.dimension) {
-        r.fail(at + ".direction", "expected " + std::to_string(model.dimension) + " numbers for a " +
-                                      std::to_string(model.dimension) + "D model");
+        r.fail(at + ".direction", "expected " + std::to_string(model.dimension) +
+                                      " numbers for a " + std::to_string(model.dimension) +
+                                      "D model");
       }
       axis.direction = geometry::Vec3::Zero();
-      for (int k = 0; k < model.dimension; ++k) axis.direction[k] = direction[static_cast<std::size_t>(k)];
+      for (int k = 0; k < model.dimension; ++k)
+        axis.direction[k] = direction[static_cast<std::size_t>(k)];
       axis.thresholds = r.numbers(r.field(axes[i], at, "thresholds"), at + ".thresholds");
       axis.gammas = r.numbers(r.field(axes[i], at, "gammas"), at + ".gammas");
       const std::size_t bands = axis.gammas.size();
       axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());
       axis.status.assign(bands, ParameterStatus::fixed);
       if (axes[i].contains("gamma_standard_errors")) {
-        const std::vector<double> se = r.numbers(axes[i]["gamma_standard_errors"], at + ".gamma_standard_errors");
+        const std::vector<double> se =
+            r.numbers(axes[i]["gamma_standard_errors"], at + ".gamma_standard_errors");
         if (se.size() != bands) r.fail(at + ".gamma_standard_errors", "expected one per gamma");
         axis.gamma_standard_errors = se;
       }
@@ -305,37 +338,48 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
         const json& status = r.array(axes[i]["status"], at + ".status");
         if (status.size() != bands) r.fail(at + ".status", "expected one per gamma");
         for (std::size_t k = 0; k < bands; ++k) {
-          axis.status[k] = status_from(r.text(status[k], at + ".status"), r, at + ".status[" + std::to_string(k) + "]");
+          axis.status[k] = status_from(r.text(status[k], at + ".status"), r,
+                                       at + ".status[" + std::to_string(k) + "]");
         }
       }
       if (axes[i].contains("observed_pairs")) {
-        for (const json& v : r.array(axes[i]["observed_pairs"], at + ".observed_pairs")) axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
+        for (const json& v : r.array(axes[i]["observed_pairs"], at + ".observed_pairs"))
+          axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
       }
       pair.axes.push_back(std::move(axis));
     }
     model.interactions.push_back(std::move(pair));
   }
   // Measurement settings; the number of directions defaults to what the axes imply.
-  int directions = axes_seen <= 1 ? 1 : (model.dimension == 2 ? static_cast<int>(2 * axes_seen) : 12);
+  int directions =
+      axes_seen <= 1 ? 1 : (model.dimension == 2 ? static_cast<int>(2 * axes_seen) : 12);
   if (document.contains("measurement")) {
     const json& m = document["measurement"];
     if (!m.is_object()) r.fail("measurement", "expected an object");
     if (m.contains("distance")) {
       const std::string d = r.text(m["distance"], "measurement.distance");
-      if (d == "shape") model.measurement.distance = geometry::DistanceKind::shape;
-      else if (d == "centroid") model.measurement.distance = geometry::DistanceKind::centroid;
-      else if (d == "hausdorff") model.measurement.distance = geometry::DistanceKind::hausdorff;
-      else r.fail("measurement.distance", "expected shape, centroid or hausdorff, got '" + d + "'");
+      if (d == "shape")
+        model.measurement.distance = geometry::DistanceKind::shape;
+      else if (d == "centroid")
+        model.measurement.distance = geometry::DistanceKind::centroid;
+      else if (d == "hausdorff")
+        model.measurement.distance = geometry::DistanceKind::hausdorff;
+      else
+        r.fail("measurement.distance", "expected shape, centroid or hausdorff, got '" + d + "'");
     }
     if (m.contains("direction")) {
       const std::string d = r.text(m["direction"], "measurement.direction");
-      if (d == "gravitation") model.measurement.direction = geometry::DirectionKind::gravitation;
-      else if (d == "centroid") model.measurement.direction = geometry::DirectionKind::centroid;
-      else r.fail("measurement.direction", "expected gravitation or centroid, got '" + d + "'");
+      if (d == "gravitation")
+        model.measurement.direction = geometry::DirectionKind::gravitation;
+      else if (d == "centroid")
+        model.measurement.direction = geometry::DirectionKind::centroid;
+      else
+        r.fail("measurement.direction", "expected gravitation or centroid, got '" + d + "'");
     }
     if (m.contains("directions")) directions = r.integer(m["directions"], "measurement.directions");
     if (m.contains("proxy_tolerance")) {
-      model.measurement.proxy_tolerance = r.number(m["proxy_tolerance"], "measurement.proxy_tolerance");
+      model.measurement.proxy_tolerance =
+          r.number(m["proxy_tolerance"], "measurement.proxy_tolerance");
       if (!(model.measurement.proxy_tolerance >= 0 && model.measurement.proxy_tolerance < 1)) {
         r.fail("measurement.proxy_tolerance", "must be in [0, 1)");
       }
@@ -347,7 +391,8 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     const std::string where = "shapes[" + std::to_string(s) + "]";
     ModelShape shape;
     shape.category = r.integer(r.field(shapes[s], where, "category"), where + ".category");
-    shape.shape = r.shape(r.field(shapes[s], where, "geometry"), where + ".geometry", model.dimension);
+    shape.shape =
+        r.shape(r.field(shapes[s], where, "geometry"), where + ".geometry", model.dimension);
     if (shapes[s].contains("name")) shape.shape.name = r.text(shapes[s]["name"], where + ".name");
     // Shapes are stored centred on their bounding box; hand-written ones are centred here.
     const geometry::Box3 box = geometry::bounding_box(shape.shape);
@@ -365,9 +410,11 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
 
 ShapeProcessModel read_model(const std::filesystem::path& file) {
   const std::string extension = extension_of(file);
-  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "off" || extension == "stl" || extension == "csv") {
-    throw core::UsageError(file.string() + ": this is an exemplar, not a model; use shapeproc synthesize " + file.string() +
-                           " (or shapeproc fit " + file.string() + " -o model.json first)");
+  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "off" ||
+      extension == "stl" || extension == "csv") {
+    throw core::UsageError(
+        file.string() + ": this is an exemplar, not a model; use shapeproc synthesize " +
+        file.string() + " (or shapeproc fit " + file.string() + " -o model.json first)");
   }
   const std::string text = read_text_file(file);
   return parse_model(text, file.string());

@@ -21,20 +21,27 @@ CategoryRule CategoryRule::parse(const std::string& text) {
     rule.kind = Kind::attribute;
     rule.attribute = text.substr(5);
   } else {
-    throw core::UsageError("--category-by: expected none, fill, stroke, class, layer or attr:NAME, got '" +
-                     text + "'");
+    throw core::UsageError(
+        "--category-by: expected none, fill, stroke, class, layer or attr:NAME, got '" + text +
+        "'");
   }
   return rule;
 }
 
 std::string CategoryRule::to_string() const {
   switch (kind) {
-    case Kind::none: return "none";
-    case Kind::fill: return "fill";
-    case Kind::stroke: return "stroke";
-    case Kind::class_name: return "class";
-    case Kind::layer: return "layer";
-    case Kind::attribute: return "attr:" + attribute;
+    case Kind::none:
+      return "none";
+    case Kind::fill:
+      return "fill";
+    case Kind::stroke:
+      return "stroke";
+    case Kind::class_name:
+      return "class";
+    case Kind::layer:
+      return "layer";
+    case Kind::attribute:
+      return "attr:" + attribute;
   }
   return "none";
 }
@@ -42,7 +49,8 @@ std::string CategoryRule::to_string() const {
 WindowOption WindowOption::parse(const std::string& text) {
   const auto values = parse_number_list(text);
   if (!values || (values->size() != 4 && values->size() != 6)) {
-    throw core::UsageError("--window: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text + "'");
+    throw core::UsageError("--window: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text +
+                           "'");
   }
   const auto& v = *values;
   WindowOption window;
@@ -52,8 +60,8 @@ WindowOption WindowOption::parse(const std::string& text) {
   const char* axes = "xyz";
   for (int axis = 0; axis < window.dimension; ++axis) {
     if (!(v[2 * axis] < v[2 * axis + 1])) {
-      throw core::UsageError(std::string("--window: ") + axes[axis] + "min must be below " + axes[axis] +
-                       "max, got '" + text + "'");
+      throw core::UsageError(std::string("--window: ") + axes[axis] + "min must be below " +
+                             axes[axis] + "max, got '" + text + "'");
     }
   }
   window.box = geometry::Box3(geometry::Vec3(v[0], v[2], zmin), geometry::Vec3(v[1], v[3], zmax));

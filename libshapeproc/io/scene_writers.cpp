@@ -2,8 +2,8 @@
 
 #include <variant>
 
-#include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -37,7 +37,8 @@ std::string path_data(const geometry::Path2& path) {
   return d;
 }
 
-void write_drawable(std::ostream& out, const geometry::Drawable2& drawable, const std::string& attributes) {
+void write_drawable(std::ostream& out, const geometry::Drawable2& drawable,
+                    const std::string& attributes) {
   out << "<path" << attributes << " d=\"";
   for (std::size_t i = 0; i < drawable.paths.size(); ++i) {
     if (i > 0) out << ' ';
@@ -54,7 +55,7 @@ void write_drawable(std::ostream& out, const geometry::Drawable2& drawable, cons
 void require_dimension(const Scene& scene, int dimension, const char* format) {
   if (scene.dimension != dimension) {
     throw core::UsageError(std::string("cannot write a ") + std::to_string(scene.dimension) +
-                     "D scene as " + format + " (" + std::to_string(dimension) + "D only)");
+                           "D scene as " + format + " (" + std::to_string(dimension) + "D only)");
   }
 }
 
@@ -105,9 +106,11 @@ void write_obj(const Scene& scene, std::ostream& out, const Provenance& provenan
     const geometry::Shape shape = scene.placed_shape(i);
     const auto* mesh = std::get_if<geometry::MeshShape>(&shape.geometry);
     if (!mesh) throw core::UsageError("cannot write a point element as OBJ geometry");
-    out << "o e" << i << "\n# category " << scene.categories.at(scene.elements[i].category).name << "\n";
+    out << "o e" << i << "\n# category " << scene.categories.at(scene.elements[i].category).name
+        << "\n";
     for (const geometry::Vec3& v : mesh->mesh.vertices) {
-      out << "v " << format_number(v.x()) << ' ' << format_number(v.y()) << ' ' << format_number(v.z()) << '\n';
+      out << "v " << format_number(v.x()) << ' ' << format_number(v.y()) << ' '
+          << format_number(v.z()) << '\n';
     }
     for (const auto& t : mesh->mesh.triangles) {
       out << "f " << t[0] + offset << ' ' << t[1] + offset << ' ' << t[2] + offset << '\n';
@@ -129,11 +132,13 @@ void write_ply(const Scene& scene, std::ostream& out, const Provenance& provenan
   }
   out << "ply\nformat ascii 1.0\ncomment written by shapeproc\n";
   if (!provenance.json.empty()) out << "comment provenance " << provenance.json << "\n";
-  out << "element vertex " << vertices << "\nproperty double x\nproperty double y\nproperty double z\n"
+  out << "element vertex " << vertices
+      << "\nproperty double x\nproperty double y\nproperty double z\n"
       << "element face " << triangles << "\nproperty list uchar int vertex_indices\nend_header\n";
   for (const geometry::Shape& shape : placed) {
     for (const geometry::Vec3& v : std::get<geometry::MeshShape>(shape.geometry).mesh.vertices) {
-      out << format_number(v.x()) << ' ' << format_number(v.y()) << ' ' << format_number(v.z()) << '\n';
+      out << format_number(v.x()) << ' ' << format_number(v.y()) << ' ' << format_number(v.z())
+          << '\n';
     }
   }
   std::size_t offset = 0;

@@ -1,10 +1,9 @@
 #include "libshapeproc/io/svg_grammar.hpp"
 
 #include <algorithm>
+#include <boost/range/iterator_range.hpp>
 #include <cmath>
 #include <cstdio>
-
-#include <boost/range/iterator_range.hpp>
 #include <svgpp/svgpp.hpp>
 
 #include "libshapeproc/geometry/arc.hpp"
@@ -139,13 +138,10 @@ class ColorCollector {
 std::vector<Path2> parse_path_data(std::string_view data) {
   PathCollector collector;
   try {
-    svgpp::value_parser<svgpp::tag::type::path_data,
-                        svgpp::path_policy<NormalPathPolicy>>::parse(svgpp::tag::attribute::d(),
-                                                                    collector,
-                                                                    boost::make_iterator_range(
-                                                                        data.data(),
-                                                                        data.data() + data.size()),
-                                                                    svgpp::tag::source::attribute());
+    svgpp::value_parser<svgpp::tag::type::path_data, svgpp::path_policy<NormalPathPolicy>>::parse(
+        svgpp::tag::attribute::d(), collector,
+        boost::make_iterator_range(data.data(), data.data() + data.size()),
+        svgpp::tag::source::attribute());
   } catch (const svgpp::exception_base&) {
     throw GrammarError("cannot parse path data");
   }
@@ -177,7 +173,8 @@ std::optional<std::string> normalise_color(std::string_view text) {
   }
   if (!collector.color()) return std::nullopt;
   char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%06x", static_cast<unsigned>(*collector.color()) & 0xffffffu);
+  std::snprintf(buffer, sizeof buffer, "#%06x",
+                static_cast<unsigned>(*collector.color()) & 0xffffffu);
   return std::string(buffer);
 }
 

@@ -4,14 +4,13 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <pugixml.hpp>
 #include <set>
 #include <unordered_map>
 
-#include <pugixml.hpp>
-
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/geometry/subpath_components.hpp"
-#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/text.hpp"
 
@@ -29,21 +28,28 @@ using geometry::Segment2;
 using geometry::Style;
 using geometry::Vec2;
 
-const std::set<std::string, std::less<>> kInheritedProperties = {
-    "fill",          "fill-opacity",    "fill-rule",         "stroke",
-    "stroke-width",  "stroke-opacity",  "stroke-linecap",    "stroke-linejoin",
-    "stroke-miterlimit", "stroke-dasharray", "stroke-dashoffset", "color",
-    "visibility"};
+const std::set<std::string, std::less<>> kInheritedProperties = {"fill",
+                                                                 "fill-opacity",
+                                                                 "fill-rule",
+                                                                 "stroke",
+                                                                 "stroke-width",
+                                                                 "stroke-opacity",
+                                                                 "stroke-linecap",
+                                                                 "stroke-linejoin",
+                                                                 "stroke-miterlimit",
+                                                                 "stroke-dasharray",
+                                                                 "stroke-dashoffset",
+                                                                 "color",
+                                                                 "visibility"};
 const std::set<std::string, std::less<>> kOwnProperties = {"opacity", "display"};
 
 const std::set<std::string, std::less<>> kNeverDrawn = {
-    "defs",   "symbol", "clipPath", "mask",     "pattern",      "marker", "linearGradient",
-    "radialGradient",   "filter",   "style",    "title",        "desc",   "metadata",
-    "script", "text",   "image",    "foreignObject", "font", "font-face", "view", "cursor"};
+    "defs",           "symbol", "clipPath",      "mask",  "pattern",   "marker",   "linearGradient",
+    "radialGradient", "filter", "style",         "title", "desc",      "metadata", "script",
+    "text",           "image",  "foreignObject", "font",  "font-face", "view",     "cursor"};
 const std::set<std::string, std::less<>> kGroups = {"g", "a", "switch"};
-const std::set<std::string, std::less<>> kDrawables = {"path",     "rect",    "circle",
-                                                       "ellipse",  "line",    "polyline",
-                                                       "polygon"};
+const std::set<std::string, std::less<>> kDrawables = {"path", "rect",     "circle", "ellipse",
+                                                       "line", "polyline", "polygon"};
 
 // Element name without an `svg:` prefix; names with other prefixes keep theirs (and are ignored).
 std::string local_name(pugi::xml_node node) {
@@ -194,9 +200,9 @@ double SvgReader::length(pugi::xml_node node, const char* name, double fallback)
   const pugi::xml_attribute a = node.attribute(name);
   if (!a) return fallback;
   std::string_view text = trim(a.value());
-  static const std::pair<const char*, double> kUnits[] = {
-      {"px", 1.0}, {"pt", 96.0 / 72.0}, {"pc", 16.0}, {"mm", 96.0 / 25.4},
-      {"cm", 96.0 / 2.54}, {"in", 96.0}};
+  static const std::pair<const char*, double> kUnits[] = {{"px", 1.0},         {"pt", 96.0 / 72.0},
+                                                          {"pc", 16.0},        {"mm", 96.0 / 25.4},
+                                                          {"cm", 96.0 / 2.54}, {"in", 96.0}};
   double scale = 1.0;
   for (const auto& [unit, factor] : kUnits) {
     const std::string_view u(unit);
@@ -208,8 +214,8 @@ double SvgReader::length(pugi::xml_node node, const char* name, double fallback)
   }
   const auto value = parse_number(text);
   if (!value) {
-    fail(node, "<" + local_name(node) + "> attribute " + name + ": expected a finite length, got '" +
-                   a.value() + "'");
+    fail(node, "<" + local_name(node) + "> attribute " + name +
+                   ": expected a finite length, got '" + a.value() + "'");
   }
   return *value * scale;
 }
@@ -262,7 +268,8 @@ std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) 
   }
   // A nested <svg> establishes a viewport at (x, y); its viewBox scaling is not applied.
   if (tag == "svg" && node != document_.document_element()) {
-    state.transform = state.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
+    state.transform =
+        state.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
   }
   if (const pugi::xml_attribute t = node.attribute("transform")) {
     try {
@@ -280,7 +287,7 @@ Scene SvgReader::read() {
       text_.data(), text_.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
   if (!parsed) {
     throw core::InputError(file_, line_at(parsed.offset),
-                     std::string("malformed XML: ") + parsed.description());
+                           std::string("malformed XML: ") + parsed.description());
   }
   const pugi::xml_node root = document_.document_element();
   if (local_name(root) != "svg") {
@@ -311,7 +318,8 @@ Scene SvgReader::read() {
   if (root_state) walk_container(root, *root_state);
   set_window_from_root(root);
   if (scene_.elements.empty()) {
-    throw core::InputError(file_, 0, "no elements found (nothing drawable outside <defs> and hidden parts)");
+    throw core::InputError(file_, 0,
+                           "no elements found (nothing drawable outside <defs> and hidden parts)");
   }
   return std::move(scene_);
 }
@@ -329,7 +337,8 @@ void SvgReader::set_window_from_root(pugi::xml_node root) {
       fail(root, std::string("viewBox: expected four numbers, got '") + view_box.value() + "'");
     }
     const auto& v = *values;
-    scene_.window = geometry::Box3(geometry::Vec3(v[0], v[1], 0), geometry::Vec3(v[0] + v[2], v[1] + v[3], 0));
+    scene_.window =
+        geometry::Box3(geometry::Vec3(v[0], v[1], 0), geometry::Vec3(v[0] + v[2], v[1] + v[3], 0));
     // Units follow the width when it maps one unit of the viewBox to one unit of length.
     for (const char* unit : {"mm", "cm", "in", "pt", "pc"}) {
       const std::string_view u(unit);
@@ -339,10 +348,12 @@ void SvgReader::set_window_from_root(pugi::xml_node root) {
       }
     }
   } else if (root.attribute("width") && root.attribute("height")) {
-    scene_.window = geometry::Box3(geometry::Vec3::Zero(),
-                                   geometry::Vec3(length(root, "width", 0), length(root, "height", 0), 0));
+    scene_.window =
+        geometry::Box3(geometry::Vec3::Zero(),
+                       geometry::Vec3(length(root, "width", 0), length(root, "height", 0), 0));
   } else {
-    fail(root, "no window: give the root a viewBox or width and height, or add <rect id=\"window\">");
+    fail(root,
+         "no window: give the root a viewBox or width and height, or add <rect id=\"window\">");
   }
   const geometry::Vec3 sizes = scene_.window.sizes();
   if (!(sizes.x() > 0.0 && sizes.y() > 0.0)) {
@@ -362,7 +373,8 @@ void SvgReader::walk_container(pugi::xml_node node, const State& state) {
         const double x = length(child, "x", 0), y = length(child, "y", 0);
         const double w = length(child, "width", 0), h = length(child, "height", 0);
         Box2 box;
-        for (const Vec2& corner : {Vec2(x, y), Vec2(x + w, y), Vec2(x, y + h), Vec2(x + w, y + h)}) {
+        for (const Vec2& corner :
+             {Vec2(x, y), Vec2(x + w, y), Vec2(x, y + h), Vec2(x + w, y + h)}) {
           box.extend(child_state->transform * corner);
         }
         window_rect_ = box;
@@ -426,10 +438,12 @@ void SvgReader::collect(pugi::xml_node node, const State& state, std::vector<Dra
       fail(node, "<use> needs href=\"#id\" pointing into this file");
     }
     const auto target = ids_.find(std::string(target_ref.substr(1)));
-    if (target == ids_.end()) fail(node, "<use> refers to unknown id '" + std::string(target_ref) + "'");
+    if (target == ids_.end())
+      fail(node, "<use> refers to unknown id '" + std::string(target_ref) + "'");
     if (use_depth >= 32) fail(node, "<use> references nest too deep (a cycle?)");
     State placed = state;
-    placed.transform = placed.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
+    placed.transform =
+        placed.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
     if (const std::optional<State> target_state = enter(target->second, placed)) {
       collect(target->second, *target_state, parts, use_depth + 1);
     }
@@ -473,12 +487,15 @@ std::vector<Path2> SvgReader::drawable_paths(pugi::xml_node node, const std::str
     path.closed = true;
     if (rx == 0 || ry == 0) {
       const Vec2 corners[4] = {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
-      for (int i = 0; i < 4; ++i) path.segments.push_back(Segment2::line(corners[i], corners[(i + 1) % 4]));
+      for (int i = 0; i < 4; ++i)
+        path.segments.push_back(Segment2::line(corners[i], corners[(i + 1) % 4]));
     } else {
       auto line = [&](Vec2 a, Vec2 b) {
         if (a != b) path.segments.push_back(Segment2::line(a, b));
       };
-      auto arc = [&](Vec2 a, Vec2 b) { geometry::append_elliptical_arc(path, a, rx, ry, 0, false, true, b); };
+      auto arc = [&](Vec2 a, Vec2 b) {
+        geometry::append_elliptical_arc(path, a, rx, ry, 0, false, true, b);
+      };
       line({x + rx, y}, {x + w - rx, y});
       arc({x + w - rx, y}, {x + w, y + ry});
       line({x + w, y + ry}, {x + w, y + h - ry});
@@ -514,13 +531,14 @@ std::vector<Path2> SvgReader::drawable_paths(pugi::xml_node node, const std::str
     if (values->size() % 2 != 0) fail(node, "<" + name + "> points: odd number of coordinates");
     Path2 path;
     for (std::size_t i = 2; i + 1 < values->size(); i += 2) {
-      path.segments.push_back(Segment2::line({(*values)[i - 2], (*values)[i - 1]},
-                                             {(*values)[i], (*values)[i + 1]}));
+      path.segments.push_back(
+          Segment2::line({(*values)[i - 2], (*values)[i - 1]}, {(*values)[i], (*values)[i + 1]}));
     }
     if (path.segments.empty()) return paths;
     if (name == "polygon") {
       if (path.segments.back().end != path.segments.front().start) {
-        path.segments.push_back(Segment2::line(path.segments.back().end, path.segments.front().start));
+        path.segments.push_back(
+            Segment2::line(path.segments.back().end, path.segments.front().start));
       }
       path.closed = true;
     }
@@ -571,14 +589,18 @@ std::string SvgReader::category_of(pugi::xml_node node, const State& state,
     return svg::normalise_color(value).value_or(to_lower(value));
   };
   switch (rule.kind) {
-    case Kind::none: return "default";
-    case Kind::fill: return paint("fill", "black");
-    case Kind::stroke: return paint("stroke", "none");
+    case Kind::none:
+      return "default";
+    case Kind::fill:
+      return paint("fill", "black");
+    case Kind::stroke:
+      return paint("stroke", "none");
     case Kind::class_name: {
       const std::string value(trim(node.attribute("class").value()));
       return value.empty() ? "none" : value;
     }
-    case Kind::layer: return state.layer.empty() ? "none" : state.layer;
+    case Kind::layer:
+      return state.layer.empty() ? "none" : state.layer;
     case Kind::attribute:
       for (pugi::xml_node n = node; n; n = n.parent()) {
         if (const pugi::xml_attribute a = n.attribute(rule.attribute.c_str())) return a.value();

@@ -17,7 +17,8 @@ nlohmann::json pairs_json(const std::vector<std::pair<std::string, std::string>>
 
 std::vector<std::pair<std::string, std::string>> read_pairs(const nlohmann::json& list) {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const nlohmann::json& item : list) out.emplace_back(item.at(0).get<std::string>(), item.at(1).get<std::string>());
+  for (const nlohmann::json& item : list)
+    out.emplace_back(item.at(0).get<std::string>(), item.at(1).get<std::string>());
   return out;
 }
 
@@ -46,7 +47,8 @@ Provenance synthesis_provenance(const synthesis::SynthesisRecord& r) {
   return Provenance{provenance.dump()};
 }
 
-std::optional<synthesis::SynthesisRecord> parse_synthesis_record(const std::string& provenance, const std::string& source) {
+std::optional<synthesis::SynthesisRecord> parse_synthesis_record(const std::string& provenance,
+                                                                 const std::string& source) {
   const nlohmann::json json = nlohmann::json::parse(provenance, nullptr, false);
   if (json.is_discarded() || !json.is_object() || !json.contains("synthesis")) return std::nullopt;
   try {

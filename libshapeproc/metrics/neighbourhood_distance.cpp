@@ -18,7 +18,8 @@ namespace {
 
 // A scene's window as a domain, torus or open.
 geometry::Domain scene_domain(const geometry::Scene& scene, bool periodic) {
-  return geometry::Domain(scene.window, scene.dimension, periodic ? geometry::Boundary::torus : geometry::Boundary::open);
+  return geometry::Domain(scene.window, scene.dimension,
+                          periodic ? geometry::Boundary::torus : geometry::Boundary::open);
 }
 
 double inner_distance(const geometry::Scene& scene, const Vec3& p) {
@@ -31,13 +32,17 @@ double inner_distance(const geometry::Scene& scene, const Vec3& p) {
 
 }  // namespace
 
-NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output, bool output_periodic,
-                                                     const geometry::Scene& exemplar, bool exemplar_periodic,
-                                                     double radius) {
-  if (output.elements.empty() || exemplar.elements.empty()) throw core::ArgumentError("neighbourhood distance", "a scene has no elements");
-  if (output.dimension != exemplar.dimension) throw core::ArgumentError("neighbourhood distance", "the scenes' dimensions differ");
+NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output,
+                                                     bool output_periodic,
+                                                     const geometry::Scene& exemplar,
+                                                     bool exemplar_periodic, double radius) {
+  if (output.elements.empty() || exemplar.elements.empty())
+    throw core::ArgumentError("neighbourhood distance", "a scene has no elements");
+  if (output.dimension != exemplar.dimension)
+    throw core::ArgumentError("neighbourhood distance", "the scenes' dimensions differ");
   const int dim = exemplar.dimension;
-  const double spacing = std::pow(exemplar.window_measure() / static_cast<double>(exemplar.elements.size()), 1.0 / dim);
+  const double spacing = std::pow(
+      exemplar.window_measure() / static_cast<double>(exemplar.elements.size()), 1.0 / dim);
   NeighbourhoodDistance result;
   result.radius = radius > 0 ? radius : 2.0 * spacing;
   const double r = result.radius;
@@ -48,24 +53,29 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
   std::vector<int> output_map(output.categories.size(), -1);
   for (std::size_t c = 0; c < output.categories.size(); ++c) {
     for (std::size_t e = 0; e < exemplar.categories.size(); ++e) {
-      if (output.categories[c].name == exemplar.categories[e].name) output_map[c] = static_cast<int>(e);
+      if (output.categories[c].name == exemplar.categories[e].name)
+        output_map[c] = static_cast<int>(e);
     }
   }
 
   // Every exemplar element is a candidate centre: a neighbourhood cut by the exemplar's edge only
   // matches worse, and the minimum passes over it.
   const geometry::Domain exemplar_domain = scene_domain(exemplar, exemplar_periodic);
-  const geometry::NeighbourhoodIndex exemplar_index(exemplar.elements, exemplar_domain, 2.0 * r, exemplar_map);
+  const geometry::NeighbourhoodIndex exemplar_index(exemplar.elements, exemplar_domain, 2.0 * r,
+                                                    exemplar_map);
   std::vector<std::vector<geometry::Neighbourhood>> exemplar_hoods(exemplar.categories.size());
   for (std::size_t e = 0; e < exemplar.elements.size(); ++e) {
-    exemplar_hoods[static_cast<std::size_t>(exemplar.elements[e].category)].push_back(exemplar_index.of(e));
+    exemplar_hoods[static_cast<std::size_t>(exemplar.elements[e].category)].push_back(
+        exemplar_index.of(e));
   }
   result.exemplar_centres = static_cast<int>(exemplar.elements.size());
 
-  // Output centres whose neighbourhood an open window cuts are left out, unless that is all of them.
+  // Output centres whose neighbourhood an open window cuts are left out, unless that is all of
+  // them.
   std::vector<std::size_t> centres;
   for (std::size_t o = 0; o < output.elements.size(); ++o) {
-    if (output_periodic || inner_distance(output, output.elements[o].position) >= r) centres.push_back(o);
+    if (output_periodic || inner_distance(output, output.elements[o].position) >= r)
+      centres.push_back(o);
   }
   if (centres.empty()) {
     for (std::size_t o = 0; o < output.elements.size(); ++o) centres.push_back(o);
@@ -80,7 +90,8 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
     double best = static_cast<double>(hood.size()) * r * r;  // no exemplar neighbourhood at all
     const int category = output_map[static_cast<std::size_t>(output.elements[o].category)];
     if (category >= 0) {
-      for (const geometry::Neighbourhood& candidate : exemplar_hoods[static_cast<std::size_t>(category)]) {
+      for (const geometry::Neighbourhood& candidate :
+           exemplar_hoods[static_cast<std::size_t>(category)]) {
         best = std::min(best, geometry::neighbourhood_distance(hood, candidate, r));
         if (best == 0.0) break;
       }

@@ -30,8 +30,9 @@ struct NeighbourhoodDistance {
 
 // `radius` 0 means twice the exemplar's mean spacing (a 2-ring neighbourhood, Davison et al. §6).
 // Throws std::invalid_argument when either scene is empty or their dimensions differ.
-NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output, bool output_periodic,
-                                                     const geometry::Scene& exemplar, bool exemplar_periodic,
-                                                     double radius = 0.0);
+NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output,
+                                                     bool output_periodic,
+                                                     const geometry::Scene& exemplar,
+                                                     bool exemplar_periodic, double radius = 0.0);
 
 }  // namespace shapeproc::metrics

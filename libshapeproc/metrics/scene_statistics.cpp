@@ -1,5 +1,4 @@
 #include "libshapeproc/metrics/scene_statistics.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/random.hpp"
 
 namespace shapeproc::metrics {
@@ -15,7 +15,6 @@ namespace shapeproc::metrics {
 using geometry::Vec3;
 
 namespace {
-
 
 // Area (2D) or volume (3D) of a ball of radius r.
 double ball_measure(int dimension, double r) {
@@ -44,7 +43,9 @@ Distribution make_distribution(std::vector<std::pair<double, double>> samples, i
 // #{j : borders[j] >= t} from the sorted borders.
 class AtRisk {
  public:
-  explicit AtRisk(std::vector<double> borders) : sorted_(std::move(borders)) { std::sort(sorted_.begin(), sorted_.end()); }
+  explicit AtRisk(std::vector<double> borders) : sorted_(std::move(borders)) {
+    std::sort(sorted_.begin(), sorted_.end());
+  }
   double operator()(double t) const {
     return static_cast<double>(sorted_.end() - std::lower_bound(sorted_.begin(), sorted_.end(), t));
   }
@@ -63,27 +64,32 @@ double border_distance(const geometry::Box3& window, const geometry::Box3& box, 
 }
 
 geometry::Box3 proxy_box(const geometry::PairMeasurer& measurer, int shape) {
-  if (measurer.dimension() == 2) return geometry::lift(measurer.proxies2().at(static_cast<std::size_t>(shape)).box);
+  if (measurer.dimension() == 2)
+    return geometry::lift(measurer.proxies2().at(static_cast<std::size_t>(shape)).box);
   return measurer.proxies3().at(static_cast<std::size_t>(shape)).box;
 }
 
 // Reference measure of the g(r) estimator: per distance bin, the mean over ordered pairs of
 // distinct elements (i, j) of the measure of offsets u with d(s_i, s_j, u) in the bin. Exact for
 // points; Monte Carlo otherwise (offsets uniform in the ball where d < R is possible).
-std::vector<double> offset_measure(const geometry::Scene& scene, const geometry::PairMeasurer& measurer, double range,
-                                   int bins, const StatisticsOptions& options) {
+std::vector<double> offset_measure(const geometry::Scene& scene,
+                                   const geometry::PairMeasurer& measurer, double range, int bins,
+                                   const StatisticsOptions& options) {
   const int dim = scene.dimension;
   const double width = range / bins;
   std::vector<double> measure(static_cast<std::size_t>(bins), 0.0);
   bool points = true;
-  for (std::size_t s = 0; s < scene.shapes.size(); ++s) points = points && measurer.radius(static_cast<int>(s)) == 0.0;
+  for (std::size_t s = 0; s < scene.shapes.size(); ++s)
+    points = points && measurer.radius(static_cast<int>(s)) == 0.0;
   if (points) {
-    for (int k = 0; k < bins; ++k) measure[k] = ball_measure(dim, (k + 1) * width) - ball_measure(dim, k * width);
+    for (int k = 0; k < bins; ++k)
+      measure[k] = ball_measure(dim, (k + 1) * width) - ball_measure(dim, k * width);
     return measure;
   }
   const std::size_t n = scene.elements.size();
   core::Random random(options.seed);
-  const int samples = options.offset_samples > 0 ? options.offset_samples : (dim == 2 ? 1 << 16 : 1 << 13);
+  const int samples =
+      options.offset_samples > 0 ? options.offset_samples : (dim == 2 ? 1 << 16 : 1 << 13);
   for (int m = 0; m < samples; ++m) {
     const std::size_t i = random.index(n);
     std::size_t j = random.index(n - 1);
@@ -129,8 +135,9 @@ double wasserstein1(const Distribution& a, const Distribution& b) {
   std::size_t i = 0, j = 0;
   double fa = 0.0, fb = 0.0, last = std::min(a.values.front(), b.values.front()), area = 0.0;
   while (i < a.values.size() || j < b.values.size()) {
-    const double next = std::min(i < a.values.size() ? a.values[i] : std::numeric_limits<double>::infinity(),
-                                 j < b.values.size() ? b.values[j] : std::numeric_limits<double>::infinity());
+    const double next =
+        std::min(i < a.values.size() ? a.values[i] : std::numeric_limits<double>::infinity(),
+                 j < b.values.size() ? b.values[j] : std::numeric_limits<double>::infinity());
     area += std::abs(fa - fb) * (next - last);
     last = next;
     while (i < a.values.size() && a.values[i] == next) fa += a.weights[i++];
@@ -139,7 +146,8 @@ double wasserstein1(const Distribution& a, const Distribution& b) {
   return area;
 }
 
-Distribution censored_distribution(const std::vector<double>& values, const std::vector<double>& borders, double range) {
+Distribution censored_distribution(const std::vector<double>& values,
+                                   const std::vector<double>& borders, double range) {
   const AtRisk at_risk(borders);
   std::vector<std::pair<double, double>> samples;
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -156,7 +164,8 @@ int SceneStatistics::elements() const { return std::accumulate(counts.begin(), c
 SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (scene.elements.empty()) throw std::invalid_argument("the scene has no elements");
-  if (!(options.range >= 0) || options.correlation_bins < 1) throw std::invalid_argument("bad statistics options");
+  if (!(options.range >= 0) || options.correlation_bins < 1)
+    throw std::invalid_argument("bad statistics options");
   const std::size_t n = scene.elements.size();
   const int dim = scene.dimension;
 
@@ -170,7 +179,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   stats.range = range;
   for (const geometry::Category& c : scene.categories) stats.categories.push_back(c.name);
   stats.counts.assign(stats.categories.size(), 0);
-  for (const geometry::Element& e : scene.elements) ++stats.counts.at(static_cast<std::size_t>(e.category));
+  for (const geometry::Element& e : scene.elements)
+    ++stats.counts.at(static_cast<std::size_t>(e.category));
   for (int c : stats.counts) stats.intensity.push_back(c / stats.window_measure);
 
   geometry::MeasurementOptions measurement = options.measurement;
@@ -200,7 +210,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
     stats.edge = options.edge;
     if (options.edge == EdgeTreatment::automatic) {
       std::size_t observed = 0;
-      for (std::size_t i = 0; i < n; ++i) observed += std::min(nearest[i], range) <= borders[i] ? 1 : 0;
+      for (std::size_t i = 0; i < n; ++i)
+        observed += std::min(nearest[i], range) <= borders[i] ? 1 : 0;
       stats.edge = 2 * observed >= n ? EdgeTreatment::border : EdgeTreatment::none;
     }
     if (stats.edge == EdgeTreatment::none) borders.assign(n, inf);
@@ -208,7 +219,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   const AtRisk at_risk(borders);
 
   stats.collisions.colliding.assign(n, false);
-  std::vector<std::vector<double>> nearest_axis(static_cast<std::size_t>(axes), std::vector<double>(n, inf));
+  std::vector<std::vector<double>> nearest_axis(static_cast<std::size_t>(axes),
+                                                std::vector<double>(n, inf));
   std::vector<std::pair<double, double>> all_pairs;
   std::vector<std::vector<std::pair<double, double>>> axis_pairs(static_cast<std::size_t>(axes));
   std::vector<double> correlation_counts(static_cast<std::size_t>(options.correlation_bins), 0.0);
@@ -229,9 +241,11 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
       correlation_counts[std::min(options.correlation_bins - 1, static_cast<int>(d / width))] += w;
     }
   }
-  stats.collisions.elements = static_cast<int>(std::count(stats.collisions.colliding.begin(), stats.collisions.colliding.end(), true));
+  stats.collisions.elements = static_cast<int>(
+      std::count(stats.collisions.colliding.begin(), stats.collisions.colliding.end(), true));
 
-  auto pair_statistics = [&](DirectionalStatistics& out, std::vector<std::pair<double, double>> samples) {
+  auto pair_statistics = [&](DirectionalStatistics& out,
+                             std::vector<std::pair<double, double>> samples) {
     double total = 0.0;
     for (const auto& s : samples) total += s.second;
     out.neighbours = total;
@@ -250,21 +264,25 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
 
   // g(r): the edge-corrected mean number of neighbours per distance bin over the number a
   // binomial pattern of the same elements would give, (n - 1) / |W| times the offset measure.
-  const std::vector<double> reference = n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options)
-                                              : std::vector<double>(static_cast<std::size_t>(options.correlation_bins), 0.0);
+  const std::vector<double> reference =
+      n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options)
+            : std::vector<double>(static_cast<std::size_t>(options.correlation_bins), 0.0);
   const double density = static_cast<double>(n - 1) / stats.window_measure;
   for (int k = 0; k < options.correlation_bins; ++k) {
     stats.correlation_r.push_back((k + 0.5) * width);
     const double expected = density * reference[k];
-    stats.correlation.push_back(expected > 0 ? correlation_counts[k] / expected : std::numeric_limits<double>::quiet_NaN());
+    stats.correlation.push_back(expected > 0 ? correlation_counts[k] / expected
+                                             : std::numeric_limits<double>::quiet_NaN());
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
 
 Comparison compare(const SceneStatistics& scene, const SceneStatistics& reference) {
-  if (scene.axes.size() != reference.axes.size() || std::abs(scene.range - reference.range) > 1e-9 * reference.range) {
-    throw std::invalid_argument("statistics computed with different ranges or direction bins cannot be compared");
+  if (scene.axes.size() != reference.axes.size() ||
+      std::abs(scene.range - reference.range) > 1e-9 * reference.range) {
+    throw std::invalid_argument(
+        "statistics computed with different ranges or direction bins cannot be compared");
   }
   Comparison c;
   c.scale = reference.mean_nearest();
@@ -272,10 +290,12 @@ Comparison compare(const SceneStatistics& scene, const SceneStatistics& referenc
   // spacing so that the ratio stays meaningful.
   if (!(c.scale > 1e-3 * reference.mean_spacing)) c.scale = reference.mean_spacing;
   auto distances = [&](const DirectionalStatistics& a, const DirectionalStatistics& b) {
-    return DistributionDistances{wasserstein1(a.nearest, b.nearest) / c.scale, wasserstein1(a.pairs, b.pairs) / c.scale};
+    return DistributionDistances{wasserstein1(a.nearest, b.nearest) / c.scale,
+                                 wasserstein1(a.pairs, b.pairs) / c.scale};
   };
   c.all = distances(scene.all, reference.all);
-  for (std::size_t k = 0; k < scene.axes.size(); ++k) c.axes.push_back(distances(scene.axes[k], reference.axes[k]));
+  for (std::size_t k = 0; k < scene.axes.size(); ++k)
+    c.axes.push_back(distances(scene.axes[k], reference.axes[k]));
   for (std::size_t k = 0; k < scene.categories.size(); ++k) {
     double ratio = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t r = 0; r < reference.categories.size(); ++r) {

@@ -1,9 +1,9 @@
-// Summary statistics of an arrangement, to judge a synthesis against its exemplar (docs/metrics.md):
-// collisions, intensity per category, directional nearest-neighbour and pair-distance
-// distributions on shape distance, G(r) and the pair correlation g(r), and the Wasserstein-1
-// distance between two scenes' distributions. Every distance is the shape distance between proxies
-// and every direction the measurement's relative orientation, measured by geometry::PairMeasurer,
-// so the statistics see the arrangement the way the model does.
+// Summary statistics of an arrangement, to judge a synthesis against its exemplar
+// (docs/metrics.md): collisions, intensity per category, directional nearest-neighbour and
+// pair-distance distributions on shape distance, G(r) and the pair correlation g(r), and the
+// Wasserstein-1 distance between two scenes' distributions. Every distance is the shape distance
+// between proxies and every direction the measurement's relative orientation, measured by
+// geometry::PairMeasurer, so the statistics see the arrangement the way the model does.
 #pragma once
 
 #include <cstdint>
@@ -28,11 +28,11 @@ struct StatisticsOptions {
   // tolerance are taken from here. `periodic`: the window is a torus (no edge correction).
   geometry::MeasurementOptions measurement = default_measurement();
   EdgeTreatment edge = EdgeTreatment::automatic;  // open windows only
-  double range = 0.0;           // distributions up to R; 0 means the scene's mean spacing (|W|/n)^(1/dim)
-  int correlation_bins = 24;    // g(r) histogram bins over [0, R)
-  int offset_samples = 0;       // Monte-Carlo offsets for g(r)'s reference measure (shaped elements);
-                                // 0: 65,536 in 2D, 8,192 in 3D (mesh distances cost ~50x more)
-  std::uint64_t seed = 1;       // of those offsets
+  double range = 0.0;  // distributions up to R; 0 means the scene's mean spacing (|W|/n)^(1/dim)
+  int correlation_bins = 24;  // g(r) histogram bins over [0, R)
+  int offset_samples = 0;     // Monte-Carlo offsets for g(r)'s reference measure (shaped elements);
+                              // 0: 65,536 in 2D, 8,192 in 3D (mesh distances cost ~50x more)
+  std::uint64_t seed = 1;     // of those offsets
 
   static geometry::MeasurementOptions default_measurement() {
     geometry::MeasurementOptions m;
@@ -41,8 +41,8 @@ struct StatisticsOptions {
   }
 };
 
-// A distribution on [0, R] given by weighted samples (sorted by value, weights summing to 1). Values
-// at R stand for "R or more" (no neighbour within range).
+// A distribution on [0, R] given by weighted samples (sorted by value, weights summing to 1).
+// Values at R stand for "R or more" (no neighbour within range).
 struct Distribution {
   std::vector<double> values;
   std::vector<double> weights;
@@ -61,19 +61,21 @@ double wasserstein1(const Distribution& a, const Distribution& b);
 // does not exceed `borders[i]`, the distance from element i to the window's edge (an unseen
 // element can be no nearer); observed values get weight 1 / #{j : borders[j] >= value}
 // (Hanisch's estimator). Pass infinite borders for a torus.
-Distribution censored_distribution(const std::vector<double>& values, const std::vector<double>& borders, double range);
+Distribution censored_distribution(const std::vector<double>& values,
+                                   const std::vector<double>& borders, double range);
 
 struct DirectionalStatistics {
   geometry::Vec3 direction = geometry::Vec3::UnitX();  // the axis' representative direction
-  Distribution nearest;  // distance to the nearest neighbour in this axis bin (truncated at R)
-  Distribution pairs;    // distances of all neighbours in this bin below R
+  Distribution nearest;     // distance to the nearest neighbour in this axis bin (truncated at R)
+  Distribution pairs;       // distances of all neighbours in this bin below R
   double neighbours = 0.0;  // mean number of neighbours in this bin below R per element
 };
 
 struct Collisions {
-  std::vector<std::pair<int, int>> pairs;  // element pairs at shape distance 0 (overlap, touch, nest)
-  std::vector<bool> colliding;             // per element
-  int elements = 0;                        // elements in at least one such pair
+  std::vector<std::pair<int, int>>
+      pairs;                    // element pairs at shape distance 0 (overlap, touch, nest)
+  std::vector<bool> colliding;  // per element
+  int elements = 0;             // elements in at least one such pair
 };
 
 struct SceneStatistics {
@@ -102,15 +104,17 @@ struct SceneStatistics {
 SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options);
 
 struct DistributionDistances {
-  double nearest = 0.0;  // W1 of nearest-neighbour distributions / the reference's mean nearest distance
-  double pairs = 0.0;    // W1 of pair-distance distributions / the same scale
+  double nearest =
+      0.0;  // W1 of nearest-neighbour distributions / the reference's mean nearest distance
+  double pairs = 0.0;  // W1 of pair-distance distributions / the same scale
 };
 
 struct Comparison {
   double scale = 0.0;  // the divisor: the reference's mean nearest-neighbour distance (or spacing)
   DistributionDistances all;
   std::vector<DistributionDistances> axes;
-  std::vector<double> intensity_ratio;  // per category of the scene: its intensity / the reference's
+  std::vector<double>
+      intensity_ratio;  // per category of the scene: its intensity / the reference's
 };
 
 // `scene` and `reference` must have been computed with the same range and direction bins.

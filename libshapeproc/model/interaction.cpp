@@ -5,7 +5,8 @@
 
 namespace shapeproc::model {
 
-Interaction::Interaction(const ShapeProcessModel& model) : categories_(static_cast<int>(model.categories.size())) {
+Interaction::Interaction(const ShapeProcessModel& model)
+    : categories_(static_cast<int>(model.categories.size())) {
   pair_index_.assign(static_cast<std::size_t>(categories_ * categories_), -1);
   parameters_ = categories_;
   for (int c = 0; c < categories_; ++c) locations_.push_back({-1, c, -1});
@@ -30,10 +31,13 @@ Interaction::Interaction(const ShapeProcessModel& model) : categories_(static_ca
     }
     if (source.axes.empty()) pair.min_hard_core = 0.0;
     std::sort(pair.breakpoints.begin(), pair.breakpoints.end());
-    pair.breakpoints.erase(std::unique(pair.breakpoints.begin(), pair.breakpoints.end()), pair.breakpoints.end());
+    pair.breakpoints.erase(std::unique(pair.breakpoints.begin(), pair.breakpoints.end()),
+                           pair.breakpoints.end());
     range_ = std::max(range_, pair.max_range);
-    pair_index_[static_cast<std::size_t>(source.first * categories_ + source.second)] = static_cast<int>(pairs_.size());
-    pair_index_[static_cast<std::size_t>(source.second * categories_ + source.first)] = static_cast<int>(pairs_.size());
+    pair_index_[static_cast<std::size_t>(source.first * categories_ + source.second)] =
+        static_cast<int>(pairs_.size());
+    pair_index_[static_cast<std::size_t>(source.second * categories_ + source.first)] =
+        static_cast<int>(pairs_.size());
     pairs_.push_back(std::move(pair));
   }
 }
@@ -56,17 +60,20 @@ int Interaction::parameter(int ca, int cb, int axis, int band) const {
 double Interaction::log_gamma(int ca, int cb, int axis, int band) const {
   if (band == kBeyond) return 0.0;
   if (band == kHardCore) return -std::numeric_limits<double>::infinity();
-  return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].log_gammas[static_cast<std::size_t>(band)];
+  return pairs_[pair_of(ca, cb)]
+      .axes[static_cast<std::size_t>(axis)]
+      .log_gammas[static_cast<std::size_t>(band)];
 }
 
-PairEffect pair_distance_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
-                                const geometry::Element& xi, const geometry::Element& neighbour) {
+PairEffect pair_distance_effect(const Interaction& interaction,
+                                const geometry::PairMeasurer& measurer, const geometry::Element& xi,
+                                const geometry::Element& neighbour) {
   PairEffect effect;
   if (!interaction.interacts(xi.category, neighbour.category)) return effect;
   const double reach = interaction.max_range(xi.category, neighbour.category);
   if (!(reach > 0)) return effect;
-  const geometry::Measurement m =
-      measurer.measure_distance(xi, neighbour, reach, &interaction.breakpoints(xi.category, neighbour.category));
+  const geometry::Measurement m = measurer.measure_distance(
+      xi, neighbour, reach, &interaction.breakpoints(xi.category, neighbour.category));
   effect.distance = m.distance;
   effect.offset = m.offset;
   if (m.distance >= reach) return effect;
@@ -78,11 +85,15 @@ PairEffect pair_distance_effect(const Interaction& interaction, const geometry::
   return effect;
 }
 
-void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer, const geometry::Element& xi,
-                 const geometry::Element& neighbour, PairEffect& effect) {
+void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                 const geometry::Element& xi, const geometry::Element& neighbour,
+                 PairEffect& effect) {
   if (!effect.axis_pending) return;
   const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, effect.offset);
-  effect.axis = known >= 0 ? known : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, effect.offset));
+  effect.axis =
+      known >= 0
+          ? known
+          : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, effect.offset));
   effect.band = interaction.band(xi.category, neighbour.category, effect.axis, effect.distance);
   effect.axis_pending = false;
 }
@@ -107,7 +118,8 @@ void InteractionCounts::add(int parameter) {
 double InteractionCounts::dot(const std::vector<double>& theta) const {
   if (hard_core) return -std::numeric_limits<double>::infinity();
   double sum = 0.0;
-  for (const auto& [parameter, count] : counts) sum += theta[static_cast<std::size_t>(parameter)] * count;
+  for (const auto& [parameter, count] : counts)
+    sum += theta[static_cast<std::size_t>(parameter)] * count;
   return sum;
 }
 

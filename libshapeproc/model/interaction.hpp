@@ -31,7 +31,9 @@ class Interaction {
   double max_range(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_range; }
   // Every threshold of every axis of a pair, ascending and distinct: a distance's band in every
   // axis depends only on which interval between them holds it.
-  const std::vector<double>& breakpoints(int ca, int cb) const { return pairs_[pair_of(ca, cb)].breakpoints; }
+  const std::vector<double>& breakpoints(int ca, int cb) const {
+    return pairs_[pair_of(ca, cb)].breakpoints;
+  }
 
   // δ_0 … δ_K of a pair's axis (the pair must interact).
   const std::vector<double>& thresholds(int ca, int cb, int axis) const {
@@ -47,7 +49,9 @@ class Interaction {
   struct Location {
     int pair, axis, band;
   };
-  Location locate(int parameter) const { return locations_.at(static_cast<std::size_t>(parameter)); }
+  Location locate(int parameter) const {
+    return locations_.at(static_cast<std::size_t>(parameter));
+  }
 
  private:
   struct Axis {
@@ -60,7 +64,9 @@ class Interaction {
     double min_hard_core = 0.0, max_range = 0.0;
     std::vector<double> breakpoints;
   };
-  int pair_of(int ca, int cb) const { return pair_index_[static_cast<std::size_t>(ca * categories_ + cb)]; }
+  int pair_of(int ca, int cb) const {
+    return pair_index_[static_cast<std::size_t>(ca * categories_ + cb)];
+  }
 
   int categories_ = 0;
   int parameters_ = 0;
@@ -78,7 +84,7 @@ struct PairEffect {
   int axis = 0;
   double distance = std::numeric_limits<double>::infinity();
   geometry::Vec3 offset = geometry::Vec3::Zero();  // the neighbour's image relative to ξ
-  bool axis_pending = false;                       // in range: the axis (and band) are still to decide
+  bool axis_pending = false;  // in range: the axis (and band) are still to decide
 };
 
 // Measures ξ against one neighbour, lazily: the direction is computed only when the distance
@@ -88,10 +94,12 @@ struct PairEffect {
 // decide_axis then settles.
 PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
                        const geometry::Element& xi, const geometry::Element& neighbour);
-PairEffect pair_distance_effect(const Interaction& interaction, const geometry::PairMeasurer& measurer,
-                                const geometry::Element& xi, const geometry::Element& neighbour);
-void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer, const geometry::Element& xi,
-                 const geometry::Element& neighbour, PairEffect& effect);
+PairEffect pair_distance_effect(const Interaction& interaction,
+                                const geometry::PairMeasurer& measurer, const geometry::Element& xi,
+                                const geometry::Element& neighbour);
+void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& measurer,
+                 const geometry::Element& xi, const geometry::Element& neighbour,
+                 PairEffect& effect);
 
 // t(ξ, x) restricted to interactions: sorted (θ index, count) pairs and the hard-core flag.
 struct InteractionCounts {

@@ -22,11 +22,16 @@ std::string number(double v) {
 
 const char* to_string(ParameterStatus status) {
   switch (status) {
-    case ParameterStatus::free: return "free";
-    case ParameterStatus::boundary: return "boundary";
-    case ParameterStatus::unidentifiable: return "unidentifiable";
-    case ParameterStatus::unbounded: return "unbounded";
-    case ParameterStatus::fixed: return "fixed";
+    case ParameterStatus::free:
+      return "free";
+    case ParameterStatus::boundary:
+      return "boundary";
+    case ParameterStatus::unidentifiable:
+      return "unidentifiable";
+    case ParameterStatus::unbounded:
+      return "unbounded";
+    case ParameterStatus::fixed:
+      return "fixed";
   }
   return "fixed";
 }
@@ -71,12 +76,14 @@ geometry::Scene ShapeProcessModel::shape_space() const {
 }
 
 void validate(const ShapeProcessModel& model) {
-  if (model.dimension != 2 && model.dimension != 3) fail("dimension", "must be 2 or 3, got " + std::to_string(model.dimension));
+  if (model.dimension != 2 && model.dimension != 3)
+    fail("dimension", "must be 2 or 3, got " + std::to_string(model.dimension));
   if (model.categories.empty()) fail("categories", "at least one category is needed");
   for (std::size_t c = 0; c < model.categories.size(); ++c) {
     const double beta = model.categories[c].beta;
     if (!(std::isfinite(beta) && beta > 0)) {
-      fail("categories[" + std::to_string(c) + "].beta", "must be finite and > 0, got " + number(beta));
+      fail("categories[" + std::to_string(c) + "].beta",
+           "must be finite and > 0, got " + number(beta));
     }
   }
   const geometry::DirectionBins bins = [&] {
@@ -91,60 +98,77 @@ void validate(const ShapeProcessModel& model) {
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const PairInteraction& pair = model.interactions[p];
     const std::string where = "interaction[" + std::to_string(p) + "]";
-    if (pair.first < 0 || pair.second < 0 || pair.first >= categories || pair.second >= categories) {
-      fail(where + ".categories", "category indices must be in 0.." + std::to_string(categories - 1) + ", got [" +
-                                      std::to_string(pair.first) + ", " + std::to_string(pair.second) + "]");
+    if (pair.first < 0 || pair.second < 0 || pair.first >= categories ||
+        pair.second >= categories) {
+      fail(where + ".categories",
+           "category indices must be in 0.." + std::to_string(categories - 1) + ", got [" +
+               std::to_string(pair.first) + ", " + std::to_string(pair.second) + "]");
     }
     const int a = std::min(pair.first, pair.second), b = std::max(pair.first, pair.second);
-    if (seen[static_cast<std::size_t>(a * categories + b)]) fail(where + ".categories", "this pair of categories is listed twice");
+    if (seen[static_cast<std::size_t>(a * categories + b)])
+      fail(where + ".categories", "this pair of categories is listed twice");
     seen[static_cast<std::size_t>(a * categories + b)] = true;
     if (static_cast<int>(pair.axes.size()) != bins.axis_count()) {
       fail(where + ".axes", "expected " + std::to_string(bins.axis_count()) + " axes for " +
                                 std::to_string(model.measurement.directions) + " directions in " +
-                                std::to_string(model.dimension) + "D, got " + std::to_string(pair.axes.size()));
+                                std::to_string(model.dimension) + "D, got " +
+                                std::to_string(pair.axes.size()));
     }
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
       const AxisParameters& axis = pair.axes[i];
       const std::string at = where + ".axes[" + std::to_string(i) + "]";
       const geometry::Vec3 expected = bins.axis_direction(static_cast<int>(i));
       if (!axis.direction.allFinite() || axis.direction.norm() == 0 ||
-          (axis.direction.normalized() - expected).norm() > 1e-6 || (model.dimension == 2 && axis.direction.z() != 0)) {
+          (axis.direction.normalized() - expected).norm() > 1e-6 ||
+          (model.dimension == 2 && axis.direction.z() != 0)) {
         std::ostringstream text;
         text << "expected the canonical direction (" << expected.x() << ", " << expected.y();
         if (model.dimension == 3) text << ", " << expected.z();
         text << ")";
         fail(at + ".direction", text.str());
       }
-      if (axis.thresholds.empty()) fail(at + ".thresholds", "at least the hard-core distance d0 is needed");
+      if (axis.thresholds.empty())
+        fail(at + ".thresholds", "at least the hard-core distance d0 is needed");
       for (std::size_t k = 0; k < axis.thresholds.size(); ++k) {
         const double d = axis.thresholds[k];
-        if (!(std::isfinite(d) && d >= 0)) fail(at + ".thresholds[" + std::to_string(k) + "]", "must be finite and >= 0, got " + number(d));
+        if (!(std::isfinite(d) && d >= 0))
+          fail(at + ".thresholds[" + std::to_string(k) + "]",
+               "must be finite and >= 0, got " + number(d));
         if (k > 0 && d < axis.thresholds[k - 1]) {
-          fail(at + ".thresholds", "must not decrease, got " + number(d) + " after " + number(axis.thresholds[k - 1]));
+          fail(at + ".thresholds",
+               "must not decrease, got " + number(d) + " after " + number(axis.thresholds[k - 1]));
         }
       }
       if (axis.gammas.size() + 1 != axis.thresholds.size()) {
-        fail(at + ".gammas", "expected " + std::to_string(axis.thresholds.size() - 1) + " values (one per band), got " +
+        fail(at + ".gammas", "expected " + std::to_string(axis.thresholds.size() - 1) +
+                                 " values (one per band), got " +
                                  std::to_string(axis.gammas.size()));
       }
       for (std::size_t k = 0; k < axis.gammas.size(); ++k) {
         const double g = axis.gammas[k];
-        if (!(std::isfinite(g) && g >= 0)) fail(at + ".gammas[" + std::to_string(k) + "]", "must be finite and >= 0, got " + number(g));
+        if (!(std::isfinite(g) && g >= 0))
+          fail(at + ".gammas[" + std::to_string(k) + "]",
+               "must be finite and >= 0, got " + number(g));
       }
     }
   }
   for (std::size_t s = 0; s < model.shapes.size(); ++s) {
     const ModelShape& shape = model.shapes[s];
     const std::string where = "shapes[" + std::to_string(s) + "]";
-    if (shape.category < 0 || shape.category >= categories) fail(where + ".category", "out of range");
+    if (shape.category < 0 || shape.category >= categories)
+      fail(where + ".category", "out of range");
     const int d = geometry::dimension(shape.shape);
-    if (d != 0 && d != model.dimension) fail(where, "a " + std::to_string(d) + "D shape in a " + std::to_string(model.dimension) + "D model");
+    if (d != 0 && d != model.dimension)
+      fail(where, "a " + std::to_string(d) + "D shape in a " + std::to_string(model.dimension) +
+                      "D model");
   }
   if (!model.shapes.empty()) {
     for (int c = 0; c < categories; ++c) {
       bool any = false;
       for (const ModelShape& s : model.shapes) any = any || s.category == c;
-      if (!any) fail("shapes", "category " + std::to_string(c) + " (" + model.categories[c].name + ") has no shape");
+      if (!any)
+        fail("shapes",
+             "category " + std::to_string(c) + " (" + model.categories[c].name + ") has no shape");
     }
   }
 }

@@ -1,7 +1,8 @@
 // The shape-process model (paper §5; math note "Interaction function and density"):
 //   f(x) ∝ ∏_n β_{c_n} ∏_{n<m} Γ(x_n, x_m),
 // with, for the categories (c, c') of a pair and the axis bin i of its relative orientation,
-//   Γ = 0 if d < δ_{i,0} (hard core), γ_{i,k} if δ_{i,k−1} ≤ d < δ_{i,k} (k = 1..K), 1 if d ≥ δ_{i,K}.
+//   Γ = 0 if d < δ_{i,0} (hard core), γ_{i,k} if δ_{i,k−1} ≤ d < δ_{i,k} (k = 1..K), 1 if d ≥
+//   δ_{i,K}.
 // This file holds the parameters as a user edits them; interaction.hpp compiles them for
 // evaluation.
 #pragma once
@@ -52,7 +53,7 @@ struct PairInteraction {
 struct MeasurementSettings {
   geometry::DistanceKind distance = geometry::DistanceKind::shape;
   geometry::DirectionKind direction = geometry::DirectionKind::gravitation;
-  int directions = 8;               // 2D: even or 1; 3D: 12 or 1
+  int directions = 8;  // 2D: even or 1; 3D: 12 or 1
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
 };
 

@@ -1,5 +1,4 @@
 #include "libshapeproc/render/interaction_plot.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +6,11 @@
 #include <sstream>
 
 #include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::render {
 
 namespace {
-
 
 // γ to colour: 0 → dark red, 1 → white, ≥ 4 → dark blue (log scale above 1).
 std::string colour(double gamma) {
@@ -28,7 +27,8 @@ std::string colour(double gamma) {
     b = 1.0 - 0.25 * t;
   }
   char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", static_cast<int>(r * 255), static_cast<int>(g * 255), static_cast<int>(b * 255));
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", static_cast<int>(r * 255),
+                static_cast<int>(g * 255), static_cast<int>(b * 255));
   return text;
 }
 
@@ -40,8 +40,11 @@ std::string fmt(double v) {
 
 // An annular sector between radii r0 < r1 and angles a0 < a1 (radians, y down as in SVG).
 std::string sector(double cx, double cy, double r0, double r1, double a0, double a1) {
-  auto point = [&](double r, double a) { return fmt(cx + r * std::cos(a)) + " " + fmt(cy + r * std::sin(a)); };
-  std::string d = "M" + point(r1, a0) + "A" + fmt(r1) + " " + fmt(r1) + " 0 0 1 " + point(r1, a1) + "L" + point(r0, a1);
+  auto point = [&](double r, double a) {
+    return fmt(cx + r * std::cos(a)) + " " + fmt(cy + r * std::sin(a));
+  };
+  std::string d = "M" + point(r1, a0) + "A" + fmt(r1) + " " + fmt(r1) + " 0 0 1 " + point(r1, a1) +
+                  "L" + point(r0, a1);
   if (r0 > 0) d += "A" + fmt(r0) + " " + fmt(r0) + " 0 0 0 " + point(r0, a0);
   return d + "Z";
 }
@@ -53,13 +56,16 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
   const double pairs = static_cast<double>(std::max<std::size_t>(1, model.interactions.size()));
   const double width = pairs * (size + margin) + margin, height = size + 2 * margin + 60;
   std::ostringstream svg;
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width
-      << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " " << height
-      << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "width=\""
+      << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " " << height
+      << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" "
+         "fill=\"white\"/>\n";
   const double reach = std::max(model.interaction_range(), 1e-12);
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const model::PairInteraction& pair = model.interactions[p];
-    const double x0 = margin + static_cast<double>(p) * (size + margin), cx = x0 + size / 2, cy = margin + size / 2;
+    const double x0 = margin + static_cast<double>(p) * (size + margin), cx = x0 + size / 2,
+                 cy = margin + size / 2;
     const double outer = size / 2 - 4;
     auto radius = [&](double d) { return outer * std::min(1.0, d / reach) * 0.92; };
     svg << "<text x=\"" << cx << "\" y=\"" << margin - 10 << "\" text-anchor=\"middle\">"
@@ -67,39 +73,47 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
         << model.categories[static_cast<std::size_t>(pair.second)].name << "</text>\n";
     const std::size_t axes = pair.axes.size();
     if (model.dimension == 2) {
-      svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << outer << "\" fill=\"white\" stroke=\"#999\"/>\n";
-      const double half = axes <= 1 ? core::kPi : core::kPi / (2.0 * static_cast<double>(axes));  // each direction spans 2π/D
+      svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << outer
+          << "\" fill=\"white\" stroke=\"#999\"/>\n";
+      const double half =
+          axes <= 1 ? core::kPi
+                    : core::kPi / (2.0 * static_cast<double>(axes));  // each direction spans 2π/D
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
         const double angle = std::atan2(a.direction.y(), a.direction.x());
         for (const double centre : {angle, angle + core::kPi}) {
           if (axes <= 1 && centre != angle) continue;
           const double a0 = centre - half, a1 = centre + half;
-          svg << "<path d=\"" << sector(cx, cy, 0, radius(a.thresholds.front()), a0, a1) << "\" fill=\"black\"/>\n";
+          svg << "<path d=\"" << sector(cx, cy, 0, radius(a.thresholds.front()), a0, a1)
+              << "\" fill=\"black\"/>\n";
           for (std::size_t k = 0; k < a.gammas.size(); ++k) {
             const double r0 = radius(a.thresholds[k]), r1 = radius(a.thresholds[k + 1]);
             if (r1 <= r0) continue;
-            svg << "<path d=\"" << sector(cx, cy, r0, r1, a0, a1) << "\" fill=\"" << colour(a.gammas[k])
-                << "\" stroke=\"#555\" stroke-width=\"0.3\"><title>axis " << i << " band " << k + 1 << ": gamma "
-                << fmt(a.gammas[k]) << " on [" << fmt(a.thresholds[k]) << ", " << fmt(a.thresholds[k + 1]) << ")</title></path>\n";
+            svg << "<path d=\"" << sector(cx, cy, r0, r1, a0, a1) << "\" fill=\""
+                << colour(a.gammas[k]) << "\" stroke=\"#555\" stroke-width=\"0.3\"><title>axis "
+                << i << " band " << k + 1 << ": gamma " << fmt(a.gammas[k]) << " on ["
+                << fmt(a.thresholds[k]) << ", " << fmt(a.thresholds[k + 1]) << ")</title></path>\n";
           }
         }
       }
-      svg << "<text x=\"" << cx << "\" y=\"" << cy + outer + 16 << "\" text-anchor=\"middle\">radius: distance 0 to "
-          << fmt(reach) << " " << model.units << "</text>\n";
+      svg << "<text x=\"" << cx << "\" y=\"" << cy + outer + 16
+          << "\" text-anchor=\"middle\">radius: distance 0 to " << fmt(reach) << " " << model.units
+          << "</text>\n";
     } else {
-      const double bar = std::min(24.0, size / static_cast<double>(std::max<std::size_t>(axes, 1)) - 4);
+      const double bar =
+          std::min(24.0, size / static_cast<double>(std::max<std::size_t>(axes, 1)) - 4);
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
         const double y = margin + static_cast<double>(i) * (bar + 4);
         auto x = [&](double d) { return x0 + 40 + (size - 44) * std::min(1.0, d / reach); };
         svg << "<text x=\"" << x0 << "\" y=\"" << y + bar * 0.7 << "\">axis " << i << "</text>\n";
-        svg << "<rect x=\"" << x(0) << "\" y=\"" << y << "\" width=\"" << x(a.thresholds.front()) - x(0) << "\" height=\"" << bar
-            << "\" fill=\"black\"/>\n";
+        svg << "<rect x=\"" << x(0) << "\" y=\"" << y << "\" width=\""
+            << x(a.thresholds.front()) - x(0) << "\" height=\"" << bar << "\" fill=\"black\"/>\n";
         for (std::size_t k = 0; k < a.gammas.size(); ++k) {
           svg << "<rect x=\"" << x(a.thresholds[k]) << "\" y=\"" << y << "\" width=\""
-              << std::max(0.0, x(a.thresholds[k + 1]) - x(a.thresholds[k])) << "\" height=\"" << bar << "\" fill=\""
-              << colour(a.gammas[k]) << "\" stroke=\"#555\" stroke-width=\"0.3\"/>\n";
+              << std::max(0.0, x(a.thresholds[k + 1]) - x(a.thresholds[k])) << "\" height=\"" << bar
+              << "\" fill=\"" << colour(a.gammas[k])
+              << "\" stroke=\"#555\" stroke-width=\"0.3\"/>\n";
         }
       }
     }
@@ -110,16 +124,18 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
   const double stops[] = {0, 0.25, 0.5, 0.75, 1, 1.5, 2, 3, 4};
   for (std::size_t k = 0; k < std::size(stops); ++k) {
     const double x = margin + static_cast<double>(k) * 34;
-    svg << "<rect x=\"" << x << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\"" << colour(stops[k])
-        << "\" stroke=\"#555\" stroke-width=\"0.3\"/><text x=\"" << x + 17 << "\" y=\"" << ly + 26
-        << "\" text-anchor=\"middle\">" << fmt(stops[k]) << "</text>\n";
+    svg << "<rect x=\"" << x << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\""
+        << colour(stops[k]) << "\" stroke=\"#555\" stroke-width=\"0.3\"/><text x=\"" << x + 17
+        << "\" y=\"" << ly + 26 << "\" text-anchor=\"middle\">" << fmt(stops[k]) << "</text>\n";
   }
-  svg << "<rect x=\"" << margin + 9 * 34 + 12 << "\" y=\"" << ly << "\" width=\"34\" height=\"12\" fill=\"black\"/><text x=\""
-      << margin + 9 * 34 + 50 << "\" y=\"" << ly + 10 << "\">hard core</text>\n</svg>\n";
+  svg << "<rect x=\"" << margin + 9 * 34 + 12 << "\" y=\"" << ly
+      << "\" width=\"34\" height=\"12\" fill=\"black\"/><text x=\"" << margin + 9 * 34 + 50
+      << "\" y=\"" << ly + 10 << "\">hard core</text>\n</svg>\n";
   return svg.str();
 }
 
-void write_interaction_plot(const model::ShapeProcessModel& model, const std::filesystem::path& file) {
+void write_interaction_plot(const model::ShapeProcessModel& model,
+                            const std::filesystem::path& file) {
   const std::string text = interaction_plot_svg(model);
   core::write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }

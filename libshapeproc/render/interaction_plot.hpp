@@ -12,6 +12,7 @@
 namespace shapeproc::render {
 
 std::string interaction_plot_svg(const model::ShapeProcessModel& model);
-void write_interaction_plot(const model::ShapeProcessModel& model, const std::filesystem::path& file);
+void write_interaction_plot(const model::ShapeProcessModel& model,
+                            const std::filesystem::path& file);
 
 }  // namespace shapeproc::render

@@ -39,7 +39,8 @@ std::uint32_t get_u32(const std::string& in, std::size_t at) {
 }
 
 bool is_png(const std::string& png) {
-  return png.size() >= kIhdrEnd && png.compare(0, kSignatureSize, kSignature, kSignatureSize) == 0 &&
+  return png.size() >= kIhdrEnd &&
+         png.compare(0, kSignatureSize, kSignature, kSignatureSize) == 0 &&
          png.compare(kSignatureSize + 4, 4, "IHDR") == 0;
 }
 
@@ -49,8 +50,8 @@ std::string add_png_text(const std::string& png, const PngText& text) {
   core::check(is_png(png), "add_png_text", "the bytes are not a PNG starting with IHDR");
   std::string chunks;
   for (const auto& [keyword, value] : text) {
-    core::check(!keyword.empty() && keyword.size() < 80 && keyword.find('\0') == std::string::npos, "add_png_text",
-                "a keyword has 1-79 characters, got '" + keyword + "'");
+    core::check(!keyword.empty() && keyword.size() < 80 && keyword.find('\0') == std::string::npos,
+                "add_png_text", "a keyword has 1-79 characters, got '" + keyword + "'");
     std::string body = "tEXt" + keyword;
     body += '\0';
     for (char c : value) body += c == '\0' ? ' ' : c;

@@ -1,5 +1,7 @@
 #include "libshapeproc/render/raster.hpp"
 
+#include <cairo.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,8 +12,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-
-#include <cairo.h>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/constants.hpp"
@@ -44,12 +44,14 @@ struct Colour {
 // SVG colour values: #rgb, #rrggbb, rgb(r, g, b) and the common names; nullopt for none.
 std::optional<Colour> parse_colour(const std::string& text) {
   static const std::map<std::string, Colour> names = {
-      {"black", {0, 0, 0}},          {"white", {1, 1, 1}},         {"red", {1, 0, 0}},         {"green", {0, 0.5, 0}},
-      {"blue", {0, 0, 1}},           {"yellow", {1, 1, 0}},        {"gray", {0.5, 0.5, 0.5}},  {"grey", {0.5, 0.5, 0.5}},
-      {"orange", {1, 0.65, 0}},      {"purple", {0.5, 0, 0.5}},    {"currentcolor", {0, 0, 0}}};
+      {"black", {0, 0, 0}},      {"white", {1, 1, 1}},       {"red", {1, 0, 0}},
+      {"green", {0, 0.5, 0}},    {"blue", {0, 0, 1}},        {"yellow", {1, 1, 0}},
+      {"gray", {0.5, 0.5, 0.5}}, {"grey", {0.5, 0.5, 0.5}},  {"orange", {1, 0.65, 0}},
+      {"purple", {0.5, 0, 0.5}}, {"currentcolor", {0, 0, 0}}};
   std::string s;
   for (char c : text)
-    if (!std::isspace(static_cast<unsigned char>(c))) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (s.empty() || s == "none" || s == "transparent") return std::nullopt;
   if (s[0] == '#') {
     unsigned v = 0;
@@ -62,7 +64,8 @@ std::optional<Colour> parse_colour(const std::string& text) {
     return Colour{};
   }
   double r = 0, g = 0, b = 0;
-  if (std::sscanf(s.c_str(), "rgb(%lf,%lf,%lf)", &r, &g, &b) == 3) return Colour{r / 255, g / 255, b / 255};
+  if (std::sscanf(s.c_str(), "rgb(%lf,%lf,%lf)", &r, &g, &b) == 3)
+    return Colour{r / 255, g / 255, b / 255};
   const auto named = names.find(s);
   return named != names.end() ? named->second : Colour{};
 }
@@ -114,7 +117,10 @@ void draw_2d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
     const geometry::Shape& shape = scene.shapes.at(static_cast<std::size_t>(e.shape));
     if (std::holds_alternative<geometry::PointShape>(shape.geometry)) {
       cairo_arc(cr, offset.x(), offset.y(), 2.5 * pixel, 0, 2 * core::kPi);
-      if (red) cairo_set_source_rgb(cr, 0.85, 0.1, 0.1); else cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      if (red)
+        cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+      else
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
       cairo_fill(cr);
       continue;
     }
@@ -124,17 +130,25 @@ void draw_2d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
       const double opacity = number_or(d.style, "opacity", 1.0);
       cairo_new_path(cr);
       for (const geometry::Path2& path : d.paths) add_path(cr, path, offset);
-      const auto fill = d.style.count("fill") ? parse_colour(d.style.at("fill")) : std::optional<Colour>(Colour{});
-      const auto stroke = d.style.count("stroke") ? parse_colour(d.style.at("stroke")) : std::nullopt;
+      const auto fill = d.style.count("fill") ? parse_colour(d.style.at("fill"))
+                                              : std::optional<Colour>(Colour{});
+      const auto stroke =
+          d.style.count("stroke") ? parse_colour(d.style.at("stroke")) : std::nullopt;
       if (fill) {
         const Colour c = red ? Colour{0.85, 0.1, 0.1} : *fill;
         cairo_set_source_rgba(cr, c.r, c.g, c.b, opacity * number_or(d.style, "fill-opacity", 1.0));
-        cairo_set_fill_rule(cr, d.fill_rule == geometry::FillRule::evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
-        if (stroke) cairo_fill_preserve(cr); else cairo_fill(cr);
+        cairo_set_fill_rule(cr, d.fill_rule == geometry::FillRule::evenodd
+                                    ? CAIRO_FILL_RULE_EVEN_ODD
+                                    : CAIRO_FILL_RULE_WINDING);
+        if (stroke)
+          cairo_fill_preserve(cr);
+        else
+          cairo_fill(cr);
       }
       if (stroke) {
         const Colour c = red ? Colour{0.85, 0.1, 0.1} : *stroke;
-        cairo_set_source_rgba(cr, c.r, c.g, c.b, opacity * number_or(d.style, "stroke-opacity", 1.0));
+        cairo_set_source_rgba(cr, c.r, c.g, c.b,
+                              opacity * number_or(d.style, "stroke-opacity", 1.0));
         cairo_set_line_width(cr, std::max(pixel, number_or(d.style, "stroke-width", 1.0)));
         cairo_stroke(cr);
       }
@@ -152,19 +166,24 @@ void draw_3d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
   std::vector<Face> faces;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const geometry::Element& e = scene.elements[i];
-    const auto* mesh = std::get_if<geometry::MeshShape>(&scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
+    const auto* mesh = std::get_if<geometry::MeshShape>(
+        &scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
     if (!mesh) continue;
     const bool red = i < options.highlight.size() && options.highlight[i];
     for (const auto& t : mesh->mesh.triangles) {
       Face f;
-      for (int k = 0; k < 3; ++k) f.p[static_cast<std::size_t>(k)] = mesh->mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] + e.position;
+      for (int k = 0; k < 3; ++k)
+        f.p[static_cast<std::size_t>(k)] =
+            mesh->mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] +
+            e.position;
       f.depth = (f.p[0].z() + f.p[1].z() + f.p[2].z()) / 3;
       f.red = red;
       faces.push_back(f);
     }
   }
   // Viewer on +z looking down: far (low z) faces first.
-  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.depth < b.depth; });
+  std::stable_sort(faces.begin(), faces.end(),
+                   [](const Face& a, const Face& b) { return a.depth < b.depth; });
   const Vec3 light = Vec3(-0.4, -0.5, 1.0).normalized();
   for (const Face& f : faces) {
     Vec3 normal = (f.p[1] - f.p[0]).cross(f.p[2] - f.p[0]);
@@ -175,8 +194,10 @@ void draw_3d(cairo_t* cr, const Scene& scene, const RenderOptions& options, doub
     cairo_line_to(cr, f.p[1].x(), f.p[1].y());
     cairo_line_to(cr, f.p[2].x(), f.p[2].y());
     cairo_close_path(cr);
-    if (f.red) cairo_set_source_rgb(cr, 0.9 * shade, 0.15 * shade, 0.15 * shade);
-    else cairo_set_source_rgb(cr, 0.55 * shade, 0.65 * shade, 0.8 * shade);
+    if (f.red)
+      cairo_set_source_rgb(cr, 0.9 * shade, 0.15 * shade, 0.15 * shade);
+    else
+      cairo_set_source_rgb(cr, 0.55 * shade, 0.65 * shade, 0.8 * shade);
     cairo_fill_preserve(cr);
     cairo_set_source_rgba(cr, 0, 0, 0, 0.15);
     cairo_set_line_width(cr, 0.3 * pixel);
@@ -192,13 +213,16 @@ Raster rasterize_filled(const Scene& scene, const Box3& box, int width, int heig
   set_view(cr.get(), box, width, height);
   cairo_set_source_rgba(cr.get(), 0, 0, 0, 1);
   for (const geometry::Element& e : scene.elements) {
-    const auto* planar = std::get_if<geometry::PlanarShape>(&scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
+    const auto* planar = std::get_if<geometry::PlanarShape>(
+        &scene.shapes.at(static_cast<std::size_t>(e.shape)).geometry);
     if (!planar) continue;
     for (const geometry::Drawable2& d : planar->parts) {
       if (!d.filled()) continue;
       cairo_new_path(cr.get());
       for (const geometry::Path2& path : d.paths) add_path(cr.get(), path, e.position.head<2>());
-      cairo_set_fill_rule(cr.get(), d.fill_rule == geometry::FillRule::evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+      cairo_set_fill_rule(cr.get(), d.fill_rule == geometry::FillRule::evenodd
+                                        ? CAIRO_FILL_RULE_EVEN_ODD
+                                        : CAIRO_FILL_RULE_WINDING);
       cairo_fill(cr.get());
     }
   }
@@ -211,15 +235,17 @@ Raster rasterize_filled(const Scene& scene, const Box3& box, int width, int heig
   const unsigned char* data = cairo_image_surface_get_data(surface.get());
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      raster.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
-          static_cast<float>(data[y * stride + x] / 255.0);
+      raster.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(x)] = static_cast<float>(data[y * stride + x] / 255.0);
   return raster;
 }
 
-void write_png(const Scene& scene, const std::filesystem::path& path, const RenderOptions& options) {
+void write_png(const Scene& scene, const std::filesystem::path& path,
+               const RenderOptions& options) {
   Box3 box = scene.window;
   if (box.isEmpty()) {
-    for (std::size_t i = 0; i < scene.elements.size(); ++i) box.extend(geometry::bounding_box(scene.placed_shape(i)));
+    for (std::size_t i = 0; i < scene.elements.size(); ++i)
+      box.extend(geometry::bounding_box(scene.placed_shape(i)));
   }
   const Vec3 size = box.sizes();
   const double longest = std::max(size.x(), size.y());
@@ -233,12 +259,16 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
   cairo_paint(cr.get());
   set_view(cr.get(), box, width, height);
   const double pixel = 1.0 / scale;
-  if (scene.dimension == 3) draw_3d(cr.get(), scene, options, pixel); else draw_2d(cr.get(), scene, options, pixel);
+  if (scene.dimension == 3)
+    draw_3d(cr.get(), scene, options, pixel);
+  else
+    draw_2d(cr.get(), scene, options, pixel);
   // Highlighted elements also get a red ring, visible whatever their own colours.
   for (std::size_t i = 0; i < scene.elements.size() && i < options.highlight.size(); ++i) {
     if (!options.highlight[i]) continue;
     const geometry::Element& e = scene.elements[i];
-    const Box3 shape_box = geometry::bounding_box(scene.shapes.at(static_cast<std::size_t>(e.shape)));
+    const Box3 shape_box =
+        geometry::bounding_box(scene.shapes.at(static_cast<std::size_t>(e.shape)));
     const double radius = 0.5 * shape_box.sizes().head<2>().norm() + 4 * pixel;
     cairo_new_path(cr.get());
     cairo_arc(cr.get(), e.position.x(), e.position.y(), radius, 0, 2 * core::kPi);
@@ -254,9 +284,12 @@ void write_png(const Scene& scene, const std::filesystem::path& path, const Rend
   }
   cairo_surface_flush(surface.get());
   std::ostringstream bytes;
-  const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &bytes);
-  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
-  const std::string png = options.text.empty() ? bytes.str() : add_png_text(bytes.str(), options.text);
+  const cairo_status_t status =
+      cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &bytes);
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
+  const std::string png =
+      options.text.empty() ? bytes.str() : add_png_text(bytes.str(), options.text);
   core::write_file_atomically(path, [&](std::ostream& out) { out << png; });
 }
 

@@ -13,18 +13,21 @@ namespace shapeproc::render {
 
 // The filled shapes of a 2D scene (each element's shape placed, by its fill rule) drawn white on
 // black over `box`, at width x height pixels, antialiased.
-geometry::Raster rasterize_filled(const geometry::Scene& scene, const geometry::Box3& box, int width, int height);
+geometry::Raster rasterize_filled(const geometry::Scene& scene, const geometry::Box3& box,
+                                  int width, int height);
 
 struct RenderOptions {
-  int long_side = 800;                // pixels along the longer side of the window
-  double scale = 0.0;                 // pixels per unit length; when positive, replaces long_side
-  std::vector<bool> highlight;        // per element: draw in red with a red ring (collisions); may be empty
-  bool draw_window = true;            // the window's outline, in grey
-  PngText text;                       // tEXt chunks (seed, command); none when empty
+  int long_side = 800;  // pixels along the longer side of the window
+  double scale = 0.0;   // pixels per unit length; when positive, replaces long_side
+  std::vector<bool>
+      highlight;            // per element: draw in red with a red ring (collisions); may be empty
+  bool draw_window = true;  // the window's outline, in grey
+  PngText text;             // tEXt chunks (seed, command); none when empty
 };
 
 // Renders a scene to a PNG, written atomically: 2D with each drawable's style (fill, stroke,
 // opacity), 3D as an orthographic view along −z with a painter's algorithm and flat shading.
-void write_png(const geometry::Scene& scene, const std::filesystem::path& path, const RenderOptions& options = {});
+void write_png(const geometry::Scene& scene, const std::filesystem::path& path,
+               const RenderOptions& options = {});
 
 }  // namespace shapeproc::render

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "libshapeproc/core/atomic_file.hpp"
-#include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/render/raster.hpp"
 
 namespace shapeproc::report {
@@ -16,9 +16,12 @@ namespace shapeproc::report {
 namespace {
 
 const char* const kExemplarColour = "#222222";
-const char* const kOutputColours[] = {"#d95f02", "#1b9e77", "#7570b3", "#e7298a", "#66a61e", "#e6ab02"};
+const char* const kOutputColours[] = {"#d95f02", "#1b9e77", "#7570b3",
+                                      "#e7298a", "#66a61e", "#e6ab02"};
 
-std::string output_colour(std::size_t i) { return kOutputColours[i % (sizeof kOutputColours / sizeof *kOutputColours)]; }
+std::string output_colour(std::size_t i) {
+  return kOutputColours[i % (sizeof kOutputColours / sizeof *kOutputColours)];
+}
 
 // The page is well-formed XML (XHTML syntax), so that it can be checked by an XML parser.
 std::string escape(const std::string& text) { return io::xml_escape(text); }
@@ -37,29 +40,32 @@ struct Series {
 };
 
 // A line chart as inline SVG, axes from 0 to x_max and y_min to y_max.
-std::string chart(const std::string& title, const std::string& x_label, double x_max, double y_min, double y_max,
-                  const std::vector<Series>& series, const std::vector<double>& reference_lines = {}) {
+std::string chart(const std::string& title, const std::string& x_label, double x_max, double y_min,
+                  double y_max, const std::vector<Series>& series,
+                  const std::vector<double>& reference_lines = {}) {
   const double w = 300, h = 200, left = 44, right = 10, top = 24, bottom = 34;
   const double pw = w - left - right, ph = h - top - bottom;
   auto X = [&](double x) { return left + pw * x / x_max; };
   auto Y = [&](double y) { return top + ph * (1.0 - (y - y_min) / (y_max - y_min)); };
   std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" viewBox=\"0 0 " << w << ' '
-    << h << "\" font-family=\"sans-serif\" font-size=\"10\">";
-  s << "<text x=\"" << left << "\" y=\"14\" font-size=\"12\" font-weight=\"bold\">" << escape(title) << "</text>";
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h
+    << "\" viewBox=\"0 0 " << w << ' ' << h << "\" font-family=\"sans-serif\" font-size=\"10\">";
+  s << "<text x=\"" << left << "\" y=\"14\" font-size=\"12\" font-weight=\"bold\">" << escape(title)
+    << "</text>";
   s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
     << "\" fill=\"none\" stroke=\"#999\"/>";
   for (int k = 0; k <= 4; ++k) {
     const double x = x_max * k / 4, y = y_min + (y_max - y_min) * k / 4;
-    s << "<text x=\"" << num(X(x), 5) << "\" y=\"" << num(top + ph + 12, 5) << "\" text-anchor=\"middle\">" << num(x, 3)
-      << "</text>";
-    s << "<text x=\"" << left - 4 << "\" y=\"" << num(Y(y) + 3, 5) << "\" text-anchor=\"end\">" << num(y, 3) << "</text>";
+    s << "<text x=\"" << num(X(x), 5) << "\" y=\"" << num(top + ph + 12, 5)
+      << "\" text-anchor=\"middle\">" << num(x, 3) << "</text>";
+    s << "<text x=\"" << left - 4 << "\" y=\"" << num(Y(y) + 3, 5) << "\" text-anchor=\"end\">"
+      << num(y, 3) << "</text>";
   }
-  s << "<text x=\"" << num(left + pw / 2, 5) << "\" y=\"" << h - 4 << "\" text-anchor=\"middle\">" << escape(x_label)
-    << "</text>";
+  s << "<text x=\"" << num(left + pw / 2, 5) << "\" y=\"" << h - 4 << "\" text-anchor=\"middle\">"
+    << escape(x_label) << "</text>";
   for (const double y : reference_lines) {
-    s << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << num(Y(y), 5) << "\" y2=\"" << num(Y(y), 5)
-      << "\" stroke=\"#bbb\" stroke-dasharray=\"3 3\"/>";
+    s << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << num(Y(y), 5)
+      << "\" y2=\"" << num(Y(y), 5) << "\" stroke=\"#bbb\" stroke-dasharray=\"3 3\"/>";
   }
   for (const Series& line : series) {
     s << "<polyline fill=\"none\" stroke=\"" << line.colour << "\" stroke-width=\"1.5\""
@@ -74,7 +80,8 @@ std::string chart(const std::string& title, const std::string& x_label, double x
   return s.str();
 }
 
-Series cdf_series(const std::string& label, const std::string& colour, const metrics::Distribution& d, double range) {
+Series cdf_series(const std::string& label, const std::string& colour,
+                  const metrics::Distribution& d, double range) {
   Series s{label, colour, {}, false};
   if (d.empty()) return s;
   // A step function: a point just before and at each jump, on a fine grid.
@@ -88,9 +95,11 @@ Series cdf_series(const std::string& label, const std::string& colour, const met
 
 std::string legend(const Report& report) {
   std::ostringstream s;
-  s << "<p class=\"legend\"><span style=\"color:" << kExemplarColour << "\">■</span> exemplar " << escape(report.exemplar.label);
+  s << "<p class=\"legend\"><span style=\"color:" << kExemplarColour << "\">■</span> exemplar "
+    << escape(report.exemplar.label);
   for (std::size_t i = 0; i < report.outputs.size(); ++i) {
-    s << " &#160; <span style=\"color:" << output_colour(i) << "\">■</span> " << escape(report.outputs[i].label);
+    s << " &#160; <span style=\"color:" << output_colour(i) << "\">■</span> "
+      << escape(report.outputs[i].label);
   }
   s << "</p>";
   return s.str();
@@ -102,7 +111,8 @@ std::string strip_xml_declaration(const std::string& svg) {
 }
 
 void require(const ReportScene& s) {
-  if (!s.scene || !s.statistics) throw std::invalid_argument("report: a scene or its statistics are missing");
+  if (!s.scene || !s.statistics)
+    throw std::invalid_argument("report: a scene or its statistics are missing");
 }
 
 }  // namespace
@@ -141,14 +151,18 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   const std::string unit = report.exemplar.scene->units;
   const std::string area = unit + (ex.dimension == 2 ? "²" : "³");
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
+  html << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
+          "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
        << "<title>shapeproc report: " << escape(report.exemplar.label) << "</title>\n<style>\n"
        << "body { font-family: sans-serif; margin: 2em; color: #222; max-width: 1400px; }\n"
        << "figure { display: inline-block; vertical-align: top; margin: 0 1.5em 1em 0; }\n"
        << "figcaption { font-size: 90%; color: #444; max-width: 840px; }\n"
-       << "table { border-collapse: collapse; font-size: 90%; } td, th { border-bottom: 1px solid #ddd; padding: 3px 10px; text-align: right; }\n"
-       << "th:first-child, td:first-child { text-align: left; } .charts svg { margin: 0 1em 1em 0; }\n"
-       << ".bad { color: #c00; font-weight: bold; } .legend { font-size: 90%; } code { font-size: 90%; }\n"
+       << "table { border-collapse: collapse; font-size: 90%; } td, th { border-bottom: 1px solid "
+          "#ddd; padding: 3px 10px; text-align: right; }\n"
+       << "th:first-child, td:first-child { text-align: left; } .charts svg { margin: 0 1em 1em 0; "
+          "}\n"
+       << ".bad { color: #c00; font-weight: bold; } .legend { font-size: 90%; } code { font-size: "
+          "90%; }\n"
        << "</style>\n</head>\n<body>\n";
   html << "<h1>" << escape(report.exemplar.label) << " and " << report.outputs.size() << " output"
        << (report.outputs.size() == 1 ? "" : "s") << "</h1>\n";
@@ -158,10 +172,13 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
        << "); elements in a collision (shape distance 0) are drawn in red.</p>\n";
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const metrics::SceneStatistics& s = *scenes[i]->statistics;
-    html << "<figure><img src=\"" << pictures[i] << "\" alt=\"" << escape(scenes[i]->label) << "\"/><figcaption>"
-         << (i == 0 ? "exemplar " : "output ") << escape(scenes[i]->label) << ": " << s.elements() << " elements, "
-         << (s.collisions.pairs.empty() ? std::string("no collisions")
-                                        : "<span class=\"bad\">" + std::to_string(s.collisions.pairs.size()) + " colliding pairs</span>");
+    html << "<figure><img src=\"" << pictures[i] << "\" alt=\"" << escape(scenes[i]->label)
+         << "\"/><figcaption>" << (i == 0 ? "exemplar " : "output ") << escape(scenes[i]->label)
+         << ": " << s.elements() << " elements, "
+         << (s.collisions.pairs.empty()
+                 ? std::string("no collisions")
+                 : "<span class=\"bad\">" + std::to_string(s.collisions.pairs.size()) +
+                       " colliding pairs</span>");
     if (!scenes[i]->note.empty()) html << "<br/>" << escape(scenes[i]->note);
     html << "</figcaption></figure>\n";
   }
@@ -172,54 +189,71 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   html << "</tr>\n";
   auto row = [&](const std::string& name, auto value) {
     html << "<tr><td>" << name << "</td>";
-    for (std::size_t i = 0; i < scenes.size(); ++i) html << "<td>" << value(*scenes[i], i) << "</td>";
+    for (std::size_t i = 0; i < scenes.size(); ++i)
+      html << "<td>" << value(*scenes[i], i) << "</td>";
     html << "</tr>\n";
   };
-  row("elements", [](const ReportScene& s, std::size_t) { return std::to_string(s.statistics->elements()); });
+  row("elements",
+      [](const ReportScene& s, std::size_t) { return std::to_string(s.statistics->elements()); });
   row("boundary", [](const ReportScene& s, std::size_t) {
     const metrics::SceneStatistics& t = *s.statistics;
-    return std::string(t.periodic ? "torus" : t.edge == metrics::EdgeTreatment::border ? "open, border-corrected" : "open");
+    return std::string(t.periodic                                 ? "torus"
+                       : t.edge == metrics::EdgeTreatment::border ? "open, border-corrected"
+                                                                  : "open");
   });
   for (std::size_t c = 0; c < ex.categories.size(); ++c) {
-    row("intensity " + escape(ex.categories[c]) + " (per " + escape(area) + ")", [&](const ReportScene& s, std::size_t) {
-      const metrics::SceneStatistics& t = *s.statistics;
-      for (std::size_t k = 0; k < t.categories.size(); ++k) {
-        if (t.categories[k] == ex.categories[c]) {
-          std::string text = num(t.intensity[k]);
-          if (s.comparison) text += " (×" + num(s.comparison->intensity_ratio[k], 3) + ")";
-          return text;
-        }
-      }
-      return std::string("–");
-    });
+    row("intensity " + escape(ex.categories[c]) + " (per " + escape(area) + ")",
+        [&](const ReportScene& s, std::size_t) {
+          const metrics::SceneStatistics& t = *s.statistics;
+          for (std::size_t k = 0; k < t.categories.size(); ++k) {
+            if (t.categories[k] == ex.categories[c]) {
+              std::string text = num(t.intensity[k]);
+              if (s.comparison) text += " (×" + num(s.comparison->intensity_ratio[k], 3) + ")";
+              return text;
+            }
+          }
+          return std::string("–");
+        });
   }
   row("collisions: pairs / elements", [](const ReportScene& s, std::size_t) {
     const metrics::Collisions& c = s.statistics->collisions;
-    const std::string text = std::to_string(c.pairs.size()) + " / " + std::to_string(c.elements) + " (" +
-                             num(100.0 * c.elements / std::max(1, s.statistics->elements()), 3) + "%)";
+    const std::string text =
+        std::to_string(c.pairs.size()) + " / " + std::to_string(c.elements) + " (" +
+        num(100.0 * c.elements / std::max(1, s.statistics->elements()), 3) + "%)";
     return c.pairs.empty() ? text : "<span class=\"bad\">" + text + "</span>";
   });
-  row("mean nearest distance (" + escape(unit) + ")", [](const ReportScene& s, std::size_t) { return num(s.statistics->mean_nearest()); });
-  row("neighbours within R", [](const ReportScene& s, std::size_t) { return num(s.statistics->all.neighbours, 3); });
-  row("W1 nearest, all directions", [](const ReportScene& s, std::size_t) { return s.comparison ? num(s.comparison->all.nearest, 3) : std::string("0"); });
+  row("mean nearest distance (" + escape(unit) + ")",
+      [](const ReportScene& s, std::size_t) { return num(s.statistics->mean_nearest()); });
+  row("neighbours within R",
+      [](const ReportScene& s, std::size_t) { return num(s.statistics->all.neighbours, 3); });
+  row("W1 nearest, all directions", [](const ReportScene& s, std::size_t) {
+    return s.comparison ? num(s.comparison->all.nearest, 3) : std::string("0");
+  });
   row("W1 nearest, worst axis", [](const ReportScene& s, std::size_t) {
     if (!s.comparison) return std::string("0");
     double worst = 0.0;
-    for (const auto& a : s.comparison->axes) worst = std::max(worst, std::isfinite(a.nearest) ? a.nearest : 0.0);
+    for (const auto& a : s.comparison->axes)
+      worst = std::max(worst, std::isfinite(a.nearest) ? a.nearest : 0.0);
     return num(worst, 3);
   });
-  row("W1 pair distances, all directions", [](const ReportScene& s, std::size_t) { return s.comparison ? num(s.comparison->all.pairs, 3) : std::string("0"); });
+  row("W1 pair distances, all directions", [](const ReportScene& s, std::size_t) {
+    return s.comparison ? num(s.comparison->all.pairs, 3) : std::string("0");
+  });
   row("neighbourhood distance (a²)", [](const ReportScene& s, std::size_t) {
     return s.neighbourhood ? num(s.neighbourhood->normalised, 3) : std::string("0");
   });
-  html << "</table>\n<p>Distances are shape distances between proxies up to R = " << num(ex.range) << ' ' << escape(unit)
-       << " (the exemplar's mean spacing a). W1: Wasserstein-1 distance to the exemplar's distribution divided by the "
-          "exemplar's mean nearest distance. Neighbourhood distance: Davison et al. eq. 5 with Ma et al.'s eq. 1, "
+  html << "</table>\n<p>Distances are shape distances between proxies up to R = " << num(ex.range)
+       << ' ' << escape(unit)
+       << " (the exemplar's mean spacing a). W1: Wasserstein-1 distance to the exemplar's "
+          "distribution divided by the "
+          "exemplar's mean nearest distance. Neighbourhood distance: Davison et al. eq. 5 with Ma "
+          "et al.'s eq. 1, "
           "divided by a². See docs/metrics.md.</p>\n";
 
   if (report.model) {
     html << "<h2>Interaction function</h2>\n<p>" << escape(report.model_label)
-         << ": γ per axis and distance band (black: hard core, red: repulsion, blue: attraction).</p>\n"
+         << ": γ per axis and distance band (black: hard core, red: repulsion, blue: "
+            "attraction).</p>\n"
          << strip_xml_declaration(render::interaction_plot_svg(*report.model)) << '\n';
   }
 
@@ -228,30 +262,39 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   auto all_series = [&](auto pick) {
     std::vector<Series> series{cdf_series("exemplar", kExemplarColour, pick(ex), range)};
     for (std::size_t i = 0; i < report.outputs.size(); ++i) {
-      series.push_back(cdf_series(report.outputs[i].label, output_colour(i), pick(*report.outputs[i].statistics), range));
+      series.push_back(cdf_series(report.outputs[i].label, output_colour(i),
+                                  pick(*report.outputs[i].statistics), range));
     }
     return series;
   };
   html << chart("G(r): nearest neighbour", "shape distance r (" + unit + ")", range, 0, 1,
-                all_series([](const metrics::SceneStatistics& s) -> const metrics::Distribution& { return s.all.nearest; }));
+                all_series([](const metrics::SceneStatistics& s) -> const metrics::Distribution& {
+                  return s.all.nearest;
+                }));
   html << chart("pair distances below R", "shape distance r (" + unit + ")", range, 0, 1,
-                all_series([](const metrics::SceneStatistics& s) -> const metrics::Distribution& { return s.all.pairs; }));
+                all_series([](const metrics::SceneStatistics& s) -> const metrics::Distribution& {
+                  return s.all.pairs;
+                }));
   {
     std::vector<Series> series;
     double top = 2.0;
-    auto g_series = [&](const std::string& label, const std::string& colour, const metrics::SceneStatistics& s) {
+    auto g_series = [&](const std::string& label, const std::string& colour,
+                        const metrics::SceneStatistics& s) {
       Series line{label, colour, {}, false};
       for (std::size_t k = 0; k < s.correlation.size(); ++k) {
         line.points.emplace_back(s.correlation_r[k], s.correlation[k]);
-        if (std::isfinite(s.correlation[k])) top = std::max(top, std::min(6.0, s.correlation[k] * 1.1));
+        if (std::isfinite(s.correlation[k]))
+          top = std::max(top, std::min(6.0, s.correlation[k] * 1.1));
       }
       return line;
     };
     series.push_back(g_series("exemplar", kExemplarColour, ex));
     for (std::size_t i = 0; i < report.outputs.size(); ++i) {
-      series.push_back(g_series(report.outputs[i].label, output_colour(i), *report.outputs[i].statistics));
+      series.push_back(
+          g_series(report.outputs[i].label, output_colour(i), *report.outputs[i].statistics));
     }
-    html << chart("g(r): pair correlation", "shape distance r (" + unit + ")", range, 0, std::ceil(top), series, {1.0});
+    html << chart("g(r): pair correlation", "shape distance r (" + unit + ")", range, 0,
+                  std::ceil(top), series, {1.0});
   }
   html << "\n</div>\n<h3>Nearest neighbour per axis</h3>\n<div class=\"charts\">\n";
   for (std::size_t k = 0; k < ex.axes.size(); ++k) {
@@ -259,9 +302,11 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     std::string title = "axis " + std::to_string(k) + " (" + num(d.x(), 2) + ", " + num(d.y(), 2);
     if (ex.dimension == 3) title += ", " + num(d.z(), 2);
     title += ")";
-    html << chart(title, "shape distance (" + unit + ")", range, 0, 1, all_series([k](const metrics::SceneStatistics& s) -> const metrics::Distribution& {
-                    return s.axes.at(k).nearest;
-                  }));
+    html << chart(
+        title, "shape distance (" + unit + ")", range, 0, 1,
+        all_series([k](const metrics::SceneStatistics& s) -> const metrics::Distribution& {
+          return s.axes.at(k).nearest;
+        }));
   }
   html << "\n</div>\n";
   if (!report.outputs.empty()) {
@@ -270,7 +315,8 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     html << "</tr>\n";
     for (std::size_t i = 0; i < report.outputs.size(); ++i) {
       html << "<tr><td>output " << i + 1 << "</td>";
-      for (const auto& a : report.outputs[i].comparison->axes) html << "<td>" << num(a.nearest, 3) << " / " << num(a.pairs, 3) << "</td>";
+      for (const auto& a : report.outputs[i].comparison->axes)
+        html << "<td>" << num(a.nearest, 3) << " / " << num(a.pairs, 3) << "</td>";
       html << "</tr>\n";
     }
     html << "</table>\n";
@@ -278,11 +324,14 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
 
   if (!report.timings.empty()) {
     html << "<h2>Timings</h2>\n<table>\n";
-    for (const auto& [stage, seconds] : report.timings) html << "<tr><td>" << escape(stage) << "</td><td>" << num(seconds, 3) << " s</td></tr>\n";
+    for (const auto& [stage, seconds] : report.timings)
+      html << "<tr><td>" << escape(stage) << "</td><td>" << num(seconds, 3) << " s</td></tr>\n";
     html << "</table>\n";
   }
-  html << "<p class=\"legend\">Written by shapeproc " << SHAPEPROC_VERSION << ".</p>\n</body>\n</html>\n";
-  core::write_file_atomically(directory / "index.html", [&](std::ostream& out) { out << html.str(); });
+  html << "<p class=\"legend\">Written by shapeproc " << SHAPEPROC_VERSION
+       << ".</p>\n</body>\n</html>\n";
+  core::write_file_atomically(directory / "index.html",
+                              [&](std::ostream& out) { out << html.str(); });
 }
 
 }  // namespace shapeproc::report

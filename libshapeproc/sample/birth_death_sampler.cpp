@@ -18,20 +18,23 @@ namespace {
 constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
 }  // namespace
 
-ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model, geometry::Domain domain,
-                                         SamplerOptions options)
+ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
+                                         geometry::Domain domain, SamplerOptions options)
     : model_(model), domain_(std::move(domain)), options_(options) {
   model::validate(model_);
   const int dimension = model_.dimension;
   core::check(domain_.dimension() == dimension, "sample",
-              "the domain is " + std::to_string(domain_.dimension()) + "D but the model " + std::to_string(dimension) + "D");
-  core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0, true);
+              "the domain is " + std::to_string(domain_.dimension()) + "D but the model " +
+                  std::to_string(dimension) + "D");
+  core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
+                       true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
 
   shape_space_ = model_.shape_space();
   shape_space_.window = domain_.box();
   interaction_ = std::make_unique<const model::Interaction>(model_);
-  measurer_ = std::make_unique<const geometry::PairMeasurer>(shape_space_, model_.measurement_options(domain_.periodic()));
+  measurer_ = std::make_unique<const geometry::PairMeasurer>(
+      shape_space_, model_.measurement_options(domain_.periodic()));
   double max_radius = 0.0;
   for (std::size_t s = 0; s < shape_space_.shapes.size(); ++s) {
     max_radius = std::max(max_radius, measurer_->radius(static_cast<int>(s)));
@@ -44,14 +47,15 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model, 
     for (auto& list : shapes_of_) list.push_back(0);  // the point shape
   } else {
     for (std::size_t s = 0; s < model_.shapes.size(); ++s) {
-      shapes_of_[static_cast<std::size_t>(model_.shapes[s].category)].push_back(static_cast<int>(s));
+      shapes_of_[static_cast<std::size_t>(model_.shapes[s].category)].push_back(
+          static_cast<int>(s));
     }
   }
   for (const auto& c : model_.categories) log_beta_.push_back(std::log(c.beta));
   log_measure_categories_ = std::log(domain_.measure()) + std::log(static_cast<double>(categories));
-  shift_radius_ = options_.shift_radius > 0       ? options_.shift_radius
-                  : interaction_->range() > 0     ? 0.5 * interaction_->range()
-                                                  : 0.05 * domain_.sizes().head(dimension).minCoeff();
+  shift_radius_ = options_.shift_radius > 0   ? options_.shift_radius
+                  : interaction_->range() > 0 ? 0.5 * interaction_->range()
+                                              : 0.05 * domain_.sizes().head(dimension).minCoeff();
 }
 
 ShapeProcessSampler::~ShapeProcessSampler() = default;
@@ -60,15 +64,20 @@ ShapeProcessSampler::~ShapeProcessSampler() = default;
 class ShapeProcessSampler::Chain {
  public:
   Chain(const ShapeProcessSampler& sampler, core::Random& random)
-      : s_(sampler), random_(random), state_(*sampler.interaction_, *sampler.measurer_, sampler.domain_, sampler.reach_) {}
+      : s_(sampler),
+        random_(random),
+        state_(*sampler.interaction_, *sampler.measurer_, sampler.domain_, sampler.reach_) {}
 
   // One step: with probability p_s a shift, otherwise a birth or a death with equal probability.
   void step() {
     const double move = random_.uniform();
     const double p = s_.options_.shift_probability;
-    if (move < p) propose_shift();
-    else if ((move - p) < 0.5 * (1.0 - p)) propose_birth();
-    else propose_death();
+    if (move < p)
+      propose_shift();
+    else if ((move - p) < 0.5 * (1.0 - p))
+      propose_birth();
+    else
+      propose_death();
   }
 
   void propose_birth() {
@@ -76,11 +85,13 @@ class ShapeProcessSampler::Chain {
     const int n = state_.size();
     Element xi;
     const geometry::Box3& box = s_.domain_.box();
-    for (int axis = 0; axis < s_.model_.dimension; ++axis) xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
+    for (int axis = 0; axis < s_.model_.dimension; ++axis)
+      xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
     xi.category = static_cast<int>(random_.index(s_.shapes_of_.size()));
     const auto& shapes = s_.shapes_of_[static_cast<std::size_t>(xi.category)];
     xi.shape = shapes[random_.index(shapes.size())];
-    const double log_lambda = s_.log_beta_[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
+    const double log_lambda =
+        s_.log_beta_[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
     const double log_ratio = log_lambda + s_.log_measure_categories_ - std::log(n + 1.0);
     if (std::isfinite(log_lambda) && std::log(random_.uniform()) < log_ratio) {
       state_.add(xi, local_term_, links_);
@@ -95,8 +106,10 @@ class ShapeProcessSampler::Chain {
     if (n == 0) return;
     const int slot = state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(n)));
     const Element& x = state_.at(slot);
-    const double log_lambda = s_.log_beta_[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
-    const double log_ratio = std::log(static_cast<double>(n)) - s_.log_measure_categories_ - log_lambda;
+    const double log_lambda =
+        s_.log_beta_[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
+    const double log_ratio =
+        std::log(static_cast<double>(n)) - s_.log_measure_categories_ - log_lambda;
     if (std::log(random_.uniform()) < log_ratio) {
       log_density_ -= log_lambda;
       state_.remove(slot);
@@ -134,7 +147,8 @@ class ShapeProcessSampler::Chain {
     const double radius = s_.shift_radius_;
     Vec3 offset = Vec3::Zero();
     do {
-      for (int axis = 0; axis < s_.model_.dimension; ++axis) offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
+      for (int axis = 0; axis < s_.model_.dimension; ++axis)
+        offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
     } while (offset.squaredNorm() > radius * radius);
     return offset;
   }
@@ -149,7 +163,9 @@ class ShapeProcessSampler::Chain {
       if (!(v > 0.0)) return kMinusInfinity;
       factor = std::log(v);
     }
-    if (domain.mask() && !domain.contains(s_.measurer_->proxies2()[static_cast<std::size_t>(e.shape)], e.position.head<2>())) {
+    if (domain.mask() &&
+        !domain.contains(s_.measurer_->proxies2()[static_cast<std::size_t>(e.shape)],
+                         e.position.head<2>())) {
       return kMinusInfinity;
     }
     return factor;
@@ -161,7 +177,8 @@ class ShapeProcessSampler::Chain {
   double log_lambda_over_beta(const Element& e, int skip) {
     local_term_ = s_.domain_.has_local_factor() ? log_local_factor(e) : 0.0;
     links_.clear();
-    return std::isfinite(local_term_) ? local_term_ + state_.log_interaction(e, skip, links_) : local_term_;
+    return std::isfinite(local_term_) ? local_term_ + state_.log_interaction(e, skip, links_)
+                                      : local_term_;
   }
 
   const ShapeProcessSampler& s_;
@@ -173,12 +190,14 @@ class ShapeProcessSampler::Chain {
   MoveCounts moves_;
 };
 
-SampleResult ShapeProcessSampler::sample(core::Random& random, const synthesis::ChainControl& control) const {
+SampleResult ShapeProcessSampler::sample(core::Random& random,
+                                         const synthesis::ChainControl& control) const {
   Chain chain(*this, random);
   SampleResult result;
   const bool automatic = options_.iterations <= 0;
   const long long total = automatic ? 0 : options_.iterations;
-  const long long progress_every = automatic ? 10000 : std::max<long long>(1, options_.iterations / 100);
+  const long long progress_every =
+      automatic ? 10000 : std::max<long long>(1, options_.iterations / 100);
   StationarityRule rule(options_.max_iterations);
   long long step = 1;
   for (;; ++step) {
@@ -207,7 +226,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random, const synthesis::
   return result;
 }
 
-synthesis::SynthesisResult ShapeProcessSampler::synthesize(core::Random& random, const synthesis::ChainControl& control) const {
+synthesis::SynthesisResult ShapeProcessSampler::synthesize(
+    core::Random& random, const synthesis::ChainControl& control) const {
   SampleResult sampled = sample(random, control);
   synthesis::SynthesisResult out;
   out.scene = std::move(sampled.scene);
@@ -215,7 +235,8 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(core::Random& random,
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
   record.boundary = domain_.boundary();
-  for (int axis = 0; axis < domain_.dimension(); ++axis) record.size.push_back(domain_.sizes()[axis]);
+  for (int axis = 0; axis < domain_.dimension(); ++axis)
+    record.size.push_back(domain_.sizes()[axis]);
   record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius_)}};
@@ -229,8 +250,9 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(core::Random& random,
   return out;
 }
 
-SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                                  const SamplerOptions& options, core::Random& random) {
+SampleResult sample_shape_process(const model::ShapeProcessModel& model,
+                                  const geometry::Domain& domain, const SamplerOptions& options,
+                                  core::Random& random) {
   return ShapeProcessSampler(model, domain, options).sample(random);
 }
 

@@ -3,7 +3,8 @@
 // each step is with probability p_s a shift, otherwise with equal probability a birth or a death:
 // - birth: u uniform in the domain D, category c uniform among the C categories, shape uniform in
 //   S_c; accepted with probability min(1, λ(ξ | x) |D| C / (n + 1));
-// - death: an element chosen uniformly; accepted with probability min(1, n / (|D| C λ(x_i | x \ x_i)));
+// - death: an element chosen uniformly; accepted with probability min(1, n / (|D| C λ(x_i | x
+// \ x_i)));
 // - shift: an element chosen uniformly moves by an offset uniform in a ball of radius ρ (same shape
 //   and category; wrapped on a torus, rejected when it leaves an open domain); the proposal is
 //   symmetric, so it is accepted with probability min(1, λ(x_i' | x \ x_i) / λ(x_i | x \ x_i)) and
@@ -35,10 +36,11 @@ struct SamplerOptions {
   // `max_iterations` (then the result is not stationary).
   long long iterations = 0;
   long long max_iterations = 5'000'000;
-  double shift_probability = 1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
-  double shift_radius = 0.0;             // ρ; 0 = half the model's interaction range (1/20 of the
-                                         // domain's shorter side for a model without interaction)
-  long long trace_every = 0;             // record the state every so many steps (0: no trace)
+  double shift_probability =
+      1.0 / 3.0;              // share of steps that shift an element (0: pure birth-death)
+  double shift_radius = 0.0;  // ρ; 0 = half the model's interaction range (1/20 of the
+                              // domain's shorter side for a model without interaction)
+  long long trace_every = 0;  // record the state every so many steps (0: no trace)
 };
 
 // How often each move was proposed and accepted.
@@ -63,11 +65,13 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
  public:
   // Throws core::ArgumentError for an invalid model, a mask or intensity map on a 3D domain, a
   // domain of another dimension than the model's, or options out of range.
-  ShapeProcessSampler(const model::ShapeProcessModel& model, geometry::Domain domain, SamplerOptions options = {});
+  ShapeProcessSampler(const model::ShapeProcessModel& model, geometry::Domain domain,
+                      SamplerOptions options = {});
   ~ShapeProcessSampler() override;
 
   std::string method() const override { return "shape-process"; }
-  synthesis::SynthesisResult synthesize(core::Random& random, const synthesis::ChainControl& control) const override;
+  synthesis::SynthesisResult synthesize(core::Random& random,
+                                        const synthesis::ChainControl& control) const override;
   SampleResult sample(core::Random& random, const synthesis::ChainControl& control = {}) const;
 
   const geometry::Domain& domain() const { return domain_; }
@@ -90,7 +94,8 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
 };
 
 // One chain on `domain`, for one-off use.
-SampleResult sample_shape_process(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                                  const SamplerOptions& options, core::Random& random);
+SampleResult sample_shape_process(const model::ShapeProcessModel& model,
+                                  const geometry::Domain& domain, const SamplerOptions& options,
+                                  core::Random& random);
 
 }  // namespace shapeproc::sample

@@ -6,8 +6,9 @@
 
 namespace shapeproc::sample {
 
-Configuration::Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
-                             const geometry::Domain& domain, double reach)
+Configuration::Configuration(const model::Interaction& interaction,
+                             const geometry::PairMeasurer& measurer, const geometry::Domain& domain,
+                             double reach)
     : interaction_(interaction),
       measurer_(measurer),
       grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
@@ -29,15 +30,16 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
     // Shape distances are at least the reference positions' distance minus both radii (t is
     // the nearest image in every coordinate, so no other image is nearer).
     const double squared = t.squaredNorm();
-    const double far =
-        interaction_.max_range(xi.category, other.category) + measurer_.radius(xi.shape) + measurer_.radius(other.shape);
+    const double far = interaction_.max_range(xi.category, other.category) +
+                       measurer_.radius(xi.shape) + measurer_.radius(other.shape);
     if (shape_distances_ && squared >= far * far) return;
     candidates_.emplace_back(squared, slot);
   });
   std::sort(candidates_.begin(), candidates_.end());
   bool forbidden = false;
   for (const auto& [squared, slot] : candidates_) {
-    const model::PairEffect effect = model::pair_distance_effect(interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
+    const model::PairEffect effect = model::pair_distance_effect(
+        interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
     if (effect.band == model::Interaction::kHardCore) {
       forbidden = true;
       break;
@@ -49,9 +51,11 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
   for (auto& [slot, effect] : near_) {
     const Element& other = elements_[static_cast<std::size_t>(slot)];
     model::decide_axis(interaction_, measurer_, xi, other, effect);
-    if (effect.band == model::Interaction::kHardCore) return -std::numeric_limits<double>::infinity();
+    if (effect.band == model::Interaction::kHardCore)
+      return -std::numeric_limits<double>::infinity();
     if (effect.band >= 0) {
-      const double value = interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
+      const double value =
+          interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
       links.push_back({slot, value});
       total += value;
     }
@@ -90,7 +94,8 @@ void Configuration::remove(int slot) {
   free_.push_back(slot);
 }
 
-void Configuration::move(int slot, const Vec3& position, double local, const std::vector<Link>& links) {
+void Configuration::move(int slot, const Vec3& position, double local,
+                         const std::vector<Link>& links) {
   Element& e = elements_[static_cast<std::size_t>(slot)];
   grid_.remove(slot, e.position);
   e.position = position;
@@ -110,13 +115,15 @@ std::vector<Element> Configuration::elements() const {
 void Configuration::link(int slot, double local, const std::vector<Link>& links) {
   local_[static_cast<std::size_t>(slot)] = local;
   links_[static_cast<std::size_t>(slot)] = links;
-  for (const Link& l : links) links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.log_gamma});
+  for (const Link& l : links)
+    links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.log_gamma});
 }
 
 void Configuration::unlink(int slot) {
   for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
     std::vector<Link>& back = links_[static_cast<std::size_t>(l.slot)];
-    const auto it = std::find_if(back.begin(), back.end(), [&](const Link& b) { return b.slot == slot; });
+    const auto it =
+        std::find_if(back.begin(), back.end(), [&](const Link& b) { return b.slot == slot; });
     *it = back.back();
     back.pop_back();
   }

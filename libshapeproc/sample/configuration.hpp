@@ -72,8 +72,10 @@ class Configuration {
   std::vector<double> local_;             // per slot: log of the local factor of β
   const geometry::Domain& domain_;
   bool shape_distances_ = true;
-  mutable std::vector<std::pair<double, int>> candidates_;       // scratch of log_interaction: (squared distance, slot)
-  mutable std::vector<std::pair<int, model::PairEffect>> near_;  // scratch of log_interaction: (slot, effect in range)
+  mutable std::vector<std::pair<double, int>>
+      candidates_;  // scratch of log_interaction: (squared distance, slot)
+  mutable std::vector<std::pair<int, model::PairEffect>>
+      near_;  // scratch of log_interaction: (slot, effect in range)
 };
 
 }  // namespace shapeproc::sample

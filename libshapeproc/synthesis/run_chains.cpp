@@ -45,8 +45,10 @@ class ProgressSum {
 
 }  // namespace
 
-std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const ChainOptions& options) {
-  core::check(options.chains >= 1, "run_chains", "at least one chain is needed, got " + std::to_string(options.chains));
+std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
+                                        const ChainOptions& options) {
+  core::check(options.chains >= 1, "run_chains",
+              "at least one chain is needed, got " + std::to_string(options.chains));
   core::check(options.threads >= 0, "run_chains", "the thread count must be >= 0");
   const int chains = options.chains;
   std::vector<SynthesisResult> results(static_cast<std::size_t>(chains));
@@ -58,7 +60,10 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const Ch
       const std::size_t index = static_cast<std::size_t>(c);
       ChainControl control;
       control.cancel = options.cancel;
-      if (options.progress) control.progress = [&progress, c](long long done, long long total) { progress.update(c, done, total); };
+      if (options.progress)
+        control.progress = [&progress, c](long long done, long long total) {
+          progress.update(c, done, total);
+        };
       const std::uint64_t seed = chain_seed(options.seed, c);
       core::Random random(seed);
       const auto start = std::chrono::steady_clock::now();
@@ -70,7 +75,8 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const Ch
         record.size = result.record.size;
         if (record.domain_file.empty()) record.domain_file = result.record.domain_file;
         if (record.intensity_file.empty()) record.intensity_file = result.record.intensity_file;
-        record.options.insert(record.options.end(), result.record.options.begin(), result.record.options.end());
+        record.options.insert(record.options.end(), result.record.options.begin(),
+                              result.record.options.end());
         record.iterations = result.record.iterations;
         record.steps = result.record.steps;
         record.stationary = result.record.stationary;
@@ -78,7 +84,8 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const Ch
         record.chain = c + 1;
         record.chains = chains;
         record.chain_seed = seed;
-        record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        record.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         result.record = std::move(record);
         results[index] = std::move(result);
       } catch (...) {
@@ -87,7 +94,8 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const Ch
     }
   };
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int thread_count = std::max(1, std::min(chains, options.threads > 0 ? options.threads : cores));
+  const int thread_count =
+      std::max(1, std::min(chains, options.threads > 0 ? options.threads : cores));
   std::vector<std::thread> pool;
   for (int t = 1; t < thread_count; ++t) pool.emplace_back(worker);
   worker();

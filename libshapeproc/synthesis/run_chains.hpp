@@ -30,6 +30,7 @@ struct ChainOptions {
 
 // Runs the chains; results in chain order. A chain that throws makes run_chains rethrow its
 // exception once every thread has stopped (the first chain's error in chain order).
-std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer, const ChainOptions& options);
+std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
+                                        const ChainOptions& options);
 
 }  // namespace shapeproc::synthesis

@@ -5,7 +5,8 @@
 namespace shapeproc::synthesis {
 
 namespace {
-std::string find(const std::vector<std::pair<std::string, std::string>>& list, const std::string& key) {
+std::string find(const std::vector<std::pair<std::string, std::string>>& list,
+                 const std::string& key) {
   for (const auto& [k, v] : list)
     if (k == key) return v;
   return {};

@@ -14,14 +14,14 @@
 namespace shapeproc::synthesis {
 
 struct SynthesisRecord {
-  std::string method;                    // "shape-process" (later "neighbourhood-em", "growth")
-  std::string command;                   // the subcommand that ran it ("sample", "synthesize")
-  std::vector<std::string> arguments;    // the whole command line
-  std::uint64_t seed = 1;                // the run's seed
-  int chain = 1, chains = 1;             // this output's chain (1-based) of how many
-  std::uint64_t chain_seed = 1;          // the seed this chain drew from (chain 1: the run's seed)
+  std::string method;                  // "shape-process" (later "neighbourhood-em", "growth")
+  std::string command;                 // the subcommand that ran it ("sample", "synthesize")
+  std::vector<std::string> arguments;  // the whole command line
+  std::uint64_t seed = 1;              // the run's seed
+  int chain = 1, chains = 1;           // this output's chain (1-based) of how many
+  std::uint64_t chain_seed = 1;        // the seed this chain drew from (chain 1: the run's seed)
   geometry::Boundary boundary = geometry::Boundary::torus;
-  std::vector<double> size;              // the domain box's sizes (W,H or W,H,D)
+  std::vector<double> size;                 // the domain box's sizes (W,H or W,H,D)
   std::string domain_file, intensity_file;  // where the mask and the intensity map came from
   // Files the run read (("exemplar", path), ("model", path)) and the method's options as text,
   // in a fixed order ("shift_probability" = "0.333..."; nested ones as "fit.quantiles").

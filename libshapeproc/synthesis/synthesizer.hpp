@@ -33,9 +33,9 @@ struct TracePoint {
 };
 
 struct SynthesisResult {
-  geometry::Scene scene;           // the elements made, with the domain's box as window
-  SynthesisRecord record;          // the method's part filled; run_chains adds chain and time
-  std::vector<TracePoint> trace;   // empty unless asked for
+  geometry::Scene scene;          // the elements made, with the domain's box as window
+  SynthesisRecord record;         // the method's part filled; run_chains adds chain and time
+  std::vector<TracePoint> trace;  // empty unless asked for
   // Method-specific counters, in order, for a one-line summary ("births accepted" = "512/20000").
   std::vector<std::pair<std::string, std::string>> counters;
 };

@@ -1,8 +1,8 @@
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "libshapeproc/core/assert.hpp"
 #include "libshapeproc/core/atomic_file.hpp"
@@ -24,10 +24,12 @@ std::string message_of(const std::function<void()>& f) {
 }
 
 TEST(Check, OneMessageFormatNamingFunctionValueAndBound) {
-  EXPECT_EQ(message_of([] { check_positive("fit", "the width", -2.5); }), "fit: the width must be positive, got -2.5");
+  EXPECT_EQ(message_of([] { check_positive("fit", "the width", -2.5); }),
+            "fit: the width must be positive, got -2.5");
   EXPECT_EQ(message_of([] { check_non_negative("sample", "the shift radius", -1); }),
             "sample: the shift radius must be >= 0, got -1");
-  EXPECT_EQ(message_of([] { check_in_range("sample", "p", 1.0, 0.0, 1.0, true); }), "sample: p must be in [0, 1), got 1");
+  EXPECT_EQ(message_of([] { check_in_range("sample", "p", 1.0, 0.0, 1.0, true); }),
+            "sample: p must be in [0, 1), got 1");
   EXPECT_EQ(message_of([] { check(false, "domain", "no room"); }), "domain: no room");
   EXPECT_EQ(message_of([] { check_positive("f", "x", 0.1); }), "");
   EXPECT_EQ(message_of([] { check_in_range("f", "x", 1.0, 0.0, 1.0); }), "");
@@ -44,13 +46,15 @@ TEST(Check, RejectsNotANumberAndInfinity) {
 }
 
 TEST(Check, DescribeReadsBackAsTheSameNumber) {
-  for (double v : {0.1, 1.0 / 3.0, 1e-300, 12345.678, -0.0}) EXPECT_EQ(std::strtod(describe(v).c_str(), nullptr), v);
+  for (double v : {0.1, 1.0 / 3.0, 1e-300, 12345.678, -0.0})
+    EXPECT_EQ(std::strtod(describe(v).c_str(), nullptr), v);
   EXPECT_EQ(describe(0.1), "0.1");
 }
 
 TEST(Assert, ThrowsAnInternalErrorNamingFileLineAndCondition) {
   const int n = 3;
-  const std::string what = message_of([&] { SHAPEPROC_ASSERT(n == 4, "n is " + std::to_string(n)); });
+  const std::string what =
+      message_of([&] { SHAPEPROC_ASSERT(n == 4, "n is " + std::to_string(n)); });
   EXPECT_NE(what.find("internal error at "), std::string::npos) << what;
   EXPECT_NE(what.find("core_test.cpp:"), std::string::npos) << what;
   EXPECT_NE(what.find("n == 4 (n is 3)"), std::string::npos) << what;
@@ -107,14 +111,16 @@ TEST(AtomicFile, LeavesNothingHalfWrittenWhenTheWriterThrows) {
   const auto target = dir.file("sub/out.txt");
   write_file_atomically(target, [](std::ostream& out) { out << "first"; });
   EXPECT_EQ(testing::read_file(target), "first");
-  EXPECT_THROW(write_file_atomically(target, [](std::ostream& out) {
-                 out << "second, half";
-                 throw std::runtime_error("stop");
-               }),
+  EXPECT_THROW(write_file_atomically(target,
+                                     [](std::ostream& out) {
+                                       out << "second, half";
+                                       throw std::runtime_error("stop");
+                                     }),
                std::runtime_error);
   EXPECT_EQ(testing::read_file(target), "first");
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir.file("sub"))) files += entry.is_regular_file();
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("sub")))
+    files += entry.is_regular_file();
   EXPECT_EQ(files, 1);
   EXPECT_THROW(write_file_atomically(dir.path(), [](std::ostream&) {}), UsageError);
 }

@@ -1,10 +1,9 @@
-#include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/core/constants.hpp"
+#include <gtest/gtest.h>
 
 #include <cmath>
 
-#include <gtest/gtest.h>
-
+#include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "tests/test_support.hpp"
@@ -15,8 +14,8 @@ namespace {
 using geometry::Scene;
 using geometry::Vec3;
 
-
-Scene points(const std::vector<Vec3>& positions, const std::vector<int>& categories, const geometry::Box3& window) {
+Scene points(const std::vector<Vec3>& positions, const std::vector<int>& categories,
+             const geometry::Box3& window) {
   Scene scene;
   scene.window = window;
   scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
@@ -44,7 +43,9 @@ TEST(Quantile, LinearInterpolationBetweenOrderStatistics) {
 }
 
 TEST(Fit, NoInteractionBandsGiveBetaNOverW) {
-  const Scene scene = points({{0.1, 0.2, 0}, {0.5, 0.5, 0}, {0.9, 0.3, 0}, {0.3, 0.8, 0}, {0.7, 0.1, 0}}, {0, 0, 1, 1, 1}, kUnit);
+  const Scene scene =
+      points({{0.1, 0.2, 0}, {0.5, 0.5, 0}, {0.9, 0.3, 0}, {0.3, 0.8, 0}, {0.7, 0.1, 0}},
+             {0, 0, 1, 1, 1}, kUnit);
   FitOptions options;
   options.thresholds = {0.0};  // hard core at 0, no band
   options.quadrature = 8;
@@ -54,7 +55,8 @@ TEST(Fit, NoInteractionBandsGiveBetaNOverW) {
   // The same on a shipped exemplar with shapes.
   const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
   const FitResult shapes = fit_shape_process(dots, options);
-  EXPECT_NEAR(shapes.model.categories[0].beta, 30.0 / dots.window_measure(), 1e-12 * 30.0 / dots.window_measure());
+  EXPECT_NEAR(shapes.model.categories[0].beta, 30.0 / dots.window_measure(),
+              1e-12 * 30.0 / dots.window_measure());
 }
 
 // Strauss process on three points in the unit square: the exact LPL needs the areas covered by
@@ -133,20 +135,26 @@ class Invariance : public ::testing::Test {
 };
 
 TEST_F(Invariance, TranslationChangesNothing) {
-  const FitResult moved = fit_shape_process(transformed(exemplar, Eigen::Matrix2d::Identity(), Vec3(1000.25, -500.5, 0)), options);
+  const FitResult moved = fit_shape_process(
+      transformed(exemplar, Eigen::Matrix2d::Identity(), Vec3(1000.25, -500.5, 0)), options);
   EXPECT_NEAR(moved.model.categories[0].beta / reference.model.categories[0].beta, 1.0, 1e-6);
   const auto a = gammas(reference), b = gammas(moved);
-  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6 * std::max(1.0, a[k])) << k;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    EXPECT_NEAR(a[k], b[k], 1e-6 * std::max(1.0, a[k])) << k;
 }
 
 TEST_F(Invariance, ScalingScalesThresholdsAndBeta) {
-  const FitResult scaled = fit_shape_process(transformed(exemplar, 2.0 * Eigen::Matrix2d::Identity(), Vec3::Zero()), options);
-  EXPECT_NEAR(scaled.model.categories[0].beta * 4.0 / reference.model.categories[0].beta, 1.0, 1e-6);
+  const FitResult scaled = fit_shape_process(
+      transformed(exemplar, 2.0 * Eigen::Matrix2d::Identity(), Vec3::Zero()), options);
+  EXPECT_NEAR(scaled.model.categories[0].beta * 4.0 / reference.model.categories[0].beta, 1.0,
+              1e-6);
   for (std::size_t i = 0; i < reference.model.interactions[0].axes.size(); ++i) {
     const auto& a = reference.model.interactions[0].axes[i];
     const auto& b = scaled.model.interactions[0].axes[i];
-    for (std::size_t k = 0; k < a.thresholds.size(); ++k) EXPECT_NEAR(b.thresholds[k], 2 * a.thresholds[k], 1e-9 * b.thresholds[k]);
-    for (std::size_t k = 0; k < a.gammas.size(); ++k) EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k]));
+    for (std::size_t k = 0; k < a.thresholds.size(); ++k)
+      EXPECT_NEAR(b.thresholds[k], 2 * a.thresholds[k], 1e-9 * b.thresholds[k]);
+    for (std::size_t k = 0; k < a.gammas.size(); ++k)
+      EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k]));
   }
 }
 
@@ -158,8 +166,10 @@ TEST_F(Invariance, QuarterTurnPermutesTheAxes) {
   for (int i = 0; i < 4; ++i) {
     const auto& a = reference.model.interactions[0].axes[static_cast<std::size_t>(i)];
     const auto& b = turned.model.interactions[0].axes[static_cast<std::size_t>((i + 2) % 4)];
-    for (std::size_t k = 0; k < a.thresholds.size(); ++k) EXPECT_NEAR(a.thresholds[k], b.thresholds[k], 1e-9 * std::max(1.0, a.thresholds[k]));
-    for (std::size_t k = 0; k < a.gammas.size(); ++k) EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k])) << i << " " << k;
+    for (std::size_t k = 0; k < a.thresholds.size(); ++k)
+      EXPECT_NEAR(a.thresholds[k], b.thresholds[k], 1e-9 * std::max(1.0, a.thresholds[k]));
+    for (std::size_t k = 0; k < a.gammas.size(); ++k)
+      EXPECT_NEAR(a.gammas[k], b.gammas[k], 1e-6 * std::max(1.0, a.gammas[k])) << i << " " << k;
   }
 }
 
@@ -173,7 +183,8 @@ TEST(FitSpecialCases, TinyAndDegenerateExemplarsGiveClearResults) {
   ASSERT_FALSE(one.notes.empty());
   EXPECT_NE(one.notes[0].find("Poisson"), std::string::npos);
   // Two elements: still too few pairs for quantiles.
-  const FitResult two = fit_shape_process(points({{0.2, 0.5, 0}, {0.8, 0.5, 0}}, {0, 0}, kUnit), options);
+  const FitResult two =
+      fit_shape_process(points({{0.2, 0.5, 0}, {0.8, 0.5, 0}}, {0, 0}, kUnit), options);
   EXPECT_TRUE(two.model.interactions.empty());
   // All pairs along one direction (a row): fits, empty axes pooled, no NaN.
   std::vector<Vec3> row;
@@ -182,10 +193,15 @@ TEST(FitSpecialCases, TinyAndDegenerateExemplarsGiveClearResults) {
   EXPECT_TRUE(std::isfinite(line.log_pseudo_likelihood));
   EXPECT_FALSE(line.notes.empty());
   // A category with one element beside a category of six.
-  const FitResult lonely = fit_shape_process(
-      points({{0.1, 0.1, 0}, {0.4, 0.2, 0}, {0.7, 0.15, 0}, {0.2, 0.6, 0}, {0.6, 0.7, 0}, {0.9, 0.8, 0}, {0.5, 0.45, 0}},
-             {0, 0, 0, 0, 0, 0, 1}, kUnit),
-      options);
+  const FitResult lonely = fit_shape_process(points({{0.1, 0.1, 0},
+                                                     {0.4, 0.2, 0},
+                                                     {0.7, 0.15, 0},
+                                                     {0.2, 0.6, 0},
+                                                     {0.6, 0.7, 0},
+                                                     {0.9, 0.8, 0},
+                                                     {0.5, 0.45, 0}},
+                                                    {0, 0, 0, 0, 0, 0, 1}, kUnit),
+                                             options);
   EXPECT_EQ(lonely.model.interactions.size(), 3u);
   // One element: a finite intensity (large: the other category's hard cores leave it little room).
   EXPECT_TRUE(std::isfinite(lonely.model.categories[1].beta));
@@ -193,22 +209,27 @@ TEST(FitSpecialCases, TinyAndDegenerateExemplarsGiveClearResults) {
   // Bad options and impossible thresholds throw with a message.
   FitOptions bad = options;
   bad.quantiles = {0.2, 0.1};
-  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), bad), std::invalid_argument);
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), bad),
+               std::invalid_argument);
   FitOptions too_big = options;
   too_big.thresholds = {0.5, 0.6};  // hard core above every observed distance
-  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), too_big), std::invalid_argument);
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), too_big),
+               std::invalid_argument);
   FitOptions border = options;
   border.edge = EdgeTreatment::border;
   border.thresholds = {0.0, 0.6};
-  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), border), std::invalid_argument);
+  EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), border),
+               std::invalid_argument);
 }
 
 TEST(FitSpecialCases, IdenticalShapesAndEdgeTreatments) {
   // Rings tile: every element one circle of a few sizes; identical shapes are fine.
   io::ReaderOptions split;
   split.split_subpaths = true;
-  const Scene bubbles = io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), split);
-  for (const EdgeTreatment edge : {EdgeTreatment::none, EdgeTreatment::periodic, EdgeTreatment::border}) {
+  const Scene bubbles =
+      io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), split);
+  for (const EdgeTreatment edge :
+       {EdgeTreatment::none, EdgeTreatment::periodic, EdgeTreatment::border}) {
     FitOptions options;
     options.quadrature = 12;
     options.edge = edge;
@@ -248,7 +269,8 @@ TEST(FitSpecialCases, CopiesOfAShapeAreIntegratedOnce) {
   EXPECT_LT(2 * once.quadrature_points, each.quadrature_points);  // 3 distinct shapes of 19
   EXPECT_NEAR(once.model.categories[0].beta / each.model.categories[0].beta, 1.0, 1e-3);
   const auto a = gammas(once), b = gammas(each);
-  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-3 * std::max(1.0, a[k])) << k;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    EXPECT_NEAR(a[k], b[k], 1e-3 * std::max(1.0, a[k])) << k;
 }
 
 // The existence check. A packed exemplar (dashes-rows: no room for another dash with the

@@ -1,8 +1,8 @@
 #include "libshapeproc/fit/line_quadrature.hpp"
 
-#include <map>
-
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -18,8 +18,9 @@ using geometry::Vec3;
 // The statistics along a line, by brute force: the conditional intensity's statistic at many
 // points of the line, each standing for its share of the length.
 std::map<std::vector<std::pair<int, int>>, double> sampled(const model::Interaction& interaction,
-                                                           const geometry::PairMeasurer& measurer, const Scene& scene,
-                                                           const Element& dummy, double length, int samples) {
+                                                           const geometry::PairMeasurer& measurer,
+                                                           const Scene& scene, const Element& dummy,
+                                                           double length, int samples) {
   std::map<std::vector<std::pair<int, int>>, double> measure;
   for (int i = 0; i < samples; ++i) {
     Element at = dummy;
@@ -28,7 +29,8 @@ std::map<std::vector<std::pair<int, int>>, double> sampled(const model::Interact
     for (const Element& other : scene.elements) {
       const model::PairEffect effect = model::pair_effect(interaction, measurer, at, other);
       if (effect.band == model::Interaction::kHardCore) counts.hard_core = true;
-      if (effect.band >= 0) counts.add(interaction.parameter(at.category, other.category, effect.axis, effect.band));
+      if (effect.band >= 0)
+        counts.add(interaction.parameter(at.category, other.category, effect.axis, effect.band));
     }
     if (!counts.hard_core) measure[counts.counts] += length / samples;
   }
@@ -61,7 +63,8 @@ TEST_P(LineQuadrature, AgreesWithDenseSamplingAlongRows) {
     dummy.position.y() += (row + 0.37) * scene.window.sizes().y() / 3;
     std::map<std::vector<std::pair<int, int>>, double> exact;
     int transitions = 0;
-    for (const fit::LinePiece& piece : fit::integrate_line(context, 0, dummy.shape, dummy.position, length)) {
+    for (const fit::LinePiece& piece :
+         fit::integrate_line(context, 0, dummy.shape, dummy.position, length)) {
       exact[piece.counts] += piece.length;
       transitions += 2;
     }
@@ -77,7 +80,8 @@ TEST_P(LineQuadrature, AgreesWithDenseSamplingAlongRows) {
       if (std::abs(a - b) > 0.1) {
         std::string name;
         for (auto [p, c] : k) name += std::to_string(p) + "x" + std::to_string(c) + " ";
-        ADD_FAILURE() << "row " << row << " statistic {" << name << "}: line " << a << ", sampled " << b;
+        ADD_FAILURE() << "row " << row << " statistic {" << name << "}: line " << a << ", sampled "
+                      << b;
       }
     }
     EXPECT_LT(total_difference, (transitions + 20) * length / samples) << "row " << row;
@@ -85,7 +89,8 @@ TEST_P(LineQuadrature, AgreesWithDenseSamplingAlongRows) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedExemplars, LineQuadrature,
-                         ::testing::Values("svg/dots-random.svg", "svg/dashes-rows.svg", "svg/crescents-grid.svg"));
+                         ::testing::Values("svg/dots-random.svg", "svg/dashes-rows.svg",
+                                           "svg/crescents-grid.svg"));
 
 }  // namespace
 }  // namespace shapeproc

@@ -1,8 +1,8 @@
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "libshapeproc/core/random.hpp"
 
@@ -22,8 +22,8 @@ TEST(PseudoLikelihood, ExactValueOnATinyDesign) {
   const PseudoLikelihoodDesign d = small_design();
   const std::vector<double> theta = {0.1, -0.3, 0.2};
   const double expected = 5 * 0.1 + 3 * -0.3 + 1 * 0.2 -
-                          (2.0 * std::exp(0.1) + 1.5 * std::exp(0.1 - 0.3) + 0.5 * std::exp(0.1 - 0.6 + 0.2) +
-                           0.25 * std::exp(0.1 + 0.6));
+                          (2.0 * std::exp(0.1) + 1.5 * std::exp(0.1 - 0.3) +
+                           0.5 * std::exp(0.1 - 0.6 + 0.2) + 0.25 * std::exp(0.1 + 0.6));
   EXPECT_NEAR(log_pseudo_likelihood(d, theta), expected, 1e-12);
 }
 
@@ -43,7 +43,8 @@ TEST(PseudoLikelihood, GradientAndHessianMatchFiniteDifferences) {
       up[i] += h;
       down[i] -= h;
       // Central differences: error O(h²) times the third derivative (order 1 here).
-      const double numeric = (log_pseudo_likelihood(d, up) - log_pseudo_likelihood(d, down)) / (2 * h);
+      const double numeric =
+          (log_pseudo_likelihood(d, up) - log_pseudo_likelihood(d, down)) / (2 * h);
       EXPECT_NEAR(gradient[i], numeric, 1e-7) << "parameter " << i;
       std::vector<double> g_up, g_down;
       log_pseudo_likelihood(d, up, &g_up);

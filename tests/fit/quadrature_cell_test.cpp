@@ -1,12 +1,13 @@
 // Cells cut into pieces (2D): each dummy's integral of λ over its cell against many point
 // evaluations spread over the cell, on a shipped exemplar at its fitted parameters.
+#include "libshapeproc/fit/quadrature_cell.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "tests/test_support.hpp"
@@ -30,16 +31,20 @@ struct CellGrid {
         model(m),
         interaction(model),
         measurer(exemplar, model.measurement_options(false)),
-        grid(exemplar.window, 2, interaction.range() + 4 * max_radius() + exemplar.window.sizes().maxCoeff() / cells, false) {
+        grid(exemplar.window, 2,
+             interaction.range() + 4 * max_radius() + exemplar.window.sizes().maxCoeff() / cells,
+             false) {
     const Vec3 sizes = exemplar.window.sizes();
     columns = static_cast<int>(std::lround(sizes.x() / sizes.maxCoeff() * cells));
     rows = static_cast<int>(std::lround(sizes.y() / sizes.maxCoeff() * cells));
     cell = Vec3(sizes.x() / columns, sizes.y() / rows, 0);
-    for (std::size_t k = 0; k < exemplar.elements.size(); ++k) grid.insert(static_cast<int>(k), exemplar.elements[k].position);
+    for (std::size_t k = 0; k < exemplar.elements.size(); ++k)
+      grid.insert(static_cast<int>(k), exemplar.elements[k].position);
   }
   double max_radius() const {
     double r = 0;
-    for (std::size_t s = 0; s < exemplar.shapes.size(); ++s) r = std::max(r, measurer.radius(static_cast<int>(s)));
+    for (std::size_t s = 0; s < exemplar.shapes.size(); ++s)
+      r = std::max(r, measurer.radius(static_cast<int>(s)));
     return r;
   }
   CellContext context() const {
@@ -69,14 +74,16 @@ struct CellGrid {
     for (const geometry::Element& other : exemplar.elements) {
       const model::PairEffect effect = model::pair_effect(interaction, measurer, at, other);
       if (effect.band == model::Interaction::kHardCore) return 0.0;
-      if (effect.band >= 0) counts.add(interaction.parameter(0, other.category, effect.axis, effect.band));
+      if (effect.band >= 0)
+        counts.add(interaction.parameter(0, other.category, effect.axis, effect.band));
     }
     return std::exp(log_lambda(counts.counts));
   }
 };
 
 TEST(CellPieces, IntegralsMatchPointEvaluationsOnDotsRandom) {
-  const geometry::Scene exemplar = io::read_scene(testing::data_path("svg/dots-random.svg"), io::ReaderOptions{});
+  const geometry::Scene exemplar =
+      io::read_scene(testing::data_path("svg/dots-random.svg"), io::ReaderOptions{});
   const FitResult fitted = fit_shape_process(exemplar, FitOptions{});
   const CellGrid grid_of(exemplar, fitted.model, 32);
   const CellContext context = grid_of.context();
@@ -87,7 +94,8 @@ TEST(CellPieces, IntegralsMatchPointEvaluationsOnDotsRandom) {
   int crossed = 0;
   for (int index = 0; index < grid_of.columns * grid_of.rows * shapes; index += 7) {
     const int shape = index % shapes, cell = index / shapes;
-    const geometry::Element e = grid_of.dummy(cell % grid_of.columns, cell / grid_of.columns, shape);
+    const geometry::Element e =
+        grid_of.dummy(cell % grid_of.columns, cell / grid_of.columns, shape);
     bool uniform = true;
     double estimate = 0.0;
     for (const CellPart& part : integrate_cell(context, e, grid_of.cell, &uniform)) {
@@ -97,7 +105,8 @@ TEST(CellPieces, IntegralsMatchPointEvaluationsOnDotsRandom) {
     for (int i = 0; i < kPoints; ++i) {
       for (int j = 0; j < kPoints; ++j) {
         geometry::Element at = e;
-        at.position += Vec3(((i + 0.5) / kPoints - 0.5) * grid_of.cell.x(), ((j + 0.5) / kPoints - 0.5) * grid_of.cell.y(), 0);
+        at.position += Vec3(((i + 0.5) / kPoints - 0.5) * grid_of.cell.x(),
+                            ((j + 0.5) / kPoints - 0.5) * grid_of.cell.y(), 0);
         sampled += grid_of.point(at) / (kPoints * kPoints);
       }
     }
@@ -114,14 +123,16 @@ TEST(CellPieces, IntegralsMatchPointEvaluationsOnDotsRandom) {
 }
 
 TEST(CellPieces, SharedCornersChangeNothing) {
-  const geometry::Scene exemplar = io::read_scene(testing::data_path("svg/two-kinds.svg"), io::ReaderOptions{});
+  const geometry::Scene exemplar =
+      io::read_scene(testing::data_path("svg/two-kinds.svg"), io::ReaderOptions{});
   const FitResult fitted = fit_shape_process(exemplar, FitOptions{});
   const CellGrid grid_of(exemplar, fitted.model, 24);
   const CellContext context = grid_of.context();
   CornerCache cache;
   for (int row = 4; row < 8; ++row) {
     for (int column = 0; column < grid_of.columns; ++column) {
-      const geometry::Element e = grid_of.dummy(column, row, (row * 7 + column) % static_cast<int>(exemplar.shapes.size()));
+      const geometry::Element e =
+          grid_of.dummy(column, row, (row * 7 + column) % static_cast<int>(exemplar.shapes.size()));
       const auto shared = integrate_cell(context, e, grid_of.cell, nullptr, &cache);
       const auto alone = integrate_cell(context, e, grid_of.cell);
       ASSERT_EQ(shared.size(), alone.size());
@@ -140,19 +151,44 @@ TEST(CornerCache, MeasuresEachKeyOnceUntilCleared) {
   const auto key = [](int i) { return CornerCache::Key{i % 7, i % 5, i, -i, i % 3 - 1, 0}; };
   // Enough keys to grow the table several times; distances and angles are kept apart.
   for (int i = 0; i < 5000; ++i) {
-    EXPECT_EQ(cache.distance(key(i), [&] { ++measured; return 0.5 * i; }), 0.5 * i);
-    EXPECT_EQ(cache.angle(key(i), [&] { ++measured; return -1.0 * i; }), -1.0 * i);
+    EXPECT_EQ(cache.distance(key(i),
+                             [&] {
+                               ++measured;
+                               return 0.5 * i;
+                             }),
+              0.5 * i);
+    EXPECT_EQ(cache.angle(key(i),
+                          [&] {
+                            ++measured;
+                            return -1.0 * i;
+                          }),
+              -1.0 * i);
   }
   EXPECT_EQ(measured, 10000);
   for (int i = 0; i < 5000; ++i) {
-    EXPECT_EQ(cache.distance(key(i), [&] { ++measured; return 0.0; }), 0.5 * i);
-    EXPECT_EQ(cache.angle(key(i), [&] { ++measured; return 0.0; }), -1.0 * i);
+    EXPECT_EQ(cache.distance(key(i),
+                             [&] {
+                               ++measured;
+                               return 0.0;
+                             }),
+              0.5 * i);
+    EXPECT_EQ(cache.angle(key(i),
+                          [&] {
+                            ++measured;
+                            return 0.0;
+                          }),
+              -1.0 * i);
   }
   EXPECT_EQ(measured, 10000);
   EXPECT_EQ(cache.size(), 10000u);
   cache.clear();
   EXPECT_EQ(cache.size(), 0u);
-  EXPECT_EQ(cache.distance(key(3), [&] { ++measured; return 7.0; }), 7.0);
+  EXPECT_EQ(cache.distance(key(3),
+                           [&] {
+                             ++measured;
+                             return 7.0;
+                           }),
+            7.0);
   EXPECT_EQ(measured, 10001);
 }
 

@@ -1,8 +1,8 @@
 #include "libshapeproc/geometry/arc.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace shapeproc::geometry {
 namespace {

@@ -1,14 +1,14 @@
 #include "libshapeproc/geometry/directions.hpp"
-#include "libshapeproc/core/constants.hpp"
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include <gtest/gtest.h>
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::geometry {
 namespace {
-
 
 Vec3 at_angle(double degrees) {
   return Vec3(std::cos(degrees * core::kPi / 180), std::sin(degrees * core::kPi / 180), 0);

@@ -1,8 +1,8 @@
 #include "libshapeproc/geometry/domain.hpp"
 
-#include <memory>
-
 #include <gtest/gtest.h>
+
+#include <memory>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/proxy.hpp"

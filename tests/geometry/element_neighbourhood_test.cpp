@@ -19,13 +19,16 @@ TEST(NeighbourhoodIndex, MatchesABruteForceSearch) {
     const Domain domain = Domain::from_sizes({40, 30}, periodic ? Boundary::torus : Boundary::open);
     core::Random random(periodic ? 5 : 6);
     std::vector<Element> elements;
-    for (int i = 0; i < 300; ++i) elements.push_back(at(random.uniform(0, 40), random.uniform(0, 30), static_cast<int>(random.index(2))));
+    for (int i = 0; i < 300; ++i)
+      elements.push_back(
+          at(random.uniform(0, 40), random.uniform(0, 30), static_cast<int>(random.index(2))));
     const NeighbourhoodIndex index(elements, domain, 4.5);
     for (std::size_t c = 0; c < elements.size(); c += 7) {
       Neighbourhood expected;
       for (std::size_t j = 0; j < elements.size(); ++j) {
         const Vec3 t = domain.minimum_image(elements[j].position - elements[c].position);
-        if (j != c && t.norm() < 4.5) expected.push_back({t, elements[j].category, static_cast<int>(j)});
+        if (j != c && t.norm() < 4.5)
+          expected.push_back({t, elements[j].category, static_cast<int>(j)});
       }
       const Neighbourhood found = index.of(c);
       ASSERT_EQ(found.size(), expected.size()) << "centre " << c;

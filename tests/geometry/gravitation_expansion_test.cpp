@@ -2,18 +2,17 @@
 // boundary integral on polygons whose edges are cut into 64 collinear pieces (its quadrature error
 // shrinks with the square of the edges' length: below 2e-5 there, against a 2D cubature of the
 // kernel over the polygons' triangles; up to 2e-3 on the uncut polygons of the last test).
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <complex>
 #include <random>
 
-#include <gtest/gtest.h>
-
-#include "libshapeproc/geometry/region_gravitation.hpp"
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/geometry/region_gravitation.hpp"
 
 namespace shapeproc::geometry {
 namespace {
-
 
 // A star-shaped polygon (counter-clockwise) with `corners` corners at radii in [0.6, 1] * radius,
 // each edge cut into `pieces` collinear edges.
@@ -30,13 +29,16 @@ MassBoundary2 star(std::mt19937& rng, int corners, double radius, int pieces) {
     const Vec2 a = points[i], b = points[(i + 1) % corners];
     const Vec2 edge = b - a;
     const Vec2 outward = Vec2(edge.y(), -edge.x()).normalized();
-    for (int k = 0; k < pieces; ++k) mass.add_edge(a + edge * (double(k) / pieces), a + edge * (double(k + 1) / pieces), outward);
+    for (int k = 0; k < pieces; ++k)
+      mass.add_edge(a + edge * (double(k) / pieces), a + edge * (double(k + 1) / pieces), outward);
   }
   mass.finish();
   return mass;
 }
 
-double relative(const Vec2& value, const Vec2& reference) { return (value - reference).norm() / reference.norm(); }
+double relative(const Vec2& value, const Vec2& reference) {
+  return (value - reference).norm() / reference.norm();
+}
 
 TEST(GravitationExpansion, MomentsOfASquareAreExact) {
   MassBoundary2 square;  // [-1, 3] x [-1, 1]: area 8, centroid (1, 0)

@@ -11,7 +11,8 @@ namespace shapeproc::geometry::fixtures {
 
 inline Path2 polygon(const std::vector<Vec2>& corners, bool closed = true) {
   Path2 path;
-  for (std::size_t i = 0; i + 1 < corners.size(); ++i) path.segments.push_back(Segment2::line(corners[i], corners[i + 1]));
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i)
+    path.segments.push_back(Segment2::line(corners[i], corners[i + 1]));
   if (closed) path.segments.push_back(Segment2::line(corners.back(), corners.front()));
   path.closed = closed;
   return path;
@@ -23,7 +24,8 @@ inline Path2 rectangle(double x0, double y0, double x1, double y1, bool reversed
   return polygon(c);
 }
 
-inline Shape planar(std::vector<Path2> paths, FillRule rule = FillRule::nonzero, bool filled = true) {
+inline Shape planar(std::vector<Path2> paths, FillRule rule = FillRule::nonzero,
+                    bool filled = true) {
   Drawable2 d;
   d.paths = std::move(paths);
   d.fill_rule = rule;
@@ -63,8 +65,8 @@ struct ScatteredPolygons {
   std::vector<Shape> shapes;
   std::vector<Vec2> positions;
 };
-inline ScatteredPolygons scatter_polygons(unsigned seed, int count, int min_corners, int corner_span, double radius,
-                                          double low, double high) {
+inline ScatteredPolygons scatter_polygons(unsigned seed, int count, int min_corners,
+                                          int corner_span, double radius, double low, double high) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> position(low, high);
   ScatteredPolygons out;
@@ -98,7 +100,8 @@ inline TriangleMesh uv_sphere(double r, int slices, int stacks) {
     const double theta = pi * i / stacks;
     for (int j = 0; j < slices; ++j) {
       const double phi = 2 * pi * j / slices;
-      m.vertices.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi), r * std::cos(theta));
+      m.vertices.emplace_back(r * std::sin(theta) * std::cos(phi),
+                              r * std::sin(theta) * std::sin(phi), r * std::cos(theta));
     }
   }
   m.vertices.emplace_back(0, 0, -r);
@@ -110,19 +113,23 @@ inline TriangleMesh uv_sphere(double r, int slices, int stacks) {
       m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
-  for (int j = 0; j < slices; ++j) m.triangles.push_back({south, at(stacks - 2, j + 1), at(stacks - 2, j)});
+  for (int j = 0; j < slices; ++j)
+    m.triangles.push_back({south, at(stacks - 2, j + 1), at(stacks - 2, j)});
   return m;
 }
 
 inline TriangleMesh box_mesh(const Vec3& lo, const Vec3& hi) {
   TriangleMesh m;
-  for (int i = 0; i < 8; ++i) m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(),
+                            i & 4 ? hi.z() : lo.z());
   m.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
   return m;
 }
 
-inline Scene scene_of_meshes(const std::vector<TriangleMesh>& meshes, const std::vector<Vec3>& positions,
+inline Scene scene_of_meshes(const std::vector<TriangleMesh>& meshes,
+                             const std::vector<Vec3>& positions,
                              Box3 window = Box3(Vec3(-100, -100, -100), Vec3(100, 100, 100))) {
   Scene scene;
   scene.dimension = 3;

@@ -1,10 +1,10 @@
 #include "libshapeproc/geometry/neighbour_grid.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <map>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/geometry/domain.hpp"
@@ -35,7 +35,8 @@ void expect_superset(int dimension, bool periodic, double cell_size) {
     for (const auto& [id, times] : seen) EXPECT_EQ(times, 1) << id;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (domain.minimum_image(points[i] - at).norm() < cell_size) {
-        EXPECT_TRUE(seen.count(static_cast<int>(i))) << "point " << i << " missed (dimension " << dimension << ")";
+        EXPECT_TRUE(seen.count(static_cast<int>(i)))
+            << "point " << i << " missed (dimension " << dimension << ")";
       }
     }
   }

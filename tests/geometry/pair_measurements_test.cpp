@@ -1,12 +1,12 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
-#include "libshapeproc/core/constants.hpp"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include <gtest/gtest.h>
-
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 #include "tests/geometry/measurement_fixtures.hpp"
@@ -15,7 +15,6 @@ namespace shapeproc::geometry {
 namespace {
 
 using namespace fixtures;
-
 
 MeasurementOptions fine() {
   MeasurementOptions options;
@@ -37,9 +36,9 @@ double angle_between(const Vec3& a, const Vec3& b) {
 TEST(ShapeDistance, BoxesWithKnownGaps) {
   const Shape square = planar({rectangle(0, 0, 2, 2)});
   EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {5, 0}}), 3.0);
-  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {5, 6}}), 5.0);   // corner to corner 3-4-5
-  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {2, 2}}), 0.0);   // touching at a corner
-  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {1, 0.5}}), 0.0); // overlapping
+  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {5, 6}}), 5.0);    // corner to corner 3-4-5
+  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {2, 2}}), 0.0);    // touching at a corner
+  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {1, 0.5}}), 0.0);  // overlapping
 }
 
 TEST(ShapeDistance, DiscsAreCentreDistanceMinusRadii) {
@@ -62,7 +61,8 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   // A dot in a ring's hole (nonzero winding with a reversed hole) is apart from the ring.
   EXPECT_NEAR(measured({ring(10, 6), dot}, {{0, 0}, {1, 0}}), 6 - 1.5, 1e-2);
   // The same ring drawn with even-odd and both circles the same way round.
-  const Shape evenodd = planar({ellipse_path(Vec2::Zero(), 10, 10), ellipse_path(Vec2::Zero(), 6, 6)}, FillRule::evenodd);
+  const Shape evenodd = planar(
+      {ellipse_path(Vec2::Zero(), 10, 10), ellipse_path(Vec2::Zero(), 6, 6)}, FillRule::evenodd);
   EXPECT_NEAR(measured({evenodd, dot}, {{0, 0}, {1, 0}}), 4.5, 1e-2);
   EXPECT_DOUBLE_EQ(measured({evenodd, dot}, {{0, 0}, {8, 0}}), 0.0);  // in the ring's body
   // An unfilled circle is a curve: a dot inside is apart from it.
@@ -70,7 +70,8 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   EXPECT_NEAR(measured({outline, dot}, {{0, 0}, {3, 0}}), 10 - 3.5, 1e-2);
   // Open curves crossing each other.
   const Shape stroke = planar({polygon({{-5, 0}, {5, 0}}, false)});
-  EXPECT_DOUBLE_EQ(measured({stroke, planar({polygon({{0, -5}, {0, 5}}, false)})}, {{0, 0}, {1, 0}}), 0.0);
+  EXPECT_DOUBLE_EQ(
+      measured({stroke, planar({polygon({{0, -5}, {0, 5}}, false)})}, {{0, 0}, {1, 0}}), 0.0);
   EXPECT_DOUBLE_EQ(measured({stroke, stroke}, {{0, 0}, {0, 2}}), 2.0);
   // Nested elongated and interlocking shapes: an L inside another L's notch.
   const Shape ell = planar({polygon({{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}})});
@@ -92,10 +93,12 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
       double brute = INFINITY;
       for (std::size_t s = 0; s < pa.segment_count(); ++s)
         for (std::size_t k = 0; k < pb.segment_count(); ++k)
-          brute = std::min(brute, segment_segment_distance(pa.segment_start[s], pa.segment_end[s],
-                                                           pb.segment_start[k] + t, pb.segment_end[k] + t));
+          brute = std::min(
+              brute, segment_segment_distance(pa.segment_start[s], pa.segment_end[s],
+                                              pb.segment_start[k] + t, pb.segment_end[k] + t));
       // Star-shaped polygons around their centres: one inside the other iff a vertex is inside.
-      if (pa.inside(pb.polylines[0].points[0] + t) || pb.inside(pa.polylines[0].points[0] - t)) brute = 0.0;
+      if (pa.inside(pb.polylines[0].points[0] + t) || pb.inside(pa.polylines[0].points[0] - t))
+        brute = 0.0;
       const double d = measurer.measure(scene.elements[i], scene.elements[j]).distance;
       EXPECT_NEAR(d, brute, 1e-12) << i << " " << j;
       // Symmetric, and the cut-off form agrees below the cut-off.
@@ -123,16 +126,22 @@ TEST(ShapeDistance, BreakpointsDecideTheIntervalOfTheExactDistance) {  // NOLINT
     options.periodic = periodic;
     const PairMeasurer measurer(scene, options);
     for (const std::vector<double>& breakpoints :
-         {std::vector<double>{0.0, 0.5, 1.0, 3.0}, std::vector<double>{0.2, 0.25, 2.0}, std::vector<double>{1.5}}) {
+         {std::vector<double>{0.0, 0.5, 1.0, 3.0}, std::vector<double>{0.2, 0.25, 2.0},
+          std::vector<double>{1.5}}) {
       const double cutoff = breakpoints.back();
-      auto interval = [&](double d) { return std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin(); };
+      auto interval = [&](double d) {
+        return std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin();
+      };
       int inside_interval = 0;
       for (std::size_t i = 0; i < scene.elements.size(); ++i) {
         for (std::size_t j = 0; j < scene.elements.size(); ++j) {
           if (i == j) continue;
-          const Measurement exact = measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff);
-          const Measurement coarse = measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff, &breakpoints);
-          EXPECT_EQ(interval(coarse.distance), interval(exact.distance)) << i << " " << j << " " << exact.distance;
+          const Measurement exact =
+              measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff);
+          const Measurement coarse =
+              measurer.measure_distance(scene.elements[i], scene.elements[j], cutoff, &breakpoints);
+          EXPECT_EQ(interval(coarse.distance), interval(exact.distance))
+              << i << " " << j << " " << exact.distance;
           EXPECT_LE(coarse.distance, cutoff);
           if (coarse.distance != exact.distance) ++inside_interval;
         }
@@ -150,10 +159,11 @@ TEST(ShapeDistance, VariantsForComparison) {
   EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {3, 4}}, centroid), 5.0);
   MeasurementOptions hausdorff = fine();
   hausdorff.distance = DistanceKind::hausdorff;
-  // Translated copies: every outline point is 5 from the other outline; a wider rectangle around the
-  // square reaches 1 beyond it.
+  // Translated copies: every outline point is 5 from the other outline; a wider rectangle around
+  // the square reaches 1 beyond it.
   EXPECT_NEAR(measured({square, square}, {{0, 0}, {5, 0}}, hausdorff), 5.0, 1e-9);
-  EXPECT_NEAR(measured({square, planar({rectangle(-2, -1, 2, 1)})}, {{0, 0}, {0, 0}}, hausdorff), 1.0, 1e-9);
+  EXPECT_NEAR(measured({square, planar({rectangle(-2, -1, 2, 1)})}, {{0, 0}, {0, 0}}, hausdorff),
+              1.0, 1e-9);
 }
 
 TEST(Periodic, MinimumImageAcrossTheWindowEdge) {
@@ -169,8 +179,9 @@ TEST(Periodic, MinimumImageAcrossTheWindowEdge) {
   EXPECT_EQ(near.offset, Vec3(-7, 0, 0));
   // Corners: the diagonal image.
   const Scene corners = scene_of({disc(1), disc(1)}, {{2, 2}, {98, 48}}, window);
-  EXPECT_NEAR(PairMeasurer(corners, torus).measure(corners.elements[0], corners.elements[1]).distance,
-              std::hypot(4.0, 4.0) - 2, 1e-2);
+  EXPECT_NEAR(
+      PairMeasurer(corners, torus).measure(corners.elements[0], corners.elements[1]).distance,
+      std::hypot(4.0, 4.0) - 2, 1e-2);
 }
 
 TEST(Gravitation, ExactlyAntisymmetricAndTranslationInvariant) {
@@ -188,7 +199,8 @@ TEST(Gravitation, ExactlyAntisymmetricAndTranslationInvariant) {
       const Measurement ba = measurer.measure(scene.elements[j], scene.elements[i]);
       EXPECT_EQ(ba.direction, -ab.direction);  // bit for bit
       EXPECT_EQ(ab.axis, ba.axis);
-      const Measurement moved_ab = moved_measurer.measure(translated.elements[i], translated.elements[j]);
+      const Measurement moved_ab =
+          moved_measurer.measure(translated.elements[i], translated.elements[j]);
       // Equal up to rounding in the shapes' local coordinates.
       EXPECT_LT(angle_between(ab.direction, moved_ab.direction), 1e-6);
       EXPECT_NEAR(ab.distance, moved_ab.distance, 1e-9);
@@ -202,7 +214,8 @@ TEST(Gravitation, ExactlyAntisymmetricAndTranslationInvariant) {
 Vec2 dense_force(const Proxy2& a, const Proxy2& b, const Vec2& offset) {
   const double cell = std::max(a.box.sizes().maxCoeff(), b.box.sizes().maxCoeff()) / 160;
   const Vec2 lattice(std::fmod(offset.x(), cell), std::fmod(offset.y(), cell));
-  const MassModel2 ma = sample_mass(a, cell, Vec2::Zero(), 1), mb = sample_mass(b, cell, -lattice, 1);
+  const MassModel2 ma = sample_mass(a, cell, Vec2::Zero(), 1),
+                   mb = sample_mass(b, cell, -lattice, 1);
   Vec2 total = Vec2::Zero();
   for (std::size_t i = 0; i < ma.points.size(); ++i) {
     for (std::size_t j = 0; j < mb.points.size(); ++j) {
@@ -215,7 +228,8 @@ Vec2 dense_force(const Proxy2& a, const Proxy2& b, const Vec2& offset) {
   return total;
 }
 
-void expect_near_brute_force(const std::vector<Shape>& shapes, const std::vector<Vec2>& positions, const char* what) {
+void expect_near_brute_force(const std::vector<Shape>& shapes, const std::vector<Vec2>& positions,
+                             const char* what) {
   const Scene scene = scene_of(shapes, positions);
   const PairMeasurer measurer(scene, MeasurementOptions{});
   const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
@@ -232,13 +246,16 @@ TEST(Gravitation, WithinOneDegreeOfDenseBruteForce) {
   expect_near_brute_force({ell, ell}, {{0, 0}, {1.5, 1.5}}, "interlocking L shapes");
   expect_near_brute_force({bar, square}, {{0, 0}, {4, 1.5}}, "square touching a bar's end");
   expect_near_brute_force({square, square}, {{0, 0}, {2, 2}}, "squares touching at a corner");
-  expect_near_brute_force({crescent, crescent}, {{0, 0}, {0, 1}}, "nested crescents touching along an edge");
-  expect_near_brute_force({crescent, crescent}, {{0, 0}, {0, 1.1}}, "nested crescents, a gap of 0.1");
+  expect_near_brute_force({crescent, crescent}, {{0, 0}, {0, 1}},
+                          "nested crescents touching along an edge");
+  expect_near_brute_force({crescent, crescent}, {{0, 0}, {0, 1.1}},
+                          "nested crescents, a gap of 0.1");
   expect_near_brute_force({crescent, crescent}, {{0, 0}, {0.5, 1.1}}, "crescents overlapping");
   expect_near_brute_force({bar, planar({polygon({{-3, 0}, {3, 0}}, false)})}, {{0, 0}, {1, 0.75}},
                           "an open curve (its strip) beside a bar");
   expect_near_brute_force({bar, bar}, {{0, 0}, {3, 8}}, "parallel bars, slanted");
-  expect_near_brute_force({ring(5, 3), disc(1)}, {{0, 0}, {1, 0.5}}, "dot off-centre in a ring's hole");
+  expect_near_brute_force({ring(5, 3), disc(1)}, {{0, 0}, {1, 0.5}},
+                          "dot off-centre in a ring's hole");
 }
 
 // certain_axis promises the axis of every offset within the slack: check it on random shapes,
@@ -259,8 +276,10 @@ TEST(Gravitation, CertainAxisHoldsOverItsDisc) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int decided = 0, beyond_boxes = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const int a = static_cast<int>(rng() % shapes.size()), b = static_cast<int>(rng() % shapes.size());
-    const double angle = 2 * core::kPi * unit(rng), distance = 8.0 + 40.0 * unit(rng), slack = 4.0 * unit(rng);
+    const int a = static_cast<int>(rng() % shapes.size()),
+              b = static_cast<int>(rng() % shapes.size());
+    const double angle = 2 * core::kPi * unit(rng), distance = 8.0 + 40.0 * unit(rng),
+                 slack = 4.0 * unit(rng);
     const Vec3 offset(distance * std::cos(angle), distance * std::sin(angle), 0.0);
     const int axis = measurer.certain_axis(a, b, offset, slack);
     if (axis < 0) continue;
@@ -269,12 +288,15 @@ TEST(Gravitation, CertainAxisHoldsOverItsDisc) {
     for (int k = 0; k < 24; ++k) {
       const double r = slack * std::sqrt(unit(rng)), t = 2 * core::kPi * unit(rng);
       const Vec3 o = offset + Vec3(r * std::cos(t), r * std::sin(t), 0.0);
-      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
+      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis)
+          << a << " " << b << " " << trial;
     }
     // The disc's rim, where the angle strays most.
     for (int k = 0; k < 16; ++k) {
-      const Vec3 o = offset + slack * Vec3(std::cos(k * core::kPi / 8), std::sin(k * core::kPi / 8), 0.0);
-      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis) << a << " " << b << " " << trial;
+      const Vec3 o =
+          offset + slack * Vec3(std::cos(k * core::kPi / 8), std::sin(k * core::kPi / 8), 0.0);
+      ASSERT_EQ(measurer.bins().axis_of(measurer.direction(a, b, o)), axis)
+          << a << " " << b << " " << trial;
     }
   }
   EXPECT_GT(decided, 1000);
@@ -297,8 +319,9 @@ TEST(Measurements3D, MeshDistancesAndContainment) {
   const TriangleMesh cube = box_mesh(Vec3(-1, -1, -1), Vec3(1, 1, 1));
   const TriangleMesh small = box_mesh(Vec3(-0.2, -0.2, -0.2), Vec3(0.2, 0.2, 0.2));
   const TriangleMesh sphere = uv_sphere(1.0, 24, 12);
-  const Scene scene = scene_of_meshes({cube, cube, small, sphere, sphere},
-                                      {{0, 0, 0}, {5, 0, 0}, {0.3, 0.1, 0}, {0, 10, 0}, {3, 13, 1}});
+  const Scene scene =
+      scene_of_meshes({cube, cube, small, sphere, sphere},
+                      {{0, 0, 0}, {5, 0, 0}, {0.3, 0.1, 0}, {0, 10, 0}, {3, 13, 1}});
   MeasurementOptions options;
   options.directions = 12;
   options.proxy.tolerance = 1e-3;
@@ -367,7 +390,9 @@ TEST(Proxies, DecimationIsErrorBoundedAndKeepsMeshesClosed) {
     for (const Vec3& v : mesh.vertices) {
       double nearest = INFINITY;
       for (const auto& t : proxy.triangles) {
-        nearest = std::min(nearest, point_triangle_distance(v, proxy.vertices[t[0]], proxy.vertices[t[1]], proxy.vertices[t[2]]));
+        nearest =
+            std::min(nearest, point_triangle_distance(v, proxy.vertices[t[0]], proxy.vertices[t[1]],
+                                                      proxy.vertices[t[2]]));
       }
       worst = std::max(worst, nearest);
     }

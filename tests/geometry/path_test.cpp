@@ -1,9 +1,9 @@
 #include "libshapeproc/geometry/path.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
-
-#include <gtest/gtest.h>
 
 namespace shapeproc::geometry {
 namespace {
@@ -12,7 +12,8 @@ Path2 square(double x, double y, double side, bool counter_clockwise = true) {
   std::vector<Vec2> corners = {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
   if (!counter_clockwise) std::reverse(corners.begin(), corners.end());
   Path2 path;
-  for (int i = 0; i < 4; ++i) path.segments.push_back(Segment2::line(corners[i], corners[(i + 1) % 4]));
+  for (int i = 0; i < 4; ++i)
+    path.segments.push_back(Segment2::line(corners[i], corners[(i + 1) % 4]));
   path.closed = true;
   return path;
 }
@@ -30,8 +31,9 @@ TEST(Segment, BoundingBoxContainsDenseSamples) {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> coordinate(-10, 10);
   for (int trial = 0; trial < 200; ++trial) {
-    const Segment2 s = Segment2::bezier({coordinate(rng), coordinate(rng)}, {coordinate(rng), coordinate(rng)},
-                                        {coordinate(rng), coordinate(rng)}, {coordinate(rng), coordinate(rng)});
+    const Segment2 s =
+        Segment2::bezier({coordinate(rng), coordinate(rng)}, {coordinate(rng), coordinate(rng)},
+                         {coordinate(rng), coordinate(rng)}, {coordinate(rng), coordinate(rng)});
     const Box2 box = bounding_box(s);
     Box2 sampled;
     for (int i = 0; i <= 2000; ++i) sampled.extend(s.point_at(i / 2000.0));
@@ -75,10 +77,10 @@ TEST(Polygon, AreaAndWinding) {
 
 TEST(Polylines, OverlapIgnoresIsolatedTouchingPoints) {
   const auto a = flatten(square(0, 0, 1), 0.1);
-  EXPECT_TRUE(polylines_overlap(a, true, flatten(square(0.5, 0.5, 1), 0.1), true));   // crossing
-  EXPECT_FALSE(polylines_overlap(a, true, flatten(square(1, 1, 1), 0.1), true));      // corner only
-  EXPECT_TRUE(polylines_overlap(a, true, flatten(square(1, 0, 1), 0.1), true));       // shared edge
-  EXPECT_FALSE(polylines_overlap(a, true, flatten(square(3, 0, 1), 0.1), true));      // apart
+  EXPECT_TRUE(polylines_overlap(a, true, flatten(square(0.5, 0.5, 1), 0.1), true));  // crossing
+  EXPECT_FALSE(polylines_overlap(a, true, flatten(square(1, 1, 1), 0.1), true));     // corner only
+  EXPECT_TRUE(polylines_overlap(a, true, flatten(square(1, 0, 1), 0.1), true));      // shared edge
+  EXPECT_FALSE(polylines_overlap(a, true, flatten(square(3, 0, 1), 0.1), true));     // apart
   EXPECT_FALSE(polylines_overlap(a, true, flatten(square(0.25, 0.25, 0.5), 0.1), true));  // nested
 }
 

@@ -1,9 +1,9 @@
 // Measurements on the shipped Hero Patterns bubbles tile: circles, so every distance is known.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -72,7 +72,8 @@ TEST(ShippedDataMeasurements, CopiesOfOneDrawingShareTheirProxy) {
   // 19 elements: rings of radius 9 and 12 (outline and hole) and dots of radius 2.5.
   std::vector<int> representatives;
   for (int s = 0; s < static_cast<int>(rings.shapes.size()); ++s) {
-    const bool known = std::any_of(representatives.begin(), representatives.end(), [&](int r) { return measurer.same_proxy(r, s); });
+    const bool known = std::any_of(representatives.begin(), representatives.end(),
+                                   [&](int r) { return measurer.same_proxy(r, s); });
     if (!known) representatives.push_back(s);
   }
   EXPECT_EQ(representatives.size(), 3u);

@@ -18,7 +18,8 @@ Path2 square(double x, double y, double side, bool reversed = false) {
 
 std::vector<std::size_t> piece_sizes(const Drawable2& drawable) {
   std::vector<std::size_t> sizes;
-  for (const Drawable2& piece : split_disjoint_subpaths(drawable)) sizes.push_back(piece.paths.size());
+  for (const Drawable2& piece : split_disjoint_subpaths(drawable))
+    sizes.push_back(piece.paths.size());
   return sizes;
 }
 

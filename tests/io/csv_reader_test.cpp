@@ -14,8 +14,8 @@ ReaderOptions window(const std::string& text) {
 }
 
 TEST(CsvPoints, ReadsPointsAndCategoriesInAnyColumnOrder) {
-  const geometry::Scene scene =
-      parse_csv_points("category,y,x,id\nred,1,2,a\nblue,3,4,b\r\nred,5,6,c\n\n", "p.csv", window("0,10,0,10"));
+  const geometry::Scene scene = parse_csv_points(
+      "category,y,x,id\nred,1,2,a\nblue,3,4,b\r\nred,5,6,c\n\n", "p.csv", window("0,10,0,10"));
   EXPECT_EQ(scene.dimension, 2);
   ASSERT_EQ(scene.elements.size(), 3u);
   EXPECT_EQ(scene.elements[1].position, geometry::Vec3(4, 3, 0));
@@ -68,7 +68,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCsv{"outside", "x,y\n1,1\n5,1\n", "0,2,0,2", "outside", 3},
                       BadCsv{"header_only", "x,y\n", "0,2,0,2", "no points", 0},
                       BadCsv{"duplicate_column", "x,x,y\n1,1,1\n", "0,2,0,2", "twice", 1}),
-    [](const ::testing::TestParamInfo<BadCsv>& param_info) { return std::string(param_info.param.name); });
+    [](const ::testing::TestParamInfo<BadCsv>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 }  // namespace
 }  // namespace shapeproc::io

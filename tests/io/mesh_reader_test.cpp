@@ -75,8 +75,10 @@ TEST(MeshReader, GroupsOrComponents) {
 TEST(MeshReader, OffPolygonsStlAndWindowOption) {
   const TempDir dir;
   // A cube with quad faces: 6 quads become 12 triangles.
-  const auto off = dir.write("cube.off", "OFF\n8 6 0\n\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
-                                         "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  const auto off =
+      dir.write("cube.off",
+                "OFF\n8 6 0\n\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   ReaderOptions options;
   options.window = WindowOption::parse("-1,2,-1,2,-1,2");
   const geometry::Scene cube = read_mesh_scene(off, options);
@@ -151,16 +153,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadMesh{"empty", "e.off", "", "empty"},
         BadMesh{"garbage", "g.off", "this is not a mesh\n", "cannot read"},
         BadMesh{"non_manifold", "nm.off",
-                "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", "non-manifold"},
-        BadMesh{"repeated_vertex", "rv.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 2\n", "invalid mesh"},
-        BadMesh{"zero_area", "za.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 1\n3 0 1 2\n3 0 3 1\n", "zero area"},
+                "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+                "non-manifold"},
+        BadMesh{"repeated_vertex", "rv.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 2\n",
+                "invalid mesh"},
+        BadMesh{"zero_area", "za.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 1\n3 0 1 2\n3 0 3 1\n",
+                "zero area"},
         BadMesh{"no_faces", "nf.obj", "v 0 0 0\nv 1 0 0\n", "no triangles"},
         BadMesh{"flat", "flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "zero size"}),
-    [](const ::testing::TestParamInfo<BadMesh>& param_info) { return std::string(param_info.param.name); });
+    [](const ::testing::TestParamInfo<BadMesh>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 TEST(MeshReader, OptionMisuse) {
   const TempDir dir;
-  const auto off = dir.write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const auto off = dir.write(
+      "t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   ReaderOptions groups;
   groups.mesh_split = MeshSplit::groups;
   EXPECT_THROW(read_mesh_scene(off, groups), core::UsageError);

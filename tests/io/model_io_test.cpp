@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/render/interaction_plot.hpp"
+#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/render/interaction_plot.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::io {
@@ -23,10 +23,11 @@ const char* kMinimal = R"({
 
 TEST(ModelFile, MinimalHandWrittenModelLoads) {
   const model::ShapeProcessModel m = parse_model(kMinimal, "m.json");
-  EXPECT_EQ(m.measurement.directions, 4);  // inferred from two axes
+  EXPECT_EQ(m.measurement.directions, 4);                                 // inferred from two axes
   EXPECT_EQ(m.categories[0].beta_status, model::ParameterStatus::fixed);  // set by hand
   EXPECT_EQ(m.shapes.size(), 1u);
-  EXPECT_NEAR(geometry::bounding_box(m.shapes[0].shape).center().norm(), 0.0, 1e-12);  // centred on load
+  EXPECT_NEAR(geometry::bounding_box(m.shapes[0].shape).center().norm(), 0.0,
+              1e-12);  // centred on load
   const model::Interaction interaction(m);
   EXPECT_DOUBLE_EQ(interaction.range(), 9.0);
   EXPECT_EQ(interaction.band(0, 0, 0, 1.9), model::Interaction::kHardCore);
@@ -54,7 +55,8 @@ TEST(ModelFile, FitWriteReadRoundTrip) {
   EXPECT_EQ(back.interactions[0].axes[2].gammas, fit.model.interactions[0].axes[2].gammas);
   EXPECT_EQ(back.interactions[0].axes[2].status, fit.model.interactions[0].axes[2].status);
   ASSERT_EQ(back.shapes.size(), exemplar.shapes.size());
-  EXPECT_EQ(geometry::primitive_count(back.shapes[3].shape), geometry::primitive_count(exemplar.shapes[3]));
+  EXPECT_EQ(geometry::primitive_count(back.shapes[3].shape),
+            geometry::primitive_count(exemplar.shapes[3]));
   EXPECT_EQ(model_to_json(back), model_to_json(read_model(dir.file("m.json"))));
   // The plot is an SVG with one polar sector per axis half and band.
   const std::string svg = render::interaction_plot_svg(back);
@@ -87,22 +89,30 @@ TEST_P(ModelFileBad, ClearErrors) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, ModelFileBad,
-    ::testing::Values(BadModel{"format", "shapeproc-model", "other", "format"},
-                      BadModel{"version", "\"version\": 1", "\"version\": 7", "version"},
-                      BadModel{"beta", "\"beta\": 0.01", "\"beta\": 0", "categories[0].beta"},
-                      BadModel{"beta_status", "\"beta\": 0.01", "\"beta\": 0.01, \"beta_status\": \"maybe\"",
-                               "categories[0].beta_status"},
-                      BadModel{"decreasing", "[2, 5, 9]", "[2, 9, 5]", "must not decrease"},
-                      BadModel{"negative_gamma", "[0.2, 1.5]", "[0.2, -1]", "gammas[1]"},
-                      BadModel{"gamma_count", "[0.2, 1.5]", "[0.2]", "one per band"},
-                      BadModel{"direction", "\"direction\": [0, 1]", "\"direction\": [1, 1]", "canonical direction"},
-                      BadModel{"direction_dimension", "\"direction\": [0, 1]", "\"direction\": [0, 1, 0]", "2D model"},
-                      BadModel{"category_range", "\"categories\": [0, 0]", "\"categories\": [0, 3]", "category indices"},
-                      BadModel{"shape_category", "\"category\": 0, \"geometry\"", "\"category\": 2, \"geometry\"", "shapes[0].category"},
-                      BadModel{"path", "M0 0h4v2h-4z", "M0 0 X", "cannot parse"},
-                      BadModel{"malformed", "\"dimension\": 2,", "\"dimension\": 2", "malformed JSON"},
-                      BadModel{"missing", "\"categories\": [ { \"name\"", "\"cats\": [ { \"name\"", "categories: missing"}),
-    [](const ::testing::TestParamInfo<BadModel>& param_info) { return std::string(param_info.param.name); });
+    ::testing::Values(
+        BadModel{"format", "shapeproc-model", "other", "format"},
+        BadModel{"version", "\"version\": 1", "\"version\": 7", "version"},
+        BadModel{"beta", "\"beta\": 0.01", "\"beta\": 0", "categories[0].beta"},
+        BadModel{"beta_status", "\"beta\": 0.01", "\"beta\": 0.01, \"beta_status\": \"maybe\"",
+                 "categories[0].beta_status"},
+        BadModel{"decreasing", "[2, 5, 9]", "[2, 9, 5]", "must not decrease"},
+        BadModel{"negative_gamma", "[0.2, 1.5]", "[0.2, -1]", "gammas[1]"},
+        BadModel{"gamma_count", "[0.2, 1.5]", "[0.2]", "one per band"},
+        BadModel{"direction", "\"direction\": [0, 1]", "\"direction\": [1, 1]",
+                 "canonical direction"},
+        BadModel{"direction_dimension", "\"direction\": [0, 1]", "\"direction\": [0, 1, 0]",
+                 "2D model"},
+        BadModel{"category_range", "\"categories\": [0, 0]", "\"categories\": [0, 3]",
+                 "category indices"},
+        BadModel{"shape_category", "\"category\": 0, \"geometry\"", "\"category\": 2, \"geometry\"",
+                 "shapes[0].category"},
+        BadModel{"path", "M0 0h4v2h-4z", "M0 0 X", "cannot parse"},
+        BadModel{"malformed", "\"dimension\": 2,", "\"dimension\": 2", "malformed JSON"},
+        BadModel{"missing", "\"categories\": [ { \"name\"", "\"cats\": [ { \"name\"",
+                 "categories: missing"}),
+    [](const ::testing::TestParamInfo<BadModel>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 }  // namespace
 }  // namespace shapeproc::io

@@ -17,7 +17,8 @@ void expect_same_elements(const Scene& a, const Scene& b, double tolerance) {
   EXPECT_LE((a.window.max() - b.window.max()).norm(), tolerance);
   for (std::size_t i = 0; i < a.elements.size(); ++i) {
     EXPECT_LE((a.elements[i].position - b.elements[i].position).norm(), tolerance) << i;
-    EXPECT_EQ(a.categories[a.elements[i].category].name, b.categories[b.elements[i].category].name) << i;
+    EXPECT_EQ(a.categories[a.elements[i].category].name, b.categories[b.elements[i].category].name)
+        << i;
     const auto& sa = a.shapes[a.elements[i].shape];
     const auto& sb = b.shapes[b.elements[i].shape];
     EXPECT_EQ(geometry::primitive_count(sa), geometry::primitive_count(sb)) << i;
@@ -42,7 +43,8 @@ TEST(RoundTrip, SvgKeepsGeometryStylesAndCategories) {
   const auto& q0 = std::get<geometry::PlanarShape>(reread.shapes[0].geometry).parts[0];
   EXPECT_EQ(p0.style, q0.style);
   EXPECT_EQ(p0.fill_rule, q0.fill_rule);
-  EXPECT_NE(testing::read_file(dir.file("out.svg")).find(R"(<metadata id="shapeproc">)"), std::string::npos);
+  EXPECT_NE(testing::read_file(dir.file("out.svg")).find(R"(<metadata id="shapeproc">)"),
+            std::string::npos);
 }
 
 TEST(RoundTrip, SvgMultiPartElementsAndHoles) {

@@ -29,28 +29,27 @@ TEST_P(ShippedData, ElementAndCategoryCounts) {
   EXPECT_EQ(scene.categories.size(), s.categories);
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     // Every element lies in the window (the generators keep margins).
-    EXPECT_TRUE(scene.window.contains(geometry::bounding_box(scene.placed_shape(i)))) << s.file << " " << i;
+    EXPECT_TRUE(scene.window.contains(geometry::bounding_box(scene.placed_shape(i))))
+        << s.file << " " << i;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Files, ShippedData,
-    ::testing::Values(Shipped{"svg/dots-random.svg", "", 30, 1},
-                      Shipped{"svg/dashes-rows.svg", "", 29, 1},
-                      Shipped{"svg/crescents-grid.svg", "", 25, 1},
-                      Shipped{"svg/two-kinds.svg", "fill", 34, 2},
-                      Shipped{"svg/two-kinds.svg", "layer", 34, 2},
-                      Shipped{"svg/rings.svg", "split", 19, 1},
-                      Shipped{"svg/rings.svg", "", 1, 1},
-                      Shipped{"third-party/hero-patterns/bubbles.svg", "split", 17, 1},
-                      Shipped{"third-party/hero-patterns/tic-tac-toe.svg", "split", 4, 1},
-                      Shipped{"points/clusters.csv", "window", 39, 2},
-                      Shipped{"mesh/pebbles.obj", "", 12, 1}));
+    ::testing::Values(
+        Shipped{"svg/dots-random.svg", "", 30, 1}, Shipped{"svg/dashes-rows.svg", "", 29, 1},
+        Shipped{"svg/crescents-grid.svg", "", 25, 1}, Shipped{"svg/two-kinds.svg", "fill", 34, 2},
+        Shipped{"svg/two-kinds.svg", "layer", 34, 2}, Shipped{"svg/rings.svg", "split", 19, 1},
+        Shipped{"svg/rings.svg", "", 1, 1},
+        Shipped{"third-party/hero-patterns/bubbles.svg", "split", 17, 1},
+        Shipped{"third-party/hero-patterns/tic-tac-toe.svg", "split", 4, 1},
+        Shipped{"points/clusters.csv", "window", 39, 2}, Shipped{"mesh/pebbles.obj", "", 12, 1}));
 
 TEST(ShippedData, BubblesAreCirclesOfTheRadiiDrawn) {
   ReaderOptions options;
   options.split_subpaths = true;
-  const geometry::Scene scene = read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), options);
+  const geometry::Scene scene =
+      read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), options);
   // Hero Patterns' bubbles use radii 2, 3, 4, 5 and 7: bounding boxes are 2r squares.
   std::multiset<int> radii;
   for (const auto& shape : scene.shapes) {
@@ -58,7 +57,8 @@ TEST(ShippedData, BubblesAreCirclesOfTheRadiiDrawn) {
     EXPECT_NEAR(sizes.x(), sizes.y(), 1e-9);
     radii.insert(static_cast<int>(std::lround(sizes.x() / 2 * 1000)));
   }
-  for (int r : radii) EXPECT_TRUE(r == 2000 || r == 3000 || r == 4000 || r == 5000 || r == 7000) << r;
+  for (int r : radii)
+    EXPECT_TRUE(r == 2000 || r == 3000 || r == 4000 || r == 5000 || r == 7000) << r;
 }
 
 }  // namespace

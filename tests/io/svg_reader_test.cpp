@@ -76,7 +76,8 @@ TEST(SvgPath, SmoothCurvesReflectControlPoints) {
 }
 
 TEST(SvgPath, ArcsBecomeCubicsWithExactEnds) {
-  const Scene scene = read(R"(<path d="M0 50A50 50 0 0 1 100 50"/><path d="M10 10a3 3 0 1006 0"/>)");
+  const Scene scene =
+      read(R"(<path d="M0 50A50 50 0 0 1 100 50"/><path d="M10 10a3 3 0 1006 0"/>)");
   const Box3 box = placed_box(scene, 0);
   EXPECT_NEAR(box.min().y(), 0.0, 1e-9);  // the arc passes through (50, 0)
   EXPECT_NEAR(box.max().x(), 100.0, 1e-12);
@@ -117,15 +118,17 @@ TEST(SvgStructure, TransformsComposeDownTheTree) {
 }
 
 TEST(SvgStructure, NestedSvgIsAContainerAtItsPosition) {
-  const Scene scene = read(R"x(<svg x="20" y="30"><rect width="2" height="2"/><rect x="5" width="2" height="2"/></svg>)x");
+  const Scene scene = read(
+      R"x(<svg x="20" y="30"><rect width="2" height="2"/><rect x="5" width="2" height="2"/></svg>)x");
   ASSERT_EQ(scene.elements.size(), 2u);
   EXPECT_EQ(scene.elements[0].position, Vec3(21, 31, 0));
   EXPECT_EQ(scene.elements[1].position, Vec3(26, 31, 0));
 }
 
 TEST(SvgStructure, UseDrawsItsTargetPlaced) {
-  const Scene scene = read(R"(<defs><rect id="r" width="2" height="2" fill="red"/></defs>)"
-                           R"(<use href="#r" x="5" y="5"/><use xlink:href="#r" transform='translate(10,0)'/>)");
+  const Scene scene =
+      read(R"(<defs><rect id="r" width="2" height="2" fill="red"/></defs>)"
+           R"(<use href="#r" x="5" y="5"/><use xlink:href="#r" transform='translate(10,0)'/>)");
   ASSERT_EQ(scene.elements.size(), 2u);
   EXPECT_EQ(scene.elements[0].position, Vec3(6, 6, 0));
   EXPECT_EQ(scene.elements[1].position, Vec3(11, 1, 0));
@@ -158,17 +161,20 @@ TEST(SvgStructure, SplitSubpathsMakesPiecesOfAPath) {
 }
 
 TEST(SvgWindow, WindowRectThenViewBoxThenSize) {
-  const Scene with_rect = read(R"(<rect id="window" x="10" y="10" width="50" height="40"/><circle r="1" cx="20" cy="20"/>)");
+  const Scene with_rect = read(
+      R"(<rect id="window" x="10" y="10" width="50" height="40"/><circle r="1" cx="20" cy="20"/>)");
   EXPECT_EQ(with_rect.elements.size(), 1u);
   EXPECT_EQ(with_rect.window.min(), Vec3(10, 10, 0));
   EXPECT_EQ(with_rect.window.max(), Vec3(60, 50, 0));
   const Scene view_box = read(R"(<circle r="1" cx="20" cy="20"/>)");
   EXPECT_EQ(view_box.window.max(), Vec3(100, 100, 0));
-  const Scene sized = parse_svg(R"(<svg xmlns="http://www.w3.org/2000/svg" width="30mm" height="20mm"><circle r="1" cx="2" cy="2"/></svg>)",
-                                "sized.svg", {});
+  const Scene sized = parse_svg(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="30mm" height="20mm"><circle r="1" cx="2" cy="2"/></svg>)",
+      "sized.svg", {});
   EXPECT_NEAR(sized.window.max().x(), 30 * 96 / 25.4, 1e-9);
-  const Scene mm = parse_svg(R"(<svg xmlns="http://www.w3.org/2000/svg" width="30mm" height="20mm" viewBox="0 0 30 20"><circle r="1" cx="2" cy="2"/></svg>)",
-                             "mm.svg", {});
+  const Scene mm = parse_svg(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="30mm" height="20mm" viewBox="0 0 30 20"><circle r="1" cx="2" cy="2"/></svg>)",
+      "mm.svg", {});
   EXPECT_EQ(mm.units, "mm");
 }
 

@@ -62,7 +62,8 @@ TEST(SynthesisRecordIo, RoundTripsThroughEveryOutputFormat) {
 }
 
 TEST(SynthesisRecordIo, OtherProvenanceIsNoRecordAndABrokenRecordIsAnError) {
-  EXPECT_FALSE(parse_synthesis_record(R"({"tool":"shapeproc","command":"convert"})", "x.svg").has_value());
+  EXPECT_FALSE(
+      parse_synthesis_record(R"({"tool":"shapeproc","command":"convert"})", "x.svg").has_value());
   EXPECT_FALSE(parse_synthesis_record("not json", "x.svg").has_value());
   try {
     parse_synthesis_record(R"({"synthesis":{"method":"shape-process","seed":"one"}})", "x.svg");
@@ -74,11 +75,14 @@ TEST(SynthesisRecordIo, OtherProvenanceIsNoRecordAndABrokenRecordIsAnError) {
 
 TEST(SynthesisRecord, SummaryForReports) {
   synthesis::SynthesisRecord r = example_record();
-  EXPECT_EQ(r.summary(), "shapeproc synthesize, shape-process, seed 3, chain 2, 20000 steps, open, domain star.svg");
+  EXPECT_EQ(
+      r.summary(),
+      "shapeproc synthesize, shape-process, seed 3, chain 2, 20000 steps, open, domain star.svg");
   r.iterations = "stationary";
   r.chains = 1;
   r.domain_file.clear();
-  EXPECT_EQ(r.summary(), "shapeproc synthesize, shape-process, seed 3, 20000 steps (until stationary), open");
+  EXPECT_EQ(r.summary(),
+            "shapeproc synthesize, shape-process, seed 3, 20000 steps (until stationary), open");
 }
 
 }  // namespace

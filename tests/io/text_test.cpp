@@ -1,12 +1,12 @@
 #include "libshapeproc/io/text.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 
-#include <gtest/gtest.h>
-
-#include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 
 namespace shapeproc::io {

@@ -1,15 +1,16 @@
 // Metrics on configurations whose answers are known: overlapping squares, lattices, Poisson
-// patterns (G(r) = 1 − exp(−λπr²), g(r) = 1), and the neighbourhood distance of a stretched lattice.
+// patterns (G(r) = 1 − exp(−λπr²), g(r) = 1), and the neighbourhood distance of a stretched
+// lattice.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
+#include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/io/svg_reader.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
-#include "libshapeproc/core/random.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::metrics {
 namespace {
@@ -28,14 +29,16 @@ geometry::Scene point_scene(const std::vector<Vec3>& points, double width, doubl
 geometry::Scene lattice(double spacing, int columns, int rows) {
   std::vector<Vec3> points;
   for (int y = 0; y < rows; ++y)
-    for (int x = 0; x < columns; ++x) points.emplace_back((x + 0.5) * spacing, (y + 0.5) * spacing, 0.0);
+    for (int x = 0; x < columns; ++x)
+      points.emplace_back((x + 0.5) * spacing, (y + 0.5) * spacing, 0.0);
   return point_scene(points, columns * spacing, rows * spacing);
 }
 
 geometry::Scene poisson(double width, double height, int count, std::uint64_t seed) {
   core::Random random(seed);
   std::vector<Vec3> points;
-  for (int i = 0; i < count; ++i) points.emplace_back(random.uniform(0, width), random.uniform(0, height), 0.0);
+  for (int i = 0; i < count; ++i)
+    points.emplace_back(random.uniform(0, width), random.uniform(0, height), 0.0);
   return point_scene(points, width, height);
 }
 
@@ -86,7 +89,8 @@ TEST(Collisions, NestedAndTouchingShapesCollideSeparateOnesDoNot) {
     <rect x="10" y="10" width="40" height="40"/><rect x="20" y="20" width="10" height="10"/>
     <rect x="60" y="10" width="10" height="10"/><rect x="70" y="10" width="10" height="10"/>
     <rect x="60" y="60" width="10" height="10"/><rect x="71" y="60" width="10" height="10"/></svg>)";
-  const SceneStatistics s = compute_statistics(io::parse_svg(svg, "nested.svg", {}), StatisticsOptions{});
+  const SceneStatistics s =
+      compute_statistics(io::parse_svg(svg, "nested.svg", {}), StatisticsOptions{});
   EXPECT_EQ(s.collisions.pairs.size(), 2u);  // nested, touching; the last two are 1 apart
   EXPECT_EQ(s.collisions.elements, 4);
 }
@@ -134,7 +138,8 @@ TEST(SceneStatistics, PoissonNearestNeighbourDistribution) {
     for (double r = 0.25; r < 4.0; r += 0.25) {
       const double expected = 1.0 - std::exp(-lambda * core::kPi * r * r);
       const double se = std::sqrt(expected * (1.0 - expected) / used);
-      EXPECT_NEAR(s.all.nearest.cdf(r), expected, 4.0 * se + 1e-3) << "r = " << r << (periodic ? " torus" : " open");
+      EXPECT_NEAR(s.all.nearest.cdf(r), expected, 4.0 * se + 1e-3)
+          << "r = " << r << (periodic ? " torus" : " open");
     }
   }
 }
@@ -149,7 +154,8 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   const SceneStatistics s = compute_statistics(points, o);
   for (std::size_t k = 0; k < s.correlation.size(); ++k) {
     const double expected_pairs = 2000.0 * (2000.0 - 1) / 10000.0 * core::kPi *
-                                  (std::pow((static_cast<double>(k) + 1) * 0.5, 2) - std::pow(static_cast<double>(k) * 0.5, 2));  // ordered pairs
+                                  (std::pow((static_cast<double>(k) + 1) * 0.5, 2) -
+                                   std::pow(static_cast<double>(k) * 0.5, 2));  // ordered pairs
     EXPECT_NEAR(s.correlation[k], 1.0, 4.0 * std::sqrt(2.0 / expected_pairs)) << "bin " << k;
   }
 
@@ -168,7 +174,8 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   for (std::size_t k = 0; k < q.correlation.size(); ++k) {
     // Offsets u with d in [2k, 2k + 2) between two 8 x 4 rectangles (Steiner: the 16 x 8 Minkowski
     // sum grown by r has area 128 + 48 r + π r²; bin 0 also holds the overlaps).
-    const double band = 96.0 + 4.0 * core::kPi * (2.0 * static_cast<double>(k) + 1.0) + (k == 0 ? 128.0 : 0.0);
+    const double band =
+        96.0 + 4.0 * core::kPi * (2.0 * static_cast<double>(k) + 1.0) + (k == 0 ? 128.0 : 0.0);
     const double expected_pairs = 3000.0 * 2999.0 / 160000.0 * band;
     EXPECT_NEAR(q.correlation[k], 1.0, 4.0 * std::sqrt(2.0 / expected_pairs) + 0.03) << "bin " << k;
   }
@@ -176,7 +183,8 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
 
 TEST(NeighbourhoodDistance, ZeroAgainstItselfAndStretchedLatticeExact) {
   const geometry::Scene exemplar = lattice(10.0, 21, 21);
-  const NeighbourhoodDistance self = average_neighbourhood_distance(exemplar, false, exemplar, false);
+  const NeighbourhoodDistance self =
+      average_neighbourhood_distance(exemplar, false, exemplar, false);
   EXPECT_DOUBLE_EQ(self.mean, 0.0);
   EXPECT_DOUBLE_EQ(self.radius, 20.0);
   EXPECT_GT(self.output_centres, 100);
@@ -189,9 +197,11 @@ TEST(NeighbourhoodDistance, ZeroAgainstItselfAndStretchedLatticeExact) {
   for (int i = -3; i <= 3; ++i)
     for (int j = -3; j <= 3; ++j) {
       const double len = spacing * (1 + eps) * std::hypot(i, j);
-      if ((i != 0 || j != 0) && len < radius) expected += std::pow(eps * spacing, 2) * (i * i + j * j);
+      if ((i != 0 || j != 0) && len < radius)
+        expected += std::pow(eps * spacing, 2) * (i * i + j * j);
     }
-  const NeighbourhoodDistance d = average_neighbourhood_distance(output, true, exemplar, false, radius);
+  const NeighbourhoodDistance d =
+      average_neighbourhood_distance(output, true, exemplar, false, radius);
   EXPECT_NEAR(d.mean, expected, 1e-9 * expected);
   EXPECT_EQ(d.output_centres, 100);
 }

@@ -1,8 +1,8 @@
 #include "libshapeproc/model/interaction.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace shapeproc::model {
 namespace {
@@ -36,7 +36,8 @@ ShapeProcessModel two_category_model() {
 TEST(Interaction, BandsParametersAndLocationsOnATinyModel) {
   const Interaction interaction(two_category_model());
   EXPECT_EQ(interaction.category_count(), 2);
-  // θ: β_a, β_b, then (0,0) axis 0 bands 0-1, axis 1 band 0, then (0,1) axis 0 band 0, axis 1 band 0.
+  // θ: β_a, β_b, then (0,0) axis 0 bands 0-1, axis 1 band 0, then (0,1) axis 0 band 0, axis 1 band
+  // 0.
   EXPECT_EQ(interaction.parameter_count(), 2 + 3 + 2);
   EXPECT_DOUBLE_EQ(interaction.range(), 5.0);
   EXPECT_TRUE(interaction.interacts(0, 1));

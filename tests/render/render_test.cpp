@@ -13,7 +13,9 @@ namespace {
 
 // A 100 x 50 window with a black 20 x 20 square whose top-left corner is at (10, 10).
 geometry::Scene square_scene(const testing::TempDir& dir) {
-  const auto file = dir.write("square.svg", R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50" viewBox="0 0 100 50">
+  const auto file = dir.write(
+      "square.svg",
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50" viewBox="0 0 100 50">
   <rect x="10" y="10" width="20" height="20" fill="black"/></svg>)");
   return io::read_scene(file, {});
 }

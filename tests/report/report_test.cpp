@@ -1,9 +1,8 @@
-#include "libshapeproc/report/html_report.hpp"
-
 #include <gtest/gtest.h>
 
 #include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/report/html_report.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::report {
@@ -30,7 +29,8 @@ TEST(HtmlReport, WritesPagePicturesAtOneScaleAndMetrics) {
 
   Report report;
   report.exemplar = {"dots-random.svg", &exemplar, &reference, nullptr, nullptr, ""};
-  report.outputs.push_back({"twice.svg", &output, &stats, &comparison, &neighbourhood, "shapeproc test, seed 1"});
+  report.outputs.push_back(
+      {"twice.svg", &output, &stats, &comparison, &neighbourhood, "shapeproc test, seed 1"});
   report.command = "shapeproc report dots-random.svg twice.svg";
   write_report(report, dir.path() / "r");
 

@@ -1,13 +1,13 @@
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
 
-#include "libshapeproc/geometry/pair_measurements.hpp"
-#include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/io/model_io.hpp"
+#include <cmath>
 #include <memory>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/io/model_io.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -15,8 +15,8 @@ namespace {
 using geometry::Box3;
 using geometry::Vec3;
 
-SampleResult sample_with_seed(const model::ShapeProcessModel& m, const geometry::Domain& domain, const SamplerOptions& options,
-                              std::uint64_t seed) {
+SampleResult sample_with_seed(const model::ShapeProcessModel& m, const geometry::Domain& domain,
+                              const SamplerOptions& options, std::uint64_t seed) {
   core::Random random(seed);
   return sample_shape_process(m, domain, options, random);
 }
@@ -37,7 +37,9 @@ TEST(BirthDeath, PoissonCountsFollowPoisson) {
   for (int seed = 1; seed <= runs; ++seed) {
     SamplerOptions options;
     options.iterations = 4000;
-    counts.push_back(static_cast<double>(sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements.size()));
+    counts.push_back(
+        static_cast<double>(sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed))
+                                .scene.elements.size()));
   }
   double mean = 0, variance = 0;
   for (double c : counts) mean += c / runs;
@@ -68,8 +70,11 @@ TEST(BirthDeath, HardCoreIsNeverViolated) {
   const geometry::PairMeasurer measurer(result.scene, m.measurement_options(true));
   for (std::size_t i = 0; i < result.scene.elements.size(); ++i) {
     for (std::size_t j = i + 1; j < result.scene.elements.size(); ++j) {
-      const geometry::Measurement pair = measurer.measure(result.scene.elements[i], result.scene.elements[j]);
-      EXPECT_GE(pair.distance, m.interactions[0].axes[static_cast<std::size_t>(pair.axis)].thresholds[0]) << i << " " << j;
+      const geometry::Measurement pair =
+          measurer.measure(result.scene.elements[i], result.scene.elements[j]);
+      EXPECT_GE(pair.distance,
+                m.interactions[0].axes[static_cast<std::size_t>(pair.axis)].thresholds[0])
+          << i << " " << j;
     }
   }
 }
@@ -82,7 +87,8 @@ TEST(BirthDeath, SameSeedSameOutput) {
   const SampleResult a = sample_with_seed(m, domain, options, 5);
   const SampleResult b = sample_with_seed(m, domain, options, 5);
   ASSERT_EQ(a.scene.elements.size(), b.scene.elements.size());
-  for (std::size_t i = 0; i < a.scene.elements.size(); ++i) EXPECT_EQ(a.scene.elements[i].position, b.scene.elements[i].position);
+  for (std::size_t i = 0; i < a.scene.elements.size(); ++i)
+    EXPECT_EQ(a.scene.elements[i].position, b.scene.elements[i].position);
   const SampleResult c = sample_with_seed(m, domain, options, 6);
   EXPECT_TRUE(c.scene.elements.size() != a.scene.elements.size() ||
               c.scene.elements.front().position != a.scene.elements.front().position);
@@ -115,7 +121,8 @@ TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
   for (int seed = 1; seed <= runs; ++seed) {
     SamplerOptions options;
     options.iterations = 400;
-    const std::size_t n = sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements.size();
+    const std::size_t n = sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed))
+                              .scene.elements.size();
     ASSERT_LE(n, 2u);
     ++observed[n];
   }
@@ -124,7 +131,8 @@ TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
     const double expected = runs * weights[n] / total;
     chi2 += (observed[n] - expected) * (observed[n] - expected) / expected;
   }
-  EXPECT_LT(chi2, 13.8) << "P(chi2_2 > 13.8) = 0.001; observed " << observed[0] << " " << observed[1] << " " << observed[2];
+  EXPECT_LT(chi2, 13.8) << "P(chi2_2 > 13.8) = 0.001; observed " << observed[0] << " "
+                        << observed[1] << " " << observed[2];
 }
 
 geometry::Raster raster(int width, int height, float (*value)(int, int)) {
@@ -153,9 +161,11 @@ TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
     const geometry::Proxy2& proxy = measurer.proxies2()[static_cast<std::size_t>(e.shape)];
     for (std::size_t k = 0; k < proxy.segment_start.size(); ++k) {
       for (double t = 0; t <= 1.0; t += 0.05) {
-        const geometry::Vec2 p = e.position.head<2>() + proxy.segment_start[k] + t * (proxy.segment_end[k] - proxy.segment_start[k]);
+        const geometry::Vec2 p = e.position.head<2>() + proxy.segment_start[k] +
+                                 t * (proxy.segment_end[k] - proxy.segment_start[k]);
         const double r = std::hypot(p.x() - 40, p.y() - 40);
-        EXPECT_TRUE(r >= 19.5 && r <= 38.5) << "element at " << e.position.transpose() << " reaches radius " << r;
+        EXPECT_TRUE(r >= 19.5 && r <= 38.5)
+            << "element at " << e.position.transpose() << " reaches radius " << r;
       }
     }
   }
@@ -165,12 +175,15 @@ TEST(BirthDeath, IntensityMapScalesTheDensity) {
   // Left half 0.25, right half 0.75: of a Poisson pattern's points, 3/4 fall on the right.
   const model::ShapeProcessModel m = poisson_points(0.05);
   geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
-  domain.set_intensity(std::make_shared<const geometry::Raster>(raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; })));
+  domain.set_intensity(std::make_shared<const geometry::Raster>(
+      raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; })));
   int left = 0, right = 0;
   for (int seed = 1; seed <= 60; ++seed) {
     SamplerOptions options;
     options.iterations = 6000;
-    for (const geometry::Element& e : sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements) (e.position.x() < 20 ? left : right)++;
+    for (const geometry::Element& e :
+         sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed)).scene.elements)
+      (e.position.x() < 20 ? left : right)++;
   }
   const double n = left + right;
   EXPECT_NEAR(n / 60, 0.05 * 1600 * 0.5, 4 * std::sqrt(40.0 / 60));
@@ -178,8 +191,8 @@ TEST(BirthDeath, IntensityMapScalesTheDensity) {
 }
 
 // Fit → sample → refit: an anisotropic Strauss-type point process (mild inhibition along x,
-// strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus, refitted with its own thresholds: every
-// parameter within 3 standard errors of the truth.
+// strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus, refitted with its
+// own thresholds: every parameter within 3 standard errors of the truth.
 TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   model::ShapeProcessModel truth = poisson_points(0.02);
   truth.measurement.directions = 4;
@@ -194,7 +207,8 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   along_y.gammas = {0.2, 0.5};
   pair.axes = {along_x, along_y};
   truth.interactions.push_back(pair);
-  const geometry::Domain domain = geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
+  const geometry::Domain domain =
+      geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
   SamplerOptions options;
   const SampleResult sampled = sample_with_seed(truth, domain, options, 2024);
   ASSERT_GT(sampled.scene.elements.size(), 700u);
@@ -211,7 +225,8 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   for (std::size_t a = 0; a < 2; ++a) {
     const auto& fitted = refit.model.interactions[0].axes[a];
     for (std::size_t k = 0; k < 2; ++k) {
-      EXPECT_NEAR(fitted.gammas[k], truth.interactions[0].axes[a].gammas[k], 3 * fitted.gamma_standard_errors[k])
+      EXPECT_NEAR(fitted.gammas[k], truth.interactions[0].axes[a].gammas[k],
+                  3 * fitted.gamma_standard_errors[k])
           << "axis " << a << " band " << k + 1;
     }
   }

@@ -14,11 +14,11 @@
 
 #include <cmath>
 
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
-#include "libshapeproc/core/random.hpp"
 #include "tests/test_support.hpp"
 
 namespace shapeproc::sample {
@@ -38,13 +38,16 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
   const std::string name = GetParam();
   io::ReaderOptions reader;
   if (name == "two-kinds") reader.category_by = io::CategoryRule::parse("fill");
-  const geometry::Scene exemplar = io::read_scene(testing::data_path("svg/" + name + ".svg"), reader);
+  const geometry::Scene exemplar =
+      io::read_scene(testing::data_path("svg/" + name + ".svg"), reader);
   const fit::FitResult fitted = fit::fit_shape_process(exemplar, fit::FitOptions{});
 
   const Vec3 size = exemplar.window.sizes();
-  const geometry::Domain domain = geometry::Domain::from_sizes({2 * size.x(), 2 * size.y()}, geometry::Boundary::torus);
+  const geometry::Domain domain =
+      geometry::Domain::from_sizes({2 * size.x(), 2 * size.y()}, geometry::Boundary::torus);
   core::Random chain_random(1);
-  const SampleResult result = sample_shape_process(fitted.model, domain, SamplerOptions{}, chain_random);
+  const SampleResult result =
+      sample_shape_process(fitted.model, domain, SamplerOptions{}, chain_random);
   const geometry::Scene& output = result.scene;
 
   metrics::StatisticsOptions open;
@@ -55,26 +58,32 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
   const metrics::SceneStatistics stats = metrics::compute_statistics(output, torus);
   const metrics::Comparison c = metrics::compare(stats, reference);
 
-  EXPECT_TRUE(stats.collisions.pairs.empty()) << stats.collisions.pairs.size() << " colliding pairs";
+  EXPECT_TRUE(stats.collisions.pairs.empty())
+      << stats.collisions.pairs.size() << " colliding pairs";
   for (std::size_t k = 0; k < stats.categories.size() && name != "dots-random"; ++k) {
     const double n = reference.counts.at(k);
-    EXPECT_NEAR(c.intensity_ratio[k], 1.0, 3.0 / std::sqrt(n)) << name << " category " << stats.categories[k];
+    EXPECT_NEAR(c.intensity_ratio[k], 1.0, 3.0 / std::sqrt(n))
+        << name << " category " << stats.categories[k];
   }
 
   // The same elements, placed independently.
   geometry::Scene independent = output;
   core::Random random(2);
   for (geometry::Element& e : independent.elements) {
-    e.position = Vec3(random.uniform(0, domain.box().max().x()), random.uniform(0, domain.box().max().y()), 0.0);
+    e.position = Vec3(random.uniform(0, domain.box().max().x()),
+                      random.uniform(0, domain.box().max().y()), 0.0);
   }
-  const metrics::Comparison baseline = metrics::compare(metrics::compute_statistics(independent, torus), reference);
+  const metrics::Comparison baseline =
+      metrics::compare(metrics::compute_statistics(independent, torus), reference);
   EXPECT_LT(c.all.nearest, baseline.all.nearest) << name;
   EXPECT_LT(mean_axis_w1(c), mean_axis_w1(baseline)) << name;
-  RecordProperty("w1_nearest", std::to_string(c.all.nearest) + " vs independent " + std::to_string(baseline.all.nearest));
+  RecordProperty("w1_nearest", std::to_string(c.all.nearest) + " vs independent " +
+                                   std::to_string(baseline.all.nearest));
 }
 
 INSTANTIATE_TEST_SUITE_P(Exemplars, ShippedOutputs,
-                         ::testing::Values("dots-random", "dashes-rows", "two-kinds", "crescents-grid"));
+                         ::testing::Values("dots-random", "dashes-rows", "two-kinds",
+                                           "crescents-grid"));
 
 }  // namespace
 }  // namespace shapeproc::sample

@@ -1,9 +1,9 @@
 #include "libshapeproc/synthesis/run_chains.hpp"
 
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "libshapeproc/core/error.hpp"
 
@@ -14,12 +14,14 @@ namespace {
 // `failing` (its chain seed) throws.
 class RandomPoints : public Synthesizer {
  public:
-  explicit RandomPoints(long long steps, std::uint64_t failing_seed = 0) : steps_(steps), failing_seed_(failing_seed) {}
+  explicit RandomPoints(long long steps, std::uint64_t failing_seed = 0)
+      : steps_(steps), failing_seed_(failing_seed) {}
   std::string method() const override { return "random-points"; }
   SynthesisResult synthesize(core::Random& random, const ChainControl& control) const override {
     SynthesisResult result;
     const double first = random.uniform();
-    if (failing_seed_ != 0 && seed_of(first) == failing_seed_) throw core::UsageError("chain failed");
+    if (failing_seed_ != 0 && seed_of(first) == failing_seed_)
+      throw core::UsageError("chain failed");
     geometry::Element e;
     e.position = geometry::Vec3(first, 0, 0);
     result.scene.elements.push_back(e);
@@ -82,7 +84,8 @@ TEST(RunChains, ResultsInChainOrderWhateverTheThreads) {
     EXPECT_GE(r.record.seconds, 0.0);
     ASSERT_EQ(r.scene.elements.size(), three[static_cast<std::size_t>(c)].scene.elements.size());
     for (std::size_t i = 0; i < r.scene.elements.size(); ++i) {
-      EXPECT_EQ(r.scene.elements[i].position, three[static_cast<std::size_t>(c)].scene.elements[i].position);
+      EXPECT_EQ(r.scene.elements[i].position,
+                three[static_cast<std::size_t>(c)].scene.elements[i].position);
     }
   }
   EXPECT_NE(one[0].scene.elements[1].position, one[1].scene.elements[1].position);

@@ -1,15 +1,14 @@
 // The command line, run in-process: exit codes, one-line errors, nothing half-written.
 #include "tools/cli/cli.hpp"
 
-#include <sstream>
-
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
+#include <sstream>
 
 #include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/render/raster.hpp"
-
 #include "tests/test_support.hpp"
 
 namespace shapeproc::cli {
@@ -57,13 +56,16 @@ TEST(Cli, NonsenseFlags) {
   expect_one_line_error(run_cli({}), 2, "subcommand");
   expect_one_line_error(run_cli({"frobnicate"}), 2, "frobnicate");
   expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--bogus"}), 2, "--bogus");
-  expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--category-by", "colour"}), 2,
-                        "--category-by");
-  expect_one_line_error(run_cli({"info", data("points/clusters.csv"), "--window", "0,1,2"}), 2, "--window");
-  expect_one_line_error(run_cli({"info", data("mesh/pebbles.obj"), "--split", "faces"}), 2, "--split");
+  expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--category-by", "colour"}),
+                        2, "--category-by");
+  expect_one_line_error(run_cli({"info", data("points/clusters.csv"), "--window", "0,1,2"}), 2,
+                        "--window");
+  expect_one_line_error(run_cli({"info", data("mesh/pebbles.obj"), "--split", "faces"}), 2,
+                        "--split");
   expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg")}), 2, "--output");
-  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "--data-weight", "1", "-o", "unused.json"}), 2,
-                        "--data-weight");
+  expect_one_line_error(
+      run_cli({"fit", data("svg/dots-random.svg"), "--data-weight", "1", "-o", "unused.json"}), 2,
+      "--data-weight");
 }
 
 TEST(Cli, InfoTextAndJson) {
@@ -102,7 +104,8 @@ TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
   const testing::TempDir dir;
   dir.write("malformed.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<g>\n</svg>\n");
   dir.write("nowindow.csv", "x,y\n1,2\n");
-  dir.write("nm.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  dir.write("nm.off",
+            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
   dir.write("notes.txt", "hello\n");
   const std::string previous = "previous contents\n";
   const std::string out_svg = dir.write("out.svg", previous).string();
@@ -111,9 +114,11 @@ TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
     std::string message;
   };
   const std::vector<Case> cases = {
-      {{"convert", dir.file("malformed.svg").string(), "-o", out_svg}, "malformed.svg:3: malformed XML"},
+      {{"convert", dir.file("malformed.svg").string(), "-o", out_svg},
+       "malformed.svg:3: malformed XML"},
       {{"convert", dir.file("missing.svg").string(), "-o", out_svg}, "missing.svg: no such file"},
-      {{"convert", dir.file("nowindow.csv").string(), "-o", out_svg}, "nowindow.csv: a CSV point pattern needs --window"},
+      {{"convert", dir.file("nowindow.csv").string(), "-o", out_svg},
+       "nowindow.csv: a CSV point pattern needs --window"},
       {{"convert", dir.file("nm.off").string(), "-o", out_svg}, "nm.off: non-manifold"},
       {{"convert", dir.file("notes.txt").string(), "-o", out_svg}, "unknown format"},
       {{"convert", data("mesh/pebbles.obj"), "-o", out_svg}, "2D scenes only"},
@@ -123,7 +128,8 @@ TEST(Cli, BadInputExitsTwoAndLeavesTheOutputAlone) {
     EXPECT_EQ(testing::read_file(out_svg), previous);
   }
   const std::string out_bmp = dir.file("out.bmp").string();
-  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg"), "-o", out_bmp}), 2, "unknown output format");
+  expect_one_line_error(run_cli({"convert", data("svg/dots-random.svg"), "-o", out_bmp}), 2,
+                        "unknown output format");
   EXPECT_FALSE(std::filesystem::exists(out_bmp));
   // Nothing else was left in the directory (no temporary files).
   std::size_t files = 0;
@@ -143,7 +149,8 @@ namespace {
 TEST(CliFit, FitShowAndPlot) {
   const testing::TempDir dir;
   const std::string model = dir.file("m.json").string();
-  const Result fit = run_cli({"fit", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", model});
+  const Result fit = run_cli({"fit", data("svg/two-kinds.svg"), "--category-by", "fill",
+                              "--quadrature", "8", "-o", model});
   ASSERT_EQ(fit.code, 0) << fit.err;
   EXPECT_NE(fit.out.find("intensity beta"), std::string::npos);
   EXPECT_NE(fit.out.find("interaction #e53e3e - #3182ce"), std::string::npos) << fit.out;
@@ -163,15 +170,20 @@ TEST(CliFit, FitShowAndPlot) {
 TEST(CliFit, BadInputAndOptions) {
   const testing::TempDir dir;
   dir.write("broken.json", "{\"format\": \"shapeproc-model\",\n \"version\": 1,\n}");
-  expect_one_line_error(run_cli({"show", dir.file("broken.json").string()}), 2, "broken.json:3: malformed JSON");
-  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--quantiles", "0.2,0.1"}),
+  expect_one_line_error(run_cli({"show", dir.file("broken.json").string()}), 2,
+                        "broken.json:3: malformed JSON");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o",
+                                 dir.file("m.json").string(), "--quantiles", "0.2,0.1"}),
                         2, "quantile orders must increase");
-  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--quantiles", "0,0.1",
-                                 "--thresholds", "1,2"}),
-                        2, "excludes");
-  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.txt").string()}), 2, ".json");
-  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--directions", "3"}), 2,
-                        "even number");
+  expect_one_line_error(
+      run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.json").string(), "--quantiles",
+               "0,0.1", "--thresholds", "1,2"}),
+      2, "excludes");
+  expect_one_line_error(
+      run_cli({"fit", data("svg/dots-random.svg"), "-o", dir.file("m.txt").string()}), 2, ".json");
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "-o",
+                                 dir.file("m.json").string(), "--directions", "3"}),
+                        2, "even number");
   EXPECT_FALSE(std::filesystem::exists(dir.file("m.json")));
 }
 
@@ -184,62 +196,85 @@ namespace {
 TEST(CliSample, SampleRecordsSeedAndParameters) {
   const testing::TempDir dir;
   const std::string model = dir.file("m.json").string();
-  ASSERT_EQ(run_cli({"fit", data("third-party/hero-patterns/bubbles.svg"), "--split-subpaths", "--quadrature", "8", "-o", model}).code, 0);
+  ASSERT_EQ(run_cli({"fit", data("third-party/hero-patterns/bubbles.svg"), "--split-subpaths",
+                     "--quadrature", "8", "-o", model})
+                .code,
+            0);
   const std::string out = dir.file("out.svg").string();
-  const Result r = run_cli({"sample", model, "-o", out, "--size", "200,200", "--seed", "7", "--iterations", "3000",
-                            "--trace", dir.file("trace.csv").string()});
+  const Result r = run_cli({"sample", model, "-o", out, "--size", "200,200", "--seed", "7",
+                            "--iterations", "3000", "--trace", dir.file("trace.csv").string()});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string svg = testing::read_file(out);
   EXPECT_NE(svg.find("&quot;seed&quot;:7"), std::string::npos);
   EXPECT_NE(svg.find("viewBox=\"0 0 200 200\""), std::string::npos);
   const std::string trace = testing::read_file(dir.file("trace.csv"));
-  EXPECT_EQ(trace.rfind("# shapeproc sample seed 7 chain 1\nstep,elements,log_density\n", 0), 0u) << trace.substr(0, 80);
+  EXPECT_EQ(trace.rfind("# shapeproc sample seed 7 chain 1\nstep,elements,log_density\n", 0), 0u)
+      << trace.substr(0, 80);
   // Same seed, same output.
   const std::string again = dir.file("again.svg").string();
-  ASSERT_EQ(run_cli({"sample", model, "-o", again, "--size", "200,200", "--seed", "7", "--iterations", "3000"}).code, 0);
+  ASSERT_EQ(run_cli({"sample", model, "-o", again, "--size", "200,200", "--seed", "7",
+                     "--iterations", "3000"})
+                .code,
+            0);
   const auto body = [](const std::string& text) { return text.substr(text.find("</metadata>")); };
   EXPECT_EQ(body(testing::read_file(again)), body(svg));
   expect_one_line_error(run_cli({"sample", model, "-o", out, "--size", "200"}), 2, "--size");
-  expect_one_line_error(run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1"}), 2, "no such file");
+  expect_one_line_error(
+      run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1"}), 2,
+      "no such file");
 }
 
 TEST(CliSample, ChainsDomainsMapsAndPictures) {
   const testing::TempDir dir;
   const std::string model = dir.file("m.json").string();
-  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code, 0);
+  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code,
+            0);
   // Chains: suffixed outputs, the same whatever the thread count.
   for (const char* threads : {"1", "2"}) {
-    const Result r = run_cli({"sample", model, "-o", dir.file(std::string("t") + threads + ".csv").string(), "--size", "300,300",
-                              "--chains", "2", "--threads", threads, "--iterations", "4000", "--seed", "9"});
+    const Result r = run_cli(
+        {"sample", model, "-o", dir.file(std::string("t") + threads + ".csv").string(), "--size",
+         "300,300", "--chains", "2", "--threads", threads, "--iterations", "4000", "--seed", "9"});
     ASSERT_EQ(r.code, 0) << r.err;
   }
-  const auto body = [](const std::string& text) { return text.substr(text.find("\nx,") == std::string::npos ? 0 : text.find("\nx,")); };
-  EXPECT_EQ(body(testing::read_file(dir.file("t1-1.csv"))), body(testing::read_file(dir.file("t2-1.csv"))));
-  EXPECT_EQ(body(testing::read_file(dir.file("t1-2.csv"))), body(testing::read_file(dir.file("t2-2.csv"))));
-  EXPECT_NE(body(testing::read_file(dir.file("t1-1.csv"))), body(testing::read_file(dir.file("t1-2.csv"))));
+  const auto body = [](const std::string& text) {
+    return text.substr(text.find("\nx,") == std::string::npos ? 0 : text.find("\nx,"));
+  };
+  EXPECT_EQ(body(testing::read_file(dir.file("t1-1.csv"))),
+            body(testing::read_file(dir.file("t2-1.csv"))));
+  EXPECT_EQ(body(testing::read_file(dir.file("t1-2.csv"))),
+            body(testing::read_file(dir.file("t2-2.csv"))));
+  EXPECT_NE(body(testing::read_file(dir.file("t1-1.csv"))),
+            body(testing::read_file(dir.file("t1-2.csv"))));
   // A star-shaped domain and a gradient map, with a PNG rendering.
   const std::string star = dir.file("star.svg").string(), png = dir.file("star.png").string();
-  const Result shaped = run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain", data("maps/star.svg"),
-                                 "--intensity", data("maps/gradient.png"), "--png", png, "--iterations", "20000"});
+  const Result shaped =
+      run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain", data("maps/star.svg"),
+               "--intensity", data("maps/gradient.png"), "--png", png, "--iterations", "20000"});
   ASSERT_EQ(shaped.code, 0) << shaped.err;
   EXPECT_EQ(testing::read_file(png).substr(0, 4), "\x89PNG");
-  EXPECT_NE(testing::read_file(star).find("star.svg"), std::string::npos);  // the domain is recorded
+  EXPECT_NE(testing::read_file(star).find("star.svg"),
+            std::string::npos);  // the domain is recorded
   // Bad domains and combinations.
-  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain", data("maps/star.svg"), "--boundary", "torus"}),
+  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain",
+                                 data("maps/star.svg"), "--boundary", "torus"}),
                         2, "--boundary torus");
   const std::string not_png = dir.write("fake.png", "not a png").string();
-  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("x.svg").string(), "--size", "40,40", "--intensity", not_png}), 2,
-                        "fake.png");
+  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("x.svg").string(), "--size",
+                                 "40,40", "--intensity", not_png}),
+                        2, "fake.png");
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
-  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "40,40", "--domain", data("svg/dots-random.csv")}), 2,
-                        "--domain");
+  expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "40,40", "--domain",
+                                 data("svg/dots-random.csv")}),
+                        2, "--domain");
 }
 
 TEST(CliEdit, EditsAreAppliedValidatedAndRecorded) {
   const testing::TempDir dir;
   const std::string model = dir.file("m.json").string(), edited = dir.file("e.json").string();
-  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code, 0);
-  const Result r = run_cli({"edit", model, "-o", edited, "--gamma", "0:*:1=0.25", "--beta", "default=0.002", "--scale-thresholds", "2"});
+  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "8", "-o", model}).code,
+            0);
+  const Result r = run_cli({"edit", model, "-o", edited, "--gamma", "0:*:1=0.25", "--beta",
+                            "default=0.002", "--scale-thresholds", "2"});
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json before = nlohmann::json::parse(testing::read_file(model));
   const nlohmann::json after = nlohmann::json::parse(testing::read_file(edited));
@@ -256,18 +291,23 @@ TEST(CliEdit, EditsAreAppliedValidatedAndRecorded) {
   ASSERT_EQ(iso.code, 0) << iso.err;
   EXPECT_EQ(nlohmann::json::parse(testing::read_file(edited))["interaction"][0]["axes"].size(), 1u);
   const std::string untouched = dir.file("u.json").string();
-  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:9:1=1"}), 2, "axis '9'");
-  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:0:1=-1"}), 2, "invalid");
-  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--beta", "nobody=1"}), 2, "category");
-  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--threshold", "0:0=3"}), 2, "PAIR:AXIS:INDEX");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:9:1=1"}), 2,
+                        "axis '9'");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--gamma", "0:0:1=-1"}), 2,
+                        "invalid");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--beta", "nobody=1"}), 2,
+                        "category");
+  expect_one_line_error(run_cli({"edit", model, "-o", untouched, "--threshold", "0:0=3"}), 2,
+                        "PAIR:AXIS:INDEX");
   EXPECT_FALSE(std::filesystem::exists(untouched));
 }
 
 TEST(CliSynthesize, FitsThenSamples) {
   const testing::TempDir dir;
   const std::string out = dir.file("out.svg").string(), model = dir.file("m.json").string();
-  const Result r = run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", out,
-                            "--model", model, "--size", "400,400", "--seed", "4", "--iterations", "10000"});
+  const Result r = run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill",
+                            "--quadrature", "8", "-o", out, "--model", model, "--size", "400,400",
+                            "--seed", "4", "--iterations", "10000"});
   ASSERT_EQ(r.code, 0) << r.err;
   // One short summary of the fit, not the whole model.
   EXPECT_NE(r.out.find("fitted: 2D"), std::string::npos) << r.out;
@@ -285,7 +325,8 @@ TEST(CliStats, TextJsonAndComparisons) {
   EXPECT_NE(text.out.find("collisions  0 pairs"), std::string::npos) << text.out;
 
   // Against itself: every distance is 0.
-  const Result self = run_cli({"stats", data("svg/dots-random.svg"), "--against", data("svg/dots-random.svg"), "--json"});
+  const Result self = run_cli(
+      {"stats", data("svg/dots-random.svg"), "--against", data("svg/dots-random.svg"), "--json"});
   ASSERT_EQ(self.code, 0) << self.err;
   const nlohmann::json j = nlohmann::json::parse(self.out);
   EXPECT_EQ(j["elements"], 30);
@@ -296,8 +337,10 @@ TEST(CliStats, TextJsonAndComparisons) {
 
   // A sampled output knows it lives on a torus.
   const std::string out = dir.file("out.svg").string();
-  ASSERT_EQ(run_cli({"synthesize", data("svg/dots-random.svg"), "--quadrature", "8", "-o", out, "--size", "300,300",
-                     "--seed", "2", "--iterations", "20000"}).code, 0);
+  ASSERT_EQ(run_cli({"synthesize", data("svg/dots-random.svg"), "--quadrature", "8", "-o", out,
+                     "--size", "300,300", "--seed", "2", "--iterations", "20000"})
+                .code,
+            0);
   const Result output = run_cli({"stats", out, "--against", data("svg/dots-random.svg"), "--json"});
   ASSERT_EQ(output.code, 0) << output.err;
   const nlohmann::json o = nlohmann::json::parse(output.out);
@@ -306,8 +349,11 @@ TEST(CliStats, TextJsonAndComparisons) {
   EXPECT_GT(o["all"]["w1"]["nearest"].get<double>(), 0.0);
 
   expect_one_line_error(run_cli({"stats", dir.file("none.svg").string()}), 2, "none.svg");
-  expect_one_line_error(run_cli({"stats", data("svg/dots-random.svg"), "--edge", "sideways"}), 2, "--edge");
-  expect_one_line_error(run_cli({"stats", data("svg/dots-random.svg"), "--against", data("mesh/pebbles.obj")}), 2, "3D");
+  expect_one_line_error(run_cli({"stats", data("svg/dots-random.svg"), "--edge", "sideways"}), 2,
+                        "--edge");
+  expect_one_line_error(
+      run_cli({"stats", data("svg/dots-random.svg"), "--against", data("mesh/pebbles.obj")}), 2,
+      "3D");
 }
 
 // Mean and spread of a PNG's grey levels: a blank picture has no spread.
@@ -325,11 +371,14 @@ double grey_spread(const std::filesystem::path& png) {
 TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   const testing::TempDir dir;
   const std::string out = dir.file("out.svg").string(), model = dir.file("m.json").string();
-  ASSERT_EQ(run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8", "-o", out,
-                     "--model", model, "--size", "300,300", "--seed", "4", "--iterations", "20000"}).code, 0);
+  ASSERT_EQ(run_cli({"synthesize", data("svg/two-kinds.svg"), "--category-by", "fill",
+                     "--quadrature", "8", "-o", out, "--model", model, "--size", "300,300",
+                     "--seed", "4", "--iterations", "20000"})
+                .code,
+            0);
   const std::filesystem::path report = dir.file("report");
-  const Result r = run_cli({"report", data("svg/two-kinds.svg"), out, "--category-by", "fill", "--model", model, "-o",
-                            report.string()});
+  const Result r = run_cli({"report", data("svg/two-kinds.svg"), out, "--category-by", "fill",
+                            "--model", model, "-o", report.string()});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("0 colliding pairs"), std::string::npos) << r.out;
 
@@ -344,7 +393,8 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   }
   EXPECT_GE(charts, 3 + 4 + 1);  // G, pairs, g, four axes, the interaction function
   std::vector<std::string> images;
-  for (const pugi::xpath_node& n : html.select_nodes("//img")) images.push_back(n.node().attribute("src").value());
+  for (const pugi::xpath_node& n : html.select_nodes("//img"))
+    images.push_back(n.node().attribute("src").value());
   ASSERT_EQ(images, (std::vector<std::string>{"exemplar.png", "output-1.png"}));
   for (const std::string& image : images) EXPECT_GT(grey_spread(report / image), 0.05) << image;
   // Both pictures share one scale: the 300-wide output is 300 / 220 times the exemplar's width.
@@ -358,10 +408,12 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
 
   // A missing output: one line naming it, and no report.
   const std::filesystem::path other = dir.file("other");
-  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"), dir.file("missing.svg").string(), "-o", other.string()}),
+  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"),
+                                 dir.file("missing.svg").string(), "-o", other.string()}),
                         2, "missing.svg");
   EXPECT_FALSE(std::filesystem::exists(other));
-  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"), out, "-o", out}), 2, "not a directory");
+  expect_one_line_error(run_cli({"report", data("svg/two-kinds.svg"), out, "-o", out}), 2,
+                        "not a directory");
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
 #include "tools/cli/cli.hpp"
 
-#include <algorithm>
-
 #include <CLI/CLI.hpp>
+#include <algorithm>
 
 #include "libshapeproc/core/error.hpp"
 #include "tools/cli/commands.hpp"
@@ -23,9 +22,10 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app("shapeproc: learn how the elements of an exemplar are arranged and synthesise new "
-               "arrangements (statistical discrete-element texture synthesis)",
-               "shapeproc");
+  CLI::App app(
+      "shapeproc: learn how the elements of an exemplar are arranged and synthesise new "
+      "arrangements (statistical discrete-element texture synthesis)",
+      "shapeproc");
   app.set_version_flag("--version", std::string("shapeproc ") + SHAPEPROC_VERSION);
   app.require_subcommand(1);
   app.fallthrough(false);
@@ -45,8 +45,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
 
   // CLI11 only says "a subcommand is required" for a misspelt one: name it.
   const std::vector<CLI::App*> subcommands = app.get_subcommands({});
-  const bool known = argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
-                                             [&](const CLI::App* sub) { return sub->get_name() == argv[1]; });
+  const bool known =
+      argc > 1 && std::any_of(subcommands.begin(), subcommands.end(),
+                              [&](const CLI::App* sub) { return sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && !known) {
     std::string names;
     for (const CLI::App* sub : subcommands) names += (names.empty() ? "" : ", ") + sub->get_name();

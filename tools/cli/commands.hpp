@@ -2,12 +2,11 @@
 // to the work to do once parsing succeeded.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace shapeproc::cli {
 
@@ -18,7 +17,8 @@ void add_convert_command(CLI::App& app, Action& action, const std::vector<std::s
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_show_command(CLI::App& app, Action& action);
 void add_sample_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
-void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_synthesize_command(CLI::App& app, Action& action,
+                            const std::vector<std::string>& arguments);
 void add_edit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_stats_command(CLI::App& app, Action& action);
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);

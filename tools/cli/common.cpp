@@ -12,8 +12,7 @@ void ReaderFlags::add_to(CLI::App& command) {
   command.add_option("--groups", groups, "SVG: a non-layer <g> is one element or a container")
       ->check(CLI::IsMember({"element", "container"}))
       ->capture_default_str();
-  command.add_option("--category-by", category_by,
-                     "SVG: none|fill|stroke|class|layer|attr:NAME")
+  command.add_option("--category-by", category_by, "SVG: none|fill|stroke|class|layer|attr:NAME")
       ->capture_default_str();
   command.add_option("--split", split, "meshes: elements are connected components or OBJ groups")
       ->check(CLI::IsMember({"components", "groups"}))
@@ -41,7 +40,8 @@ nlohmann::json ReaderFlags::to_json() const {
   return j;
 }
 
-void add_measurement_kind_options(CLI::App& command, std::string& distance, std::string& direction) {
+void add_measurement_kind_options(CLI::App& command, std::string& distance,
+                                  std::string& direction) {
   command.add_option("--distance", distance, "shape, centroid or hausdorff")
       ->check(CLI::IsMember({"shape", "centroid", "hausdorff"}))
       ->capture_default_str();
@@ -57,13 +57,17 @@ geometry::DistanceKind distance_kind(const std::string& name) {
 }
 
 geometry::DirectionKind direction_kind(const std::string& name) {
-  return name == "centroid" ? geometry::DirectionKind::centroid : geometry::DirectionKind::gravitation;
+  return name == "centroid" ? geometry::DirectionKind::centroid
+                            : geometry::DirectionKind::gravitation;
 }
 
 void check_output_extension(const std::string& file, const std::string& option) {
   const std::string extension = io::extension_of(file);
-  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "csv" || extension == "png") return;
-  throw core::UsageError(option + ": cannot write '" + file + "': expected .svg, .obj, .ply, .csv or .png (a picture)");
+  if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "csv" ||
+      extension == "png")
+    return;
+  throw core::UsageError(option + ": cannot write '" + file +
+                         "': expected .svg, .obj, .ply, .csv or .png (a picture)");
 }
 
 model::ShapeProcessModel read_model_argument(const std::string& file, const std::string& command) {
@@ -71,7 +75,8 @@ model::ShapeProcessModel read_model_argument(const std::string& file, const std:
   return io::read_model(file);
 }
 
-io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,
+io::Provenance make_provenance(const std::string& command,
+                               const std::vector<std::string>& arguments,
                                const nlohmann::json& parameters) {
   const nlohmann::json record = {{"tool", "shapeproc"},
                                  {"version", SHAPEPROC_VERSION},

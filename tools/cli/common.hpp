@@ -1,11 +1,10 @@
 // Pieces shared by the subcommands: reader options on the command line and provenance records.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/reader_options.hpp"
@@ -41,7 +40,8 @@ void check_output_extension(const std::string& file, const std::string& option);
 model::ShapeProcessModel read_model_argument(const std::string& file, const std::string& command);
 
 // Provenance of an output: tool, version, subcommand, the full argument list and parameters.
-io::Provenance make_provenance(const std::string& command, const std::vector<std::string>& arguments,
+io::Provenance make_provenance(const std::string& command,
+                               const std::vector<std::string>& arguments,
                                const nlohmann::json& parameters);
 
 }  // namespace shapeproc::cli

@@ -20,18 +20,19 @@ struct ConvertArguments {
 void add_convert_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<ConvertArguments>();
   CLI::App* command = app.add_subcommand(
-      "convert", "Read an exemplar (SVG, OBJ, PLY, OFF, STL, CSV) and write it as SVG, OBJ, PLY, "
-                 "CSV or a PNG picture, chosen by the extension of -o");
+      "convert",
+      "Read an exemplar (SVG, OBJ, PLY, OFF, STL, CSV) and write it as SVG, OBJ, PLY, "
+      "CSV or a PNG picture, chosen by the extension of -o");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
-  command->add_option("-o,--output", args->output, "output file (.svg, .obj, .ply, .csv, .png)")->required();
+  command->add_option("-o,--output", args->output, "output file (.svg, .obj, .ply, .csv, .png)")
+      ->required();
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
       const io::ReaderOptions options = args->reader.options();
       const geometry::Scene scene = io::read_scene(args->input, options);
-      nlohmann::json parameters = {{"input", args->input},
-                                   {"output", args->output},
-                                   {"reader", args->reader.to_json()}};
+      nlohmann::json parameters = {
+          {"input", args->input}, {"output", args->output}, {"reader", args->reader.to_json()}};
       if (io::extension_of(args->output) == "png") {
         render::write_png(scene, args->output);
       } else {

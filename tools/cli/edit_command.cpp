@@ -1,11 +1,10 @@
 // shapeproc edit model.json -o new.json [--beta CAT=V] [--scale-beta F] [--gamma P:A:B=V]
 // [--threshold P:A:I=V] [--scale-thresholds F] [--isotropic]: the paper's §7.3 edits.
 #include <cmath>
-#include <memory>
 #include <limits>
-#include <sstream>
-
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -26,12 +25,14 @@ struct EditArguments {
 
 double parse_value(const std::string& text, const std::string& option, const std::string& edit) {
   const auto values = io::parse_number_list(text);
-  if (!values || values->size() != 1) throw core::UsageError(option + " " + edit + ": expected a number after '='");
+  if (!values || values->size() != 1)
+    throw core::UsageError(option + " " + edit + ": expected a number after '='");
   return values->front();
 }
 
 // "0", "2" or "*" (every index below `count`).
-std::vector<std::size_t> parse_indices(const std::string& text, std::size_t count, std::size_t first, const std::string& what,
+std::vector<std::size_t> parse_indices(const std::string& text, std::size_t count,
+                                       std::size_t first, const std::string& what,
                                        const std::string& option, const std::string& edit) {
   if (text == "*") {
     std::vector<std::size_t> all;
@@ -39,10 +40,12 @@ std::vector<std::size_t> parse_indices(const std::string& text, std::size_t coun
     return all;
   }
   const auto values = io::parse_number_list(text);
-  if (!values || values->size() != 1 || values->front() != std::floor(values->front()) || values->front() < static_cast<double>(first) ||
+  if (!values || values->size() != 1 || values->front() != std::floor(values->front()) ||
+      values->front() < static_cast<double>(first) ||
       values->front() >= static_cast<double>(count + first)) {
     std::ostringstream message;
-    message << option << " " << edit << ": " << what << " '" << text << "' is not one of " << first << ".." << count + first - 1 << " or *";
+    message << option << " " << edit << ": " << what << " '" << text << "' is not one of " << first
+            << ".." << count + first - 1 << " or *";
     throw core::UsageError(message.str());
   }
   return {static_cast<std::size_t>(values->front()) - first};
@@ -50,30 +53,37 @@ std::vector<std::size_t> parse_indices(const std::string& text, std::size_t coun
 
 // PAIR:AXIS:INDEX=VALUE, applied by `apply(axis parameters, index, value)`.
 template <class F>
-void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::string& option, const char* index_name,
-               bool thresholds, F apply) {
+void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::string& option,
+               const char* index_name, bool thresholds, F apply) {
   const auto equals = edit.find('=');
   std::vector<std::string> parts;
   std::stringstream fields(edit.substr(0, equals));
   for (std::string part; std::getline(fields, part, ':');) parts.push_back(part);
   if (equals == std::string::npos || parts.size() != 3) {
-    throw core::UsageError(option + " " + edit + ": expected PAIR:AXIS:" + index_name + "=VALUE (indices as in shapeproc show)");
+    throw core::UsageError(option + " " + edit + ": expected PAIR:AXIS:" + index_name +
+                           "=VALUE (indices as in shapeproc show)");
   }
   const double value = parse_value(edit.substr(equals + 1), option, edit);
   for (std::size_t p : parse_indices(parts[0], m.interactions.size(), 0, "pair", option, edit)) {
     auto& axes = m.interactions[p].axes;
     for (std::size_t a : parse_indices(parts[1], axes.size(), 0, "axis", option, edit)) {
       const std::size_t count = thresholds ? axes[a].thresholds.size() : axes[a].gammas.size();
-      for (std::size_t k : parse_indices(parts[2], count, thresholds ? 0 : 1, index_name, option, edit)) apply(axes[a], k, value);
+      for (std::size_t k :
+           parse_indices(parts[2], count, thresholds ? 0 : 1, index_name, option, edit))
+        apply(axes[a], k, value);
     }
   }
 }
 
-int run_edit(const EditArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
-  if (io::extension_of(args.output) != "json") throw core::UsageError(args.output + ": the model is written as .json");
+int run_edit(const EditArguments& args, const std::vector<std::string>& arguments,
+             std::ostream& out) {
+  if (io::extension_of(args.output) != "json")
+    throw core::UsageError(args.output + ": the model is written as .json");
   model::ShapeProcessModel m = io::read_model(args.model);
-  if (!(args.scale_beta > 0 && std::isfinite(args.scale_beta))) throw core::UsageError("--scale-beta must be positive");
-  if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds))) throw core::UsageError("--scale-thresholds must be positive");
+  if (!(args.scale_beta > 0 && std::isfinite(args.scale_beta)))
+    throw core::UsageError("--scale-beta must be positive");
+  if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds)))
+    throw core::UsageError("--scale-thresholds must be positive");
   nlohmann::json edits = nlohmann::json::array();
   if (args.isotropic) {
     // One axis per pair: thresholds and γ averaged over the axes (γ arithmetically, so that a
@@ -84,7 +94,8 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
         if (pair.axes[a].thresholds.size() != one.thresholds.size()) {
           throw core::UsageError("--isotropic: the axes of a pair have different numbers of bands");
         }
-        for (std::size_t k = 0; k < one.thresholds.size(); ++k) one.thresholds[k] += pair.axes[a].thresholds[k];
+        for (std::size_t k = 0; k < one.thresholds.size(); ++k)
+          one.thresholds[k] += pair.axes[a].thresholds[k];
         for (std::size_t k = 0; k < one.gammas.size(); ++k) one.gammas[k] += pair.axes[a].gammas[k];
       }
       const double axes = static_cast<double>(pair.axes.size());
@@ -114,28 +125,35 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
   }
   for (const std::string& edit : args.beta) {
     const auto equals = edit.find('=');
-    if (equals == std::string::npos) throw core::UsageError("--beta " + edit + ": expected CATEGORY=VALUE");
+    if (equals == std::string::npos)
+      throw core::UsageError("--beta " + edit + ": expected CATEGORY=VALUE");
     const std::string name = edit.substr(0, equals);
     const double value = parse_value(edit.substr(equals + 1), "--beta", edit);
     std::size_t index = m.categories.size();
     for (std::size_t c = 0; c < m.categories.size(); ++c)
       if (m.categories[c].name == name) index = c;
-    if (index == m.categories.size()) index = parse_indices(name, m.categories.size(), 0, "category", "--beta", edit).front();
+    if (index == m.categories.size())
+      index = parse_indices(name, m.categories.size(), 0, "category", "--beta", edit).front();
     m.categories[index].beta = value;
     m.categories[index].beta_standard_error = std::numeric_limits<double>::quiet_NaN();
     m.categories[index].beta_status = model::ParameterStatus::fixed;
     edits.push_back("beta " + edit);
   }
   for (const std::string& edit : args.gamma) {
-    edit_axes(m, edit, "--gamma", "BAND", false, [](model::AxisParameters& axis, std::size_t k, double value) {
-      axis.gammas[k] = value;
-      if (k < axis.status.size()) axis.status[k] = model::ParameterStatus::fixed;
-      if (k < axis.gamma_standard_errors.size()) axis.gamma_standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
-    });
+    edit_axes(m, edit, "--gamma", "BAND", false,
+              [](model::AxisParameters& axis, std::size_t k, double value) {
+                axis.gammas[k] = value;
+                if (k < axis.status.size()) axis.status[k] = model::ParameterStatus::fixed;
+                if (k < axis.gamma_standard_errors.size())
+                  axis.gamma_standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
+              });
     edits.push_back("gamma " + edit);
   }
   for (const std::string& edit : args.threshold) {
-    edit_axes(m, edit, "--threshold", "INDEX", true, [](model::AxisParameters& axis, std::size_t k, double value) { axis.thresholds[k] = value; });
+    edit_axes(m, edit, "--threshold", "INDEX", true,
+              [](model::AxisParameters& axis, std::size_t k, double value) {
+                axis.thresholds[k] = value;
+              });
     edits.push_back("threshold " + edit);
   }
   try {
@@ -143,7 +161,8 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
   } catch (const std::exception& e) {
     throw core::UsageError(std::string("the edited model is invalid: ") + e.what());
   }
-  nlohmann::json fit = m.fit_json.empty() ? nlohmann::json::object() : nlohmann::json::parse(m.fit_json);
+  nlohmann::json fit =
+      m.fit_json.empty() ? nlohmann::json::object() : nlohmann::json::parse(m.fit_json);
   nlohmann::json history = fit.value("edits", nlohmann::json::array());
   history.push_back({{"from", args.model}, {"arguments", arguments}, {"edits", edits}});
   fit["edits"] = history;
@@ -158,14 +177,20 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
 
 void add_edit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<EditArguments>();
-  CLI::App* command = app.add_subcommand("edit", "Edit a model's parameters (indices as in shapeproc show)");
+  CLI::App* command =
+      app.add_subcommand("edit", "Edit a model's parameters (indices as in shapeproc show)");
   command->add_option("MODEL", args->model, "model file (.json)")->required();
   command->add_option("-o,--output", args->output, "edited model (.json)")->required();
-  command->add_option("--beta", args->beta, "set a category's beta: CATEGORY=VALUE (name or index); repeatable");
+  command->add_option("--beta", args->beta,
+                      "set a category's beta: CATEGORY=VALUE (name or index); repeatable");
   command->add_option("--scale-beta", args->scale_beta, "multiply every beta by F");
-  command->add_option("--gamma", args->gamma, "set gamma: PAIR:AXIS:BAND=VALUE (band from 1; * for all); repeatable");
-  command->add_option("--threshold", args->threshold, "set a threshold: PAIR:AXIS:INDEX=VALUE (d0 is index 0; * for all); repeatable");
-  command->add_option("--scale-thresholds", args->scale_thresholds, "multiply every threshold by F");
+  command->add_option("--gamma", args->gamma,
+                      "set gamma: PAIR:AXIS:BAND=VALUE (band from 1; * for all); repeatable");
+  command->add_option(
+      "--threshold", args->threshold,
+      "set a threshold: PAIR:AXIS:INDEX=VALUE (d0 is index 0; * for all); repeatable");
+  command->add_option("--scale-thresholds", args->scale_thresholds,
+                      "multiply every threshold by F");
   command->add_flag("--isotropic", args->isotropic, "average the axes into one (directions 1)");
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_edit(*args, arguments, out); };

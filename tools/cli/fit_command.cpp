@@ -3,8 +3,8 @@
 #include <iomanip>
 #include <memory>
 
-#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -25,21 +25,27 @@ struct FitArguments {
 
 std::vector<double> number_list(const std::string& text, const char* option) {
   const auto values = io::parse_number_list(text);
-  if (!values || values->empty()) throw core::UsageError(std::string(option) + ": expected numbers separated by commas, got '" + text + "'");
+  if (!values || values->empty())
+    throw core::UsageError(std::string(option) + ": expected numbers separated by commas, got '" +
+                           text + "'");
   return *values;
 }
 
-int run_fit(const FitArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
+int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
+            std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
-  if (io::extension_of(args.output) != "json") throw core::UsageError(args.output + ": the model is written as .json");
+  if (io::extension_of(args.output) != "json")
+    throw core::UsageError(args.output + ": the model is written as .json");
   const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments);
   io::write_model(result.model, args.output);
 
   print_model_summary(result.model, out);
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << std::fixed << std::setprecision(1) << "time: proxies " << result.seconds.proxies * 1e3 << " ms, measurements "
-      << result.seconds.measurements * 1e3 << " ms, quadrature " << result.seconds.quadrature * 1e3 << " ms, fit "
-      << result.seconds.optimisation * 1e3 << " ms; total " << total * 1e3 << " ms\n";
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out << std::fixed << std::setprecision(1) << "time: proxies " << result.seconds.proxies * 1e3
+      << " ms, measurements " << result.seconds.measurements * 1e3 << " ms, quadrature "
+      << result.seconds.quadrature * 1e3 << " ms, fit " << result.seconds.optimisation * 1e3
+      << " ms; total " << total * 1e3 << " ms\n";
   out.unsetf(std::ios::fixed);
   out << "wrote " << args.output << '\n';
   return 0;
@@ -47,8 +53,8 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 }  // namespace
 
-fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, const ReaderFlags& reader,
-                            const std::vector<std::string>& arguments) {
+fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
+                            const ReaderFlags& reader, const std::vector<std::string>& arguments) {
   const fit::FitOptions options = flags.options();
   const geometry::Scene exemplar = io::read_scene(input, reader.options());
   fit::FitResult result;
@@ -68,27 +74,40 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, con
 }
 
 void FitFlags::add_to(CLI::App& command) {
-  command.add_option("--directions", directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
-  auto* q = command.add_option("--quantiles", quantiles, "quantile orders of the thresholds")->capture_default_str();
-  auto* t = command.add_option("--thresholds", thresholds, "thresholds d0,d1,... for every pair and axis");
+  command.add_option("--directions", directions,
+                     "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
+  auto* q = command.add_option("--quantiles", quantiles, "quantile orders of the thresholds")
+                ->capture_default_str();
+  auto* t = command.add_option("--thresholds", thresholds,
+                               "thresholds d0,d1,... for every pair and axis");
   q->excludes(t);
   command.add_option("--edge", edge, "edge treatment: none, periodic or border")
       ->check(CLI::IsMember({"none", "periodic", "border"}))
       ->capture_default_str();
   add_measurement_kind_options(command, distance, direction);
-  command.add_option("--quadrature", quadrature, "quadrature cells along the window's longest side (default 48 in 2D, 8 in 3D)")
+  command
+      .add_option("--quadrature", quadrature,
+                  "quadrature cells along the window's longest side (default 48 in 2D, 8 in 3D)")
       ->check(CLI::NonNegativeNumber);
-  command.add_option("--shapes-per-location", shapes_per_location,
-                     "shapes crossed with each quadrature location, in rotation (default: all)")
+  command
+      .add_option("--shapes-per-location", shapes_per_location,
+                  "shapes crossed with each quadrature location, in rotation (default: all)")
       ->check(CLI::NonNegativeNumber);
-  command.add_flag("--quadrature-lines", lines,
-                   "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");
-  command.add_option("--refine", refine, "levels of adaptive refinement of quadrature cells near boundaries (default 0)")
+  command.add_flag(
+      "--quadrature-lines", lines,
+      "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");
+  command
+      .add_option("--refine", refine,
+                  "levels of adaptive refinement of quadrature cells near boundaries (default 0)")
       ->check(CLI::Range(0, 6));
-  command.add_option("--proxy-tolerance", proxy_tolerance, "proxy simplification, fraction of each element's diagonal")
+  command
+      .add_option("--proxy-tolerance", proxy_tolerance,
+                  "proxy simplification, fraction of each element's diagonal")
       ->capture_default_str();
-  command.add_option("--data-weight", data_weight,
-                     "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
+  command
+      .add_option(
+          "--data-weight", data_weight,
+          "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
       ->capture_default_str();
 }
 
@@ -97,30 +116,43 @@ fit::FitOptions FitFlags::options() const {
   o.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");
-  o.edge = edge == "periodic" ? fit::EdgeTreatment::periodic : edge == "border" ? fit::EdgeTreatment::border : fit::EdgeTreatment::none;
+  o.edge = edge == "periodic" ? fit::EdgeTreatment::periodic
+           : edge == "border" ? fit::EdgeTreatment::border
+                              : fit::EdgeTreatment::none;
   o.distance = distance_kind(distance);
   o.direction = direction_kind(direction);
   o.quadrature = quadrature;
   o.shapes_per_location = shapes_per_location;
   o.refinement = refine;
   o.lines = lines;
-  if (!(proxy_tolerance >= 0 && proxy_tolerance < 1)) throw core::UsageError("--proxy-tolerance must be in [0, 1)");
+  if (!(proxy_tolerance >= 0 && proxy_tolerance < 1))
+    throw core::UsageError("--proxy-tolerance must be in [0, 1)");
   o.proxy_tolerance = proxy_tolerance;
-  if (!(data_weight >= 0 && data_weight < 1)) throw core::UsageError("--data-weight must be in [0, 1)");
+  if (!(data_weight >= 0 && data_weight < 1))
+    throw core::UsageError("--data-weight must be in [0, 1)");
   o.data_weight = data_weight;
   return o;
 }
 
 nlohmann::json FitFlags::to_json() const {
-  return {{"directions", directions}, {"quantiles", quantiles}, {"thresholds", thresholds}, {"edge", edge},
-          {"distance", distance}, {"direction", direction}, {"quadrature", quadrature},
-          {"shapes_per_location", shapes_per_location}, {"refine", refine}, {"lines", lines},
-          {"proxy_tolerance", proxy_tolerance}, {"data_weight", data_weight}};
+  return {{"directions", directions},
+          {"quantiles", quantiles},
+          {"thresholds", thresholds},
+          {"edge", edge},
+          {"distance", distance},
+          {"direction", direction},
+          {"quadrature", quadrature},
+          {"shapes_per_location", shapes_per_location},
+          {"refine", refine},
+          {"lines", lines},
+          {"proxy_tolerance", proxy_tolerance},
+          {"data_weight", data_weight}};
 }
 
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<FitArguments>();
-  CLI::App* command = app.add_subcommand("fit", "Fit the shape-process model to an exemplar (maximum log pseudo-likelihood)");
+  CLI::App* command = app.add_subcommand(
+      "fit", "Fit the shape-process model to an exemplar (maximum log pseudo-likelihood)");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "model file (.json)")->required();
   args->fit.add_to(*command);

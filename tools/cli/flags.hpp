@@ -2,19 +2,17 @@
 // (sample, synthesize).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
-#include "libshapeproc/sample/birth_death_sampler.hpp"
-#include <nlohmann/json.hpp>
-
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/synthesis/synthesis_record.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/progress.hpp"
@@ -42,8 +40,8 @@ struct FitFlags {
 
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
 // reader and fit options. Fit failures become core::InputError naming the exemplar.
-fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags, const ReaderFlags& reader,
-                            const std::vector<std::string>& arguments);
+fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
+                            const ReaderFlags& reader, const std::vector<std::string>& arguments);
 
 struct SampleFlags {
   std::string size, domain, intensity, boundary, trace, png;
@@ -63,11 +61,12 @@ struct SampleFlags {
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.
-  int run(const model::ShapeProcessModel& model, const std::string& output, synthesis::SynthesisRecord record,
-          std::ostream& out) const;
+  int run(const model::ShapeProcessModel& model, const std::string& output,
+          synthesis::SynthesisRecord record, std::ostream& out) const;
 };
 
 // A JSON object's leaves as (prefix.key, text) pairs, in key order (for a record's options).
-std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix, const nlohmann::json& object);
+std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix,
+                                                                 const nlohmann::json& object);
 
 }  // namespace shapeproc::cli

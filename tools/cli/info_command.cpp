@@ -20,9 +20,12 @@ struct InfoArguments {
 
 const char* shape_kind(const geometry::Shape& shape) {
   switch (geometry::dimension(shape)) {
-    case 0: return "point";
-    case 2: return "paths";
-    default: return "mesh";
+    case 0:
+      return "point";
+    case 2:
+      return "paths";
+    default:
+      return "mesh";
   }
 }
 
@@ -66,12 +69,13 @@ nlohmann::json describe(const geometry::Scene& scene, const std::string& input) 
     box.translate(e.position);
     const std::size_t count = geometry::primitive_count(shape);
     primitives += count;
-    nlohmann::json item = {{"index", i},
-                           {"category", scene.categories.at(e.category).name},
-                           {"shape", e.shape},
-                           {"kind", shape_kind(shape)},
-                           {"position", std::vector<double>(e.position.data(), e.position.data() + scene.dimension)},
-                           {"bbox", box_json(box, scene.dimension)}};
+    nlohmann::json item = {
+        {"index", i},
+        {"category", scene.categories.at(e.category).name},
+        {"shape", e.shape},
+        {"kind", shape_kind(shape)},
+        {"position", std::vector<double>(e.position.data(), e.position.data() + scene.dimension)},
+        {"bbox", box_json(box, scene.dimension)}};
     if (scene.dimension == 2) {
       item["paths"] = geometry::path_count(shape);
       item["segments"] = count;
@@ -81,7 +85,9 @@ nlohmann::json describe(const geometry::Scene& scene, const std::string& input) 
     if (!shape.name.empty()) item["name"] = shape.name;
     elements.push_back(item);
   }
-  const double mean = scene.elements.empty() ? 0.0 : static_cast<double>(primitives) / static_cast<double>(scene.elements.size());
+  const double mean = scene.elements.empty() ? 0.0
+                                             : static_cast<double>(primitives) /
+                                                   static_cast<double>(scene.elements.size());
   return {{"file", input},
           {"dimension", scene.dimension},
           {"window", box_json(scene.window, scene.dimension)},
@@ -109,13 +115,14 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
   for (const auto& c : d["categories"]) {
     out << "  " << c["name"].get<std::string>() << ": " << c["count"].get<std::size_t>() << '\n';
   }
-  out << "\n  index  category        " << (planar ? "paths  segments" : "triangles") << "  bounding box\n";
+  out << "\n  index  category        " << (planar ? "paths  segments" : "triangles")
+      << "  bounding box\n";
   for (const auto& e : d["elements"]) {
     const geometry::Element& element = scene.elements[e["index"].get<std::size_t>()];
     geometry::Box3 box = geometry::bounding_box(scene.shapes.at(element.shape));
     box.translate(element.position);
-    out << "  " << std::setw(5) << e["index"].get<std::size_t>() << "  " << std::left << std::setw(14)
-        << e["category"].get<std::string>() << std::right << "  ";
+    out << "  " << std::setw(5) << e["index"].get<std::size_t>() << "  " << std::left
+        << std::setw(14) << e["category"].get<std::string>() << std::right << "  ";
     if (planar) {
       out << std::setw(5) << e["paths"].get<std::size_t>() << "  " << std::setw(8)
           << e["segments"].get<std::size_t>();
@@ -131,9 +138,11 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
 void add_info_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<InfoArguments>();
   CLI::App* command = app.add_subcommand(
-      "info", "Describe an exemplar: dimension, window, units, elements, categories, and per "
-              "element its segment or triangle count and bounding box");
-  command->add_option("EXEMPLAR", args->input, "input file (.svg, .obj, .ply, .off, .stl, .csv)")->required();
+      "info",
+      "Describe an exemplar: dimension, window, units, elements, categories, and per "
+      "element its segment or triangle count and bounding box");
+  command->add_option("EXEMPLAR", args->input, "input file (.svg, .obj, .ply, .off, .stl, .csv)")
+      ->required();
   command->add_flag("--json", args->json, "print JSON instead of text");
   args->reader.add_to(*command);
   command->callback([&action, args] {

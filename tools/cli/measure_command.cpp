@@ -5,9 +5,9 @@
 #include <memory>
 #include <sstream>
 
-#include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -34,8 +34,8 @@ void write_pairs(std::ostream& out, int dimension, const std::vector<geometry::P
   out << (dimension == 3 ? "i,j,distance,ox,oy,oz,axis\n" : "i,j,distance,ox,oy,axis\n");
   for (const geometry::PairRecord& p : pairs) {
     const geometry::Measurement& m = p.measurement;
-    out << p.i << ',' << p.j << ',' << io::format_number(m.distance) << ',' << io::format_number(m.direction.x())
-        << ',' << io::format_number(m.direction.y()) << ',';
+    out << p.i << ',' << p.j << ',' << io::format_number(m.distance) << ','
+        << io::format_number(m.direction.x()) << ',' << io::format_number(m.direction.y()) << ',';
     if (dimension == 3) out << io::format_number(m.direction.z()) << ',';
     out << m.axis << '\n';
   }
@@ -45,11 +45,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int run_measure(const MeasureArguments& args, const std::vector<std::string>& arguments, std::ostream& out) {
+int run_measure(const MeasureArguments& args, const std::vector<std::string>& arguments,
+                std::ostream& out) {
   const io::ReaderOptions reader = args.reader.options();
   if (!(args.range > 0)) throw core::UsageError("--range must be positive");
   if (!(args.proxy_tolerance >= 0 && args.proxy_tolerance < 1)) {
-    throw core::UsageError("--proxy-tolerance must be in [0, 1) (a fraction of the element's size)");
+    throw core::UsageError(
+        "--proxy-tolerance must be in [0, 1) (a fraction of the element's size)");
   }
   const geometry::Scene scene = io::read_scene(args.input, reader);
 
@@ -72,14 +74,15 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   const std::vector<geometry::PairRecord> pairs = measurer->all_pairs(scene.elements, args.range);
   const double measure_seconds = seconds_since(measure_start);
 
-  const nlohmann::json parameters = {{"input", args.input},
-                                     {"range", std::isfinite(args.range) ? nlohmann::json(args.range) : nlohmann::json("all")},
-                                     {"distance", args.distance},
-                                     {"direction", args.direction},
-                                     {"directions", options.directions},
-                                     {"periodic", args.periodic},
-                                     {"proxy_tolerance", args.proxy_tolerance},
-                                     {"reader", args.reader.to_json()}};
+  const nlohmann::json parameters = {
+      {"input", args.input},
+      {"range", std::isfinite(args.range) ? nlohmann::json(args.range) : nlohmann::json("all")},
+      {"distance", args.distance},
+      {"direction", args.direction},
+      {"directions", options.directions},
+      {"periodic", args.periodic},
+      {"proxy_tolerance", args.proxy_tolerance},
+      {"reader", args.reader.to_json()}};
   const io::Provenance provenance = make_provenance("measure", arguments, parameters);
   if (!args.proxy_out.empty()) {
     geometry::Scene proxies = scene;
@@ -94,22 +97,25 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   if (args.output.empty()) {
     write_pairs(out, scene.dimension, pairs);
   } else {
-    if (io::extension_of(args.output) != "csv") throw core::UsageError(args.output + ": pairs are written as .csv");
-    core::write_file_atomically(args.output, [&](std::ostream& file) { write_pairs(file, scene.dimension, pairs); });
-    core::write_file_atomically(args.output + ".json", [&](std::ostream& file) { file << provenance.json << '\n'; });
+    if (io::extension_of(args.output) != "csv")
+      throw core::UsageError(args.output + ": pairs are written as .csv");
+    core::write_file_atomically(
+        args.output, [&](std::ostream& file) { write_pairs(file, scene.dimension, pairs); });
+    core::write_file_atomically(args.output + ".json",
+                                [&](std::ostream& file) { file << provenance.json << '\n'; });
   }
   const geometry::ProxyStatistics& stats = measurer->statistics();
   const char* unit = scene.dimension == 2 ? "segments" : "triangles";
-  report << std::fixed << std::setprecision(1) << "elements: " << scene.elements.size() << ", shapes: "
-         << scene.shapes.size() << '\n'
-         << "proxies:  " << stats.source_per_element << " -> " << stats.proxy_per_element << ' ' << unit
-         << " per element (tolerance " << std::setprecision(4) << args.proxy_tolerance << " of the diagonal), "
-         << std::setprecision(0) << stats.mass_per_element
+  report << std::fixed << std::setprecision(1) << "elements: " << scene.elements.size()
+         << ", shapes: " << scene.shapes.size() << '\n'
+         << "proxies:  " << stats.source_per_element << " -> " << stats.proxy_per_element << ' '
+         << unit << " per element (tolerance " << std::setprecision(4) << args.proxy_tolerance
+         << " of the diagonal), " << std::setprecision(0) << stats.mass_per_element
          << (scene.dimension == 2 ? " mass boundary edges" : " mass points") << " per element\n"
-         << "pairs:    " << pairs.size() << (std::isfinite(args.range) ? " within range" : " (all)") << ", "
-         << measurer->bins().axis_count() << " axis bins\n"
-         << std::setprecision(3) << "time:     proxies " << proxy_seconds * 1e3 << " ms, measurements "
-         << measure_seconds * 1e3 << " ms\n";
+         << "pairs:    " << pairs.size() << (std::isfinite(args.range) ? " within range" : " (all)")
+         << ", " << measurer->bins().axis_count() << " axis bins\n"
+         << std::setprecision(3) << "time:     proxies " << proxy_seconds * 1e3
+         << " ms, measurements " << measure_seconds * 1e3 << " ms\n";
   report.unsetf(std::ios::fixed);
   if (!args.output.empty()) report << "wrote " << args.output << '\n';
   return 0;
@@ -120,19 +126,24 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
 void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<MeasureArguments>();
   CLI::App* command = app.add_subcommand(
-      "measure", "Shortest distance and relative orientation of every pair of elements within range, "
-                 "on proxy geometry (one CSV row per pair: i,j,distance,ox,oy[,oz],axis)");
+      "measure",
+      "Shortest distance and relative orientation of every pair of elements within range, "
+      "on proxy geometry (one CSV row per pair: i,j,distance,ox,oy[,oz],axis)");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "pairs CSV (standard output when absent)");
-  command->add_option("--range", args->range, "only pairs with distance below R (default: all pairs)");
+  command->add_option("--range", args->range,
+                      "only pairs with distance below R (default: all pairs)");
   add_measurement_kind_options(*command, args->distance, args->direction);
-  command->add_option("--directions", args->directions,
-                      "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1 (default 12)");
+  command->add_option(
+      "--directions", args->directions,
+      "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1 (default 12)");
   command->add_flag("--periodic", args->periodic, "the window is a torus (minimum-image offsets)");
-  command->add_option("--proxy-tolerance", args->proxy_tolerance,
-                      "simplification error bound, fraction of each element's bounding-box diagonal")
+  command
+      ->add_option("--proxy-tolerance", args->proxy_tolerance,
+                   "simplification error bound, fraction of each element's bounding-box diagonal")
       ->capture_default_str();
-  command->add_option("--proxy-out", args->proxy_out, "write the proxies (.svg for 2D, .obj or .ply for 3D)");
+  command->add_option("--proxy-out", args->proxy_out,
+                      "write the proxies (.svg for 2D, .obj or .ply for 3D)");
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_measure(*args, arguments, out); };

@@ -1,18 +1,17 @@
 #include "tools/cli/model_summary.hpp"
-#include "libshapeproc/core/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
+#include "libshapeproc/core/constants.hpp"
 
 namespace shapeproc::cli {
 
 namespace {
-
 
 std::string g(double v, int digits = 4) {
   if (!std::isfinite(v)) return "-";
@@ -27,15 +26,21 @@ std::string direction_text(const geometry::Vec3& d, int dimension) {
 }
 
 std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
-  const model::ParameterStatus status = k < a.status.size() ? a.status[k] : model::ParameterStatus::fixed;
+  const model::ParameterStatus status =
+      k < a.status.size() ? a.status[k] : model::ParameterStatus::fixed;
   switch (status) {
-    case model::ParameterStatus::boundary: return "0 (boundary: no pair)";
-    case model::ParameterStatus::unidentifiable: return "1 (no information)";
-    case model::ParameterStatus::unbounded: return g(a.gammas[k], 3) + " (unbounded)";
-    default: break;
+    case model::ParameterStatus::boundary:
+      return "0 (boundary: no pair)";
+    case model::ParameterStatus::unidentifiable:
+      return "1 (no information)";
+    case model::ParameterStatus::unbounded:
+      return g(a.gammas[k], 3) + " (unbounded)";
+    default:
+      break;
   }
   std::string text = g(a.gammas[k], 3);
-  if (k < a.gamma_standard_errors.size() && std::isfinite(a.gamma_standard_errors[k])) text += " ± " + g(a.gamma_standard_errors[k], 2);
+  if (k < a.gamma_standard_errors.size() && std::isfinite(a.gamma_standard_errors[k]))
+    text += " ± " + g(a.gamma_standard_errors[k], 2);
   if (k < a.observed_pairs.size()) text += " (" + std::to_string(a.observed_pairs[k]) + ")";
   return text;
 }
@@ -45,13 +50,18 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
 void print_model_summary(const model::ShapeProcessModel& model, std::ostream& out) {
   const char* measure = model.dimension == 2 ? "area" : "volume";
   out << "model: " << model.dimension << "D, " << model.categories.size() << " categor"
-      << (model.categories.size() == 1 ? "y" : "ies") << ", " << model.measurement.directions << " direction(s), distance "
-      << (model.measurement.distance == geometry::DistanceKind::shape       ? "shape"
+      << (model.categories.size() == 1 ? "y" : "ies") << ", " << model.measurement.directions
+      << " direction(s), distance "
+      << (model.measurement.distance == geometry::DistanceKind::shape      ? "shape"
           : model.measurement.distance == geometry::DistanceKind::centroid ? "centroid"
-                                                                            : "hausdorff")
+                                                                           : "hausdorff")
       << ", direction "
-      << (model.measurement.direction == geometry::DirectionKind::gravitation ? "gravitation" : "centroid") << ", "
-      << (model.shapes.empty() ? std::string("points") : std::to_string(model.shapes.size()) + " shapes") << "\n";
+      << (model.measurement.direction == geometry::DirectionKind::gravitation ? "gravitation"
+                                                                              : "centroid")
+      << ", "
+      << (model.shapes.empty() ? std::string("points")
+                               : std::to_string(model.shapes.size()) + " shapes")
+      << "\n";
   out << "\nintensity beta (per unit " << measure << ", " << model.units << "):\n";
   for (const model::CategoryParameters& c : model.categories) {
     out << "  " << std::left << std::setw(16) << c.name << std::right << " " << g(c.beta);
@@ -62,15 +72,17 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   if (model.interactions.empty()) out << "\nno interaction: a Poisson process\n";
   for (std::size_t index = 0; index < model.interactions.size(); ++index) {
     const model::PairInteraction& pair = model.interactions[index];
-    out << "\npair " << index << ": interaction " << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
+    out << "\npair " << index << ": interaction "
+        << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
         << model.categories[static_cast<std::size_t>(pair.second)].name
         << "  (gamma ± se (exemplar pairs in the band); hard core below d0)\n";
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
       const model::AxisParameters& a = pair.axes[i];
-      out << "  axis " << i << "  " << std::setw(9) << direction_text(a.direction, model.dimension) << "  d0 "
-          << std::setw(8) << g(a.thresholds.front());
+      out << "  axis " << i << "  " << std::setw(9) << direction_text(a.direction, model.dimension)
+          << "  d0 " << std::setw(8) << g(a.thresholds.front());
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
-        out << "  | " << k + 1 << " [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1]) << "): " << gamma_text(a, k);
+        out << "  | " << k + 1 << " [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1])
+            << "): " << gamma_text(a, k);
       }
       out << '\n';
     }
@@ -78,11 +90,13 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   if (!model.fit_json.empty()) {
     const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
     if (fit.contains("log_pseudo_likelihood") && fit["log_pseudo_likelihood"].is_number()) {
-      out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
+      out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8)
+          << '\n';
     }
     if (fit.contains("quadrature")) {
-      out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, " << fit["quadrature"].value("points", 0)
-          << " points; edge " << fit.value("edge", "none") << '\n';
+      out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, "
+          << fit["quadrature"].value("points", 0) << " points; edge " << fit.value("edge", "none")
+          << '\n';
     }
     if (fit.contains("notes")) {
       for (const auto& note : fit["notes"]) out << "note: " << note.get<std::string>() << '\n';
@@ -93,7 +107,8 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
 void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out) {
   out << "fitted: " << model.dimension << "D";
   for (const model::CategoryParameters& c : model.categories) {
-    out << ", " << c.name << " beta " << g(c.beta) << (c.beta_status == model::ParameterStatus::unbounded ? " (unbounded)" : "");
+    out << ", " << c.name << " beta " << g(c.beta)
+        << (c.beta_status == model::ParameterStatus::unbounded ? " (unbounded)" : "");
   }
   std::size_t bands = 0, unbounded = 0;
   double range = 0.0;
@@ -101,12 +116,14 @@ void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out)
     for (const model::AxisParameters& a : pair.axes) {
       bands += a.gammas.size();
       range = std::max(range, a.thresholds.back());
-      for (model::ParameterStatus st : a.status) unbounded += st == model::ParameterStatus::unbounded;
+      for (model::ParameterStatus st : a.status)
+        unbounded += st == model::ParameterStatus::unbounded;
     }
   }
-  out << "; " << model.interactions.size() << " interacting pair(s), " << bands << " gamma(s), range " << g(range) << ' '
-      << model.units;
-  if (unbounded > 0) out << " (" << unbounded << " unbounded: the fit has no finite maximum, docs/fit.md)";
+  out << "; " << model.interactions.size() << " interacting pair(s), " << bands
+      << " gamma(s), range " << g(range) << ' ' << model.units;
+  if (unbounded > 0)
+    out << " (" << unbounded << " unbounded: the fit has no finite maximum, docs/fit.md)";
   out << '\n';
 }
 

@@ -17,7 +17,8 @@ void VerbosityFlags::stage(const std::string& line) const {
   if (verbose && !quiet) std::fprintf(stderr, "%s\n", line.c_str());
 }
 
-ProgressBar::ProgressBar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+ProgressBar::ProgressBar(std::string label, bool enabled)
+    : label_(std::move(label)), enabled_(enabled) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 
@@ -30,11 +31,13 @@ void ProgressBar::update(long long done, long long total) {
     if (percent == last_percent_) return;
     last_percent_ = percent;
     const int filled = static_cast<int>(percent / 4);
-    std::fprintf(stderr, "\r%s [%s%s] %3lld%%", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+    std::fprintf(stderr, "\r%s [%s%s] %3lld%%", label_.c_str(),
+                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
                  std::string(static_cast<std::size_t>(25 - filled), ' ').c_str(), percent);
   } else {
     if (drawn_ && now - last_draw_ < std::chrono::milliseconds(100)) return;
-    std::fprintf(stderr, "\r%s: %lld steps (until the element count is stationary)", label_.c_str(), done);
+    std::fprintf(stderr, "\r%s: %lld steps (until the element count is stationary)", label_.c_str(),
+                 done);
   }
   last_draw_ = now;
   drawn_ = true;

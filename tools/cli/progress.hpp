@@ -2,11 +2,10 @@
 // is not; drawn only on a terminal and not with --quiet. --verbose adds stage lines.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <mutex>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 namespace shapeproc::cli {
 

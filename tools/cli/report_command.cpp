@@ -34,13 +34,15 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
     ReaderFlags reader;
   };
   auto args = std::make_shared<ReportArguments>();
-  CLI::App* command = app.add_subcommand(
-      "report", "Write DIR/index.html (self-contained) with pictures, distance charts and metrics comparing outputs "
-                "with their exemplar, and DIR/metrics.json");
+  CLI::App* command = app.add_subcommand("report",
+                                         "Write DIR/index.html (self-contained) with pictures, "
+                                         "distance charts and metrics comparing outputs "
+                                         "with their exemplar, and DIR/metrics.json");
   command->add_option("EXEMPLAR", args->exemplar, "the exemplar")->required();
   command->add_option("OUTPUTS", args->outputs, "outputs to compare with it")->required();
   command->add_option("-o,--output", args->directory, "report directory")->required();
-  command->add_option("--model", args->model, "the fitted model: its interaction function is drawn, its axes used");
+  command->add_option("--model", args->model,
+                      "the fitted model: its interaction function is drawn, its axes used");
   args->metrics.add_to(*command);
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
@@ -51,11 +53,13 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       if (!args->model.empty()) {
         model = std::make_unique<model::ShapeProcessModel>(io::read_model(args->model));
         if (flags.directions == 0) flags.directions = model->measurement.directions;
-        if (flags.direction == "gravitation" && model->measurement.direction == geometry::DirectionKind::centroid) {
+        if (flags.direction == "gravitation" &&
+            model->measurement.direction == geometry::DirectionKind::centroid) {
           flags.direction = "centroid";
         }
       }
-      if (std::filesystem::exists(args->directory) && !std::filesystem::is_directory(args->directory)) {
+      if (std::filesystem::exists(args->directory) &&
+          !std::filesystem::is_directory(args->directory)) {
         throw core::UsageError(args->directory + ": exists and is not a directory");
       }
       const EvaluatedScene exemplar = read_exemplar(args->exemplar, args->reader, flags);
@@ -68,10 +72,12 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       }
 
       report::Report r;
-      r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics, nullptr, nullptr, ""};
+      r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics,
+                    nullptr,        nullptr,         ""};
       for (std::size_t i = 0; i < outputs.size(); ++i) {
-        r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics, &*evals[i].comparison,
-                             &*evals[i].neighbourhood, outputs[i].record ? outputs[i].record->summary() : std::string()});
+        r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics,
+                             &*evals[i].comparison, &*evals[i].neighbourhood,
+                             outputs[i].record ? outputs[i].record->summary() : std::string()});
       }
       r.model = model.get();
       r.model_label = args->model;
@@ -86,27 +92,30 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       }
       r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);
       for (std::size_t i = 0; i < evals.size(); ++i) {
-        r.timings.emplace_back("metrics: output " + std::to_string(i + 1), evals[i].statistics.seconds);
+        r.timings.emplace_back("metrics: output " + std::to_string(i + 1),
+                               evals[i].statistics.seconds);
       }
 
       nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
                                 {"outputs", nlohmann::json::array()},
                                 {"options", flags.to_json()}};
-      for (std::size_t i = 0; i < outputs.size(); ++i) metrics["outputs"].push_back(evaluation_json(outputs[i], evals[i]));
+      for (std::size_t i = 0; i < outputs.size(); ++i)
+        metrics["outputs"].push_back(evaluation_json(outputs[i], evals[i]));
       std::filesystem::create_directories(args->directory);
       core::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
-                                [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
-      r.timings.emplace_back("reading and metrics, in total",
-                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                                  [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
+      r.timings.emplace_back(
+          "reading and metrics, in total",
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       report::write_report(r, args->directory);
       out << "wrote " << (std::filesystem::path(args->directory) / "index.html").string() << " ("
           << outputs.size() + 1 << " pictures, metrics.json)\n";
       for (std::size_t i = 0; i < outputs.size(); ++i) {
         const Evaluation& e = evals[i];
         out << "  " << args->outputs[i] << ": " << e.statistics.elements() << " elements, "
-            << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest " << e.comparison->all.nearest
-            << ", W1 pairs " << e.comparison->all.pairs << ", neighbourhood distance " << e.neighbourhood->normalised
-            << " a²\n";
+            << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest "
+            << e.comparison->all.nearest << ", W1 pairs " << e.comparison->all.pairs
+            << ", neighbourhood distance " << e.neighbourhood->normalised << " a²\n";
       }
       return 0;
     };

@@ -26,77 +26,119 @@ namespace {
 std::string suffixed(const std::string& path, int chain, int chains) {
   if (chains <= 1 || path.empty()) return path;
   const std::filesystem::path p(path);
-  return (p.parent_path() / (p.stem().string() + "-" + std::to_string(chain + 1) + p.extension().string())).string();
+  return (p.parent_path() /
+          (p.stem().string() + "-" + std::to_string(chain + 1) + p.extension().string()))
+      .string();
 }
 
 void write_trace(const std::string& file, const synthesis::SynthesisResult& result) {
   core::write_file_atomically(file, [&](std::ostream& f) {
-    f << "# shapeproc " << result.record.command << " seed " << result.record.seed << " chain " << result.record.chain
-      << "\nstep,elements,log_density\n";
-    for (const auto& t : result.trace) f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
+    f << "# shapeproc " << result.record.command << " seed " << result.record.seed << " chain "
+      << result.record.chain << "\nstep,elements,log_density\n";
+    for (const auto& t : result.trace)
+      f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
   });
 }
 
 // The PNG's text chunks: what made it, so a picture found alone still says its seed and command.
-std::vector<std::pair<std::string, std::string>> png_text(const synthesis::SynthesisRecord& record) {
+std::vector<std::pair<std::string, std::string>> png_text(
+    const synthesis::SynthesisRecord& record) {
   std::string command;
-  for (std::size_t i = 0; i < record.arguments.size(); ++i) command += (i ? " " : "") + (i == 0 ? std::string("shapeproc") : record.arguments[i]);
-  return {{"Software", std::string("shapeproc ") + SHAPEPROC_VERSION},
-          {"Comment", "seed " + std::to_string(record.chain_seed) + (record.chains > 1 ? " (chain " + std::to_string(record.chain) + " of run seed " + std::to_string(record.seed) + ")" : std::string())},
-          {"Source", command}};
+  for (std::size_t i = 0; i < record.arguments.size(); ++i)
+    command += (i ? " " : "") + (i == 0 ? std::string("shapeproc") : record.arguments[i]);
+  return {
+      {"Software", std::string("shapeproc ") + SHAPEPROC_VERSION},
+      {"Comment", "seed " + std::to_string(record.chain_seed) +
+                      (record.chains > 1 ? " (chain " + std::to_string(record.chain) +
+                                               " of run seed " + std::to_string(record.seed) + ")"
+                                         : std::string())},
+      {"Source", command}};
 }
 
 }  // namespace
 
 void SampleFlags::add_to(CLI::App& command) {
-  command.add_option("--size", size, "domain W,H (2D) or W,H,D (3D), in the model's units")->required();
-  command.add_option("--domain", domain, "2D domain shape: an SVG (its filled shapes) or a grayscale PNG mask (white = inside), stretched over --size");
-  command.add_option("--intensity", intensity, "2D intensity map: grayscale PNG stretched over --size, scales beta (white = 1)");
-  command.add_option("--iterations", iterations, "steps per chain (default: until the element count is stationary, see docs/sample.md)")
+  command.add_option("--size", size, "domain W,H (2D) or W,H,D (3D), in the model's units")
+      ->required();
+  command.add_option("--domain", domain,
+                     "2D domain shape: an SVG (its filled shapes) or a grayscale PNG mask (white = "
+                     "inside), stretched over --size");
+  command.add_option(
+      "--intensity", intensity,
+      "2D intensity map: grayscale PNG stretched over --size, scales beta (white = 1)");
+  command
+      .add_option(
+          "--iterations", iterations,
+          "steps per chain (default: until the element count is stationary, see docs/sample.md)")
       ->check(CLI::NonNegativeNumber);
-  command.add_option("--shift-probability", shift_probability, "share of steps that shift an element (0: birth-death only)")
+  command
+      .add_option("--shift-probability", shift_probability,
+                  "share of steps that shift an element (0: birth-death only)")
       ->check(CLI::Range(0.0, 0.95))
       ->capture_default_str();
-  command.add_option("--shift-radius", shift_radius, "largest shift (default: half the interaction range)")
+  command
+      .add_option("--shift-radius", shift_radius,
+                  "largest shift (default: half the interaction range)")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--seed", seed, "random seed")->capture_default_str();
-  command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")->check(CLI::Range(1, 1000));
-  command.add_option("--threads", threads, "threads for the chains (default: one per core)")->check(CLI::Range(0, 256));
-  command.add_option("--boundary", boundary, "torus (periodic; default for plain rectangles and boxes) or open (default with --domain)")
+  command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")
+      ->check(CLI::Range(1, 1000));
+  command.add_option("--threads", threads, "threads for the chains (default: one per core)")
+      ->check(CLI::Range(0, 256));
+  command
+      .add_option("--boundary", boundary,
+                  "torus (periodic; default for plain rectangles and boxes) or open (default with "
+                  "--domain)")
       ->check(CLI::IsMember({"torus", "open"}));
-  command.add_option("--trace", trace, "write element count and log density every 1/1000 of the steps (.csv)");
+  command.add_option("--trace", trace,
+                     "write element count and log density every 1/1000 of the steps (.csv)");
   command.add_option("--png", png, "also render the output to this PNG");
-  command.add_option("--png-scale", png_scale, "pixels per unit length of the PNG (default: 800 pixels along the longer side)")
+  command
+      .add_option("--png-scale", png_scale,
+                  "pixels per unit length of the PNG (default: 800 pixels along the longer side)")
       ->check(CLI::PositiveNumber);
   verbosity.add_to(command);
 }
 
 void SampleFlags::check(const std::string& output, int dimension) const {
   const auto sizes = io::parse_number_list(size);
-  const bool count_ok = sizes && (dimension > 0 ? static_cast<int>(sizes->size()) == dimension : sizes->size() == 2 || sizes->size() == 3);
-  if (!count_ok || !std::all_of(sizes->begin(), sizes->end(), [](double v) { return v > 0 && std::isfinite(v); })) {
-    const std::string expected = dimension == 2 ? "W,H" : dimension == 3 ? "W,H,D" : "W,H (2D) or W,H,D (3D)";
-    throw core::UsageError("--size: expected " + expected + " (positive)" +
-                           (dimension > 0 ? " for a " + std::to_string(dimension) + "D model" : std::string()) + ", got '" + size + "'");
+  const bool count_ok = sizes && (dimension > 0 ? static_cast<int>(sizes->size()) == dimension
+                                                : sizes->size() == 2 || sizes->size() == 3);
+  if (!count_ok || !std::all_of(sizes->begin(), sizes->end(),
+                                [](double v) { return v > 0 && std::isfinite(v); })) {
+    const std::string expected = dimension == 2   ? "W,H"
+                                 : dimension == 3 ? "W,H,D"
+                                                  : "W,H (2D) or W,H,D (3D)";
+    throw core::UsageError(
+        "--size: expected " + expected + " (positive)" +
+        (dimension > 0 ? " for a " + std::to_string(dimension) + "D model" : std::string()) +
+        ", got '" + size + "'");
   }
   check_output_extension(output, "-o");
-  if (!png.empty() && io::extension_of(png) != "png") throw core::UsageError("--png: expected a .png file, got '" + png + "'");
-  if (!trace.empty() && io::extension_of(trace) != "csv") throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
-  if (boundary == "torus" && !domain.empty()) throw core::UsageError("--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
-  if (sizes->size() == 3 && (!domain.empty() || !intensity.empty())) throw core::UsageError("--domain and --intensity are for 2D models");
+  if (!png.empty() && io::extension_of(png) != "png")
+    throw core::UsageError("--png: expected a .png file, got '" + png + "'");
+  if (!trace.empty() && io::extension_of(trace) != "csv")
+    throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
+  if (boundary == "torus" && !domain.empty())
+    throw core::UsageError(
+        "--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
+  if (sizes->size() == 3 && (!domain.empty() || !intensity.empty()))
+    throw core::UsageError("--domain and --intensity are for 2D models");
   if (!domain.empty() && io::extension_of(domain) != "svg" && io::extension_of(domain) != "png") {
-    throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" + domain + "'");
+    throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" +
+                           domain + "'");
   }
   if (!intensity.empty() && io::extension_of(intensity) != "png") {
     throw core::UsageError("--intensity: expected a grayscale .png, got '" + intensity + "'");
   }
   for (const std::string* file : {&domain, &intensity}) {
-    if (!file->empty() && !std::filesystem::is_regular_file(*file)) throw core::InputError(*file, 0, "no such file");
+    if (!file->empty() && !std::filesystem::is_regular_file(*file))
+      throw core::InputError(*file, 0, "no such file");
   }
 }
 
-int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output, synthesis::SynthesisRecord record,
-                     std::ostream& out) const {
+int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
+                     synthesis::SynthesisRecord record, std::ostream& out) const {
   check(output, model.dimension);
   io::DomainFiles files;
   files.size = *io::parse_number_list(size);
@@ -109,7 +151,8 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   options.iterations = iterations;
   options.shift_probability = shift_probability;
   options.shift_radius = shift_radius;
-  if (!trace.empty()) options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
+  if (!trace.empty())
+    options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
   const sample::ShapeProcessSampler sampler(model, sample_domain, options);
 
   synthesis::ChainOptions chains_options;
@@ -121,7 +164,8 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   chains_options.record = std::move(record);
   ProgressBar bar("sampling", verbosity.show_progress());
   chains_options.progress = [&bar](long long done, long long total) { bar.update(done, total); };
-  const std::vector<synthesis::SynthesisResult> results = synthesis::run_chains(sampler, chains_options);
+  const std::vector<synthesis::SynthesisResult> results =
+      synthesis::run_chains(sampler, chains_options);
   bar.finish();
 
   for (int c = 0; c < chains; ++c) {
@@ -135,9 +179,10 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
       picture.text = png_text(result.record);
       render::write_png(result.scene, suffixed(png, c, chains), picture);
     }
-    out << "sampled " << result.scene.elements.size() << " elements in " << result.record.steps << " steps ("
-        << result.record.seconds << " s";
-    for (std::size_t k = 0; k < result.counters.size(); ++k) out << (k ? ", " : "; ") << result.counters[k].first << ' ' << result.counters[k].second;
+    out << "sampled " << result.scene.elements.size() << " elements in " << result.record.steps
+        << " steps (" << result.record.seconds << " s";
+    for (std::size_t k = 0; k < result.counters.size(); ++k)
+      out << (k ? ", " : "; ") << result.counters[k].first << ' ' << result.counters[k].second;
     out << "), seed " << result.record.chain_seed << '\n';
     if (!result.record.stationary) {
       out << "warning: the element count was still changing after " << result.record.steps
@@ -150,7 +195,8 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   return 0;
 }
 
-std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix, const nlohmann::json& object) {
+std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix,
+                                                                 const nlohmann::json& object) {
   std::vector<std::pair<std::string, std::string>> out;
   for (auto it = object.begin(); it != object.end(); ++it) {
     const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
@@ -169,7 +215,8 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
     SampleFlags sample;
   };
   auto args = std::make_shared<SampleArguments>();
-  CLI::App* command = app.add_subcommand("sample", "Synthesise an arrangement from a model (birth-death Metropolis-Hastings)");
+  CLI::App* command = app.add_subcommand(
+      "sample", "Synthesise an arrangement from a model (birth-death Metropolis-Hastings)");
   command->add_option("MODEL", args->model, "model file (.json)")->required();
   command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
   args->sample.add_to(*command);
@@ -186,7 +233,8 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
   });
 }
 
-void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
+void add_synthesize_command(CLI::App& app, Action& action,
+                            const std::vector<std::string>& arguments) {
   struct SynthesizeArguments {
     std::string input, output, model;
     FitFlags fit;
@@ -194,7 +242,8 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
     SampleFlags sample;
   };
   auto args = std::make_shared<SynthesizeArguments>();
-  CLI::App* command = app.add_subcommand("synthesize", "Fit a model to an exemplar, then sample an output from it");
+  CLI::App* command =
+      app.add_subcommand("synthesize", "Fit a model to an exemplar, then sample an output from it");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
   command->add_option("--model", args->model, "also write the fitted model (.json)");
@@ -203,7 +252,8 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
   args->sample.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      if (!args->model.empty() && io::extension_of(args->model) != "json") throw core::UsageError(args->model + ": the model is written as .json");
+      if (!args->model.empty() && io::extension_of(args->model) != "json")
+        throw core::UsageError(args->model + ": the model is written as .json");
       args->sample.check(args->output);
       args->fit.options();  // its own checks, before reading or fitting anything
       args->reader.options();
@@ -217,7 +267,8 @@ void add_synthesize_command(CLI::App& app, Action& action, const std::vector<std
       record.inputs = {{"exemplar", args->input}};
       if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
       record.options = flatten_options("fit", args->fit.to_json());
-      for (auto& pair : flatten_options("reader", args->reader.to_json())) record.options.push_back(std::move(pair));
+      for (auto& pair : flatten_options("reader", args->reader.to_json()))
+        record.options.push_back(std::move(pair));
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out);
     };

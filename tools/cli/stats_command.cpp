@@ -1,8 +1,6 @@
 // shapeproc stats SCENE [--against EXEMPLAR] [--json]: the metrics of docs/metrics.md.
 #include "tools/cli/stats_command.hpp"
 
-#include "libshapeproc/io/synthesis_record_io.hpp"
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +10,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
 
@@ -33,7 +32,9 @@ std::string general(double v, int precision = 4) {
   return buffer;
 }
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 nlohmann::json cdf_json(const metrics::Distribution& d, double range, int points = 33) {
   nlohmann::json r = nlohmann::json::array(), f = nlohmann::json::array();
@@ -55,37 +56,42 @@ std::string direction_text(const geometry::Vec3& v, int dimension) {
 
 std::string boundary_text(const metrics::SceneStatistics& s) {
   if (s.periodic) return "torus";
-  return s.edge == metrics::EdgeTreatment::border ? "open (border-corrected)" : "open (no edge correction)";
+  return s.edge == metrics::EdgeTreatment::border ? "open (border-corrected)"
+                                                  : "open (no edge correction)";
 }
 
-void print_evaluation(const EvaluatedScene& scene, const Evaluation& e, const std::string& reference, std::ostream& out) {
+void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
+                      const std::string& reference, std::ostream& out) {
   const metrics::SceneStatistics& s = e.statistics;
   const char* area = s.dimension == 2 ? "²" : "³";
   const std::string unit = scene.scene.units;
   const geometry::Vec3 size = scene.scene.window.sizes();
-  out << "scene       " << scene.file << ": " << s.dimension << "D, " << s.elements() << " elements, window "
-      << general(size.x()) << " x " << general(size.y());
+  out << "scene       " << scene.file << ": " << s.dimension << "D, " << s.elements()
+      << " elements, window " << general(size.x()) << " x " << general(size.y());
   if (s.dimension == 3) out << " x " << general(size.z());
   out << ' ' << unit << ", " << boundary_text(s) << '\n';
   for (std::size_t c = 0; c < s.categories.size(); ++c) {
-    out << (c == 0 ? "intensity   " : "            ") << s.categories[c] << ": " << s.counts[c] << " elements, "
-        << general(s.intensity[c]) << " per " << unit << area;
-    if (e.comparison) out << "  (x" << fixed(e.comparison->intensity_ratio[c], 2) << " the exemplar's)";
+    out << (c == 0 ? "intensity   " : "            ") << s.categories[c] << ": " << s.counts[c]
+        << " elements, " << general(s.intensity[c]) << " per " << unit << area;
+    if (e.comparison)
+      out << "  (x" << fixed(e.comparison->intensity_ratio[c], 2) << " the exemplar's)";
     out << '\n';
   }
   const double fraction = s.elements() > 0 ? 100.0 * s.collisions.elements / s.elements() : 0.0;
-  out << "collisions  " << s.collisions.pairs.size() << " pairs, " << s.collisions.elements << " elements ("
-      << fixed(fraction, 1) << "%)\n";
+  out << "collisions  " << s.collisions.pairs.size() << " pairs, " << s.collisions.elements
+      << " elements (" << fixed(fraction, 1) << "%)\n";
   out << "distances   shape distance up to R = " << general(s.range) << ' ' << unit
-      << (reference.empty() ? " (mean spacing)" : " (the exemplar's mean spacing)") << "; nearest: mean over elements of "
+      << (reference.empty() ? " (mean spacing)" : " (the exemplar's mean spacing)")
+      << "; nearest: mean over elements of "
       << "the distance to the nearest neighbour (R if none); neighbours: mean count within R\n";
   out << "            axis  direction           nearest  neighbours";
   if (e.comparison) out << "  W1 nearest  W1 pairs";
   out << '\n';
-  auto row = [&](const std::string& name, const std::string& direction, const metrics::DirectionalStatistics& d,
-                 const metrics::DistributionDistances* w) {
-    out << "            " << std::left << std::setw(6) << name << std::setw(20) << direction << std::right << std::setw(7)
-        << general(d.nearest.mean(), 4) << std::setw(12) << fixed(d.neighbours, 2);
+  auto row = [&](const std::string& name, const std::string& direction,
+                 const metrics::DirectionalStatistics& d, const metrics::DistributionDistances* w) {
+    out << "            " << std::left << std::setw(6) << name << std::setw(20) << direction
+        << std::right << std::setw(7) << general(d.nearest.mean(), 4) << std::setw(12)
+        << fixed(d.neighbours, 2);
     if (w) out << std::setw(12) << fixed(w->nearest, 3) << std::setw(10) << fixed(w->pairs, 3);
     out << '\n';
   };
@@ -95,14 +101,15 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e, const st
         e.comparison ? &e.comparison->axes[k] : nullptr);
   }
   if (e.comparison) {
-    out << "            (W1 divided by the exemplar's mean nearest distance, " << general(e.comparison->scale) << ' '
-        << unit << ")\n";
+    out << "            (W1 divided by the exemplar's mean nearest distance, "
+        << general(e.comparison->scale) << ' ' << unit << ")\n";
   }
   out << "G(r), g(r)  ";
   const int columns = 6;
   for (int k = 1; k <= columns; ++k) out << std::setw(8) << general(s.range * k / columns, 3);
   out << "  r\n            ";
-  for (int k = 1; k <= columns; ++k) out << std::setw(8) << fixed(s.all.nearest.cdf(s.range * k / columns), 3);
+  for (int k = 1; k <= columns; ++k)
+    out << std::setw(8) << fixed(s.all.nearest.cdf(s.range * k / columns), 3);
   out << "  G\n            ";
   const std::size_t bins = s.correlation.size();
   for (int k = 1; k <= columns; ++k) {
@@ -111,7 +118,8 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e, const st
     int count = 0;
     for (std::size_t b = 0; b < bins; ++b) {
       const double r = s.correlation_r[b];
-      if (r >= s.range * (k - 1) / columns && r < s.range * k / columns && std::isfinite(s.correlation[b])) {
+      if (r >= s.range * (k - 1) / columns && r < s.range * k / columns &&
+          std::isfinite(s.correlation[b])) {
         sum += s.correlation[b];
         ++count;
       }
@@ -121,16 +129,18 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e, const st
   out << "  g\n";
   if (e.neighbourhood) {
     const metrics::NeighbourhoodDistance& n = *e.neighbourhood;
-    out << "neighbourhood distance (Davison eq. 5, Ma eq. 1): " << general(n.mean) << ' ' << unit << "² = "
-        << fixed(n.normalised, 3) << " a² (radius " << general(n.radius) << ' ' << unit << ", "
-        << fixed(n.mean_neighbours, 1) << " neighbours, " << n.output_centres << " centres)\n";
+    out << "neighbourhood distance (Davison eq. 5, Ma eq. 1): " << general(n.mean) << ' ' << unit
+        << "² = " << fixed(n.normalised, 3) << " a² (radius " << general(n.radius) << ' ' << unit
+        << ", " << fixed(n.mean_neighbours, 1) << " neighbours, " << n.output_centres
+        << " centres)\n";
   }
   out << "time        " << fixed(s.seconds + 0.0, 3) << " s\n";
 }
 
 }  // namespace
 
-EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader, const std::string& boundary) {
+EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader,
+                                    const std::string& boundary) {
   EvaluatedScene e;
   e.file = file;
   e.scene = io::read_scene(file, reader.options());
@@ -140,35 +150,46 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
   } else if (boundary == "auto" && e.record) {
     e.periodic = e.record->boundary == geometry::Boundary::torus;
   }
-  if (e.scene.elements.empty()) throw core::InputError(file, 0, "the scene has no elements to measure");
+  if (e.scene.elements.empty())
+    throw core::InputError(file, 0, "the scene has no elements to measure");
   return e;
 }
 
-EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader, const MetricFlags& flags) {
+EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader,
+                             const MetricFlags& flags) {
   return read_evaluated_scene(file, reader, flags.boundary == "torus" ? "auto" : flags.boundary);
 }
 
 void MetricFlags::add_to(CLI::App& command) {
-  command.add_option("--boundary", boundary, "auto (a shapeproc output's own boundary, else open), torus or open")
+  command
+      .add_option("--boundary", boundary,
+                  "auto (a shapeproc output's own boundary, else open), torus or open")
       ->check(CLI::IsMember({"auto", "torus", "open"}))
       ->capture_default_str();
   command.add_option("--edge", edge, "edge treatment of open windows: auto, border or none")
       ->check(CLI::IsMember({"auto", "border", "none"}))
       ->capture_default_str();
-  command.add_option("--range", range, "distances up to R (default: the exemplar's mean spacing (|W|/n)^(1/dim))");
-  command.add_option("--neighbourhood", neighbourhood, "neighbourhood radius (default: twice the exemplar's mean spacing)");
-  command.add_option("--directions", directions, "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
+  command.add_option("--range", range,
+                     "distances up to R (default: the exemplar's mean spacing (|W|/n)^(1/dim))");
+  command.add_option("--neighbourhood", neighbourhood,
+                     "neighbourhood radius (default: twice the exemplar's mean spacing)");
+  command.add_option("--directions", directions,
+                     "canonical directions: 2D an even number or 1 (default 8); 3D 12 or 1");
   command.add_option("--direction", direction, "relative orientation: gravitation or centroid")
       ->check(CLI::IsMember({"gravitation", "centroid"}))
       ->capture_default_str();
-  command.add_option("--proxy-tolerance", proxy_tolerance, "proxy error bound, fraction of each element's diagonal")
+  command
+      .add_option("--proxy-tolerance", proxy_tolerance,
+                  "proxy error bound, fraction of each element's diagonal")
       ->capture_default_str();
 }
 
-metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene, double at_range) const {
+metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene,
+                                                double at_range) const {
   if (!(range >= 0)) throw core::UsageError("--range must be positive");
   if (!(neighbourhood >= 0)) throw core::UsageError("--neighbourhood must be positive");
-  if (!(proxy_tolerance > 0 && proxy_tolerance < 1)) throw core::UsageError("--proxy-tolerance must be in (0, 1)");
+  if (!(proxy_tolerance > 0 && proxy_tolerance < 1))
+    throw core::UsageError("--proxy-tolerance must be in (0, 1)");
   metrics::StatisticsOptions o;
   o.measurement.direction = direction_kind(direction);
   o.measurement.directions = directions > 0 ? directions : (scene.scene.dimension == 3 ? 12 : 8);
@@ -180,29 +201,37 @@ metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene, dou
     throw core::UsageError(std::string("--directions: ") + e.what());
   }
   o.edge = edge == "border" ? metrics::EdgeTreatment::border
-           : edge == "none" ? metrics::EdgeTreatment::none : metrics::EdgeTreatment::automatic;
+           : edge == "none" ? metrics::EdgeTreatment::none
+                            : metrics::EdgeTreatment::automatic;
   o.range = at_range > 0 ? at_range : range;
   return o;
 }
 
 nlohmann::json MetricFlags::to_json() const {
-  return {{"boundary", boundary},       {"edge", edge}, {"range", range},         {"neighbourhood", neighbourhood},
-          {"directions", directions},   {"direction", direction}, {"proxy_tolerance", proxy_tolerance}};
+  return {{"boundary", boundary},
+          {"edge", edge},
+          {"range", range},
+          {"neighbourhood", neighbourhood},
+          {"directions", directions},
+          {"direction", direction},
+          {"proxy_tolerance", proxy_tolerance}};
 }
 
-Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags, const EvaluatedScene* reference,
+Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
+                    const EvaluatedScene* reference,
                     const metrics::SceneStatistics* reference_statistics) {
   Evaluation e;
   if (reference && reference->scene.dimension != scene.scene.dimension) {
-    throw core::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " + reference->file + " is " +
-                         std::to_string(reference->scene.dimension) + "D");
+    throw core::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " +
+                           reference->file + " is " + std::to_string(reference->scene.dimension) +
+                           "D");
   }
   const double range = reference_statistics ? reference_statistics->range : 0.0;
   e.statistics = metrics::compute_statistics(scene.scene, flags.options(scene, range));
   if (reference && reference_statistics) {
     e.comparison = metrics::compare(e.statistics, *reference_statistics);
-    e.neighbourhood = metrics::average_neighbourhood_distance(scene.scene, scene.periodic, reference->scene,
-                                                              reference->periodic, flags.neighbourhood);
+    e.neighbourhood = metrics::average_neighbourhood_distance(
+        scene.scene, scene.periodic, reference->scene, reference->periodic, flags.neighbourhood);
   }
   return e;
 }
@@ -211,11 +240,13 @@ nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e)
   const metrics::SceneStatistics& s = e.statistics;
   nlohmann::json categories = nlohmann::json::array();
   for (std::size_t c = 0; c < s.categories.size(); ++c) {
-    nlohmann::json entry = {{"name", s.categories[c]}, {"count", s.counts[c]}, {"intensity", s.intensity[c]}};
+    nlohmann::json entry = {
+        {"name", s.categories[c]}, {"count", s.counts[c]}, {"intensity", s.intensity[c]}};
     if (e.comparison) entry["intensity_ratio"] = number(e.comparison->intensity_ratio[c]);
     categories.push_back(entry);
   }
-  auto directional = [&](const metrics::DirectionalStatistics& d, const metrics::DistributionDistances* w) {
+  auto directional = [&](const metrics::DirectionalStatistics& d,
+                         const metrics::DistributionDistances* w) {
     nlohmann::json j = {{"neighbours", d.neighbours},
                         {"nearest", cdf_json(d.nearest, s.range)},
                         {"pairs", cdf_json(d.pairs, s.range)}};
@@ -226,19 +257,24 @@ nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e)
   for (std::size_t k = 0; k < s.axes.size(); ++k) {
     nlohmann::json a = directional(s.axes[k], e.comparison ? &e.comparison->axes[k] : nullptr);
     const geometry::Vec3& v = s.axes[k].direction;
-    a["direction"] = s.dimension == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
+    a["direction"] =
+        s.dimension == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
     axes.push_back(a);
   }
   nlohmann::json correlation = {{"r", s.correlation_r}, {"g", nlohmann::json::array()}};
   for (double g : s.correlation) correlation["g"].push_back(number(g));
-  nlohmann::json collisions = {{"pairs", s.collisions.pairs.size()},
-                               {"elements", s.collisions.elements},
-                               {"fraction", s.elements() > 0 ? static_cast<double>(s.collisions.elements) / s.elements() : 0.0},
-                               {"list", s.collisions.pairs}};
+  nlohmann::json collisions = {
+      {"pairs", s.collisions.pairs.size()},
+      {"elements", s.collisions.elements},
+      {"fraction",
+       s.elements() > 0 ? static_cast<double>(s.collisions.elements) / s.elements() : 0.0},
+      {"list", s.collisions.pairs}};
   nlohmann::json j = {{"scene", scene.file},
                       {"dimension", s.dimension},
                       {"boundary", s.periodic ? "torus" : "open"},
-                      {"edge", s.periodic ? "none" : s.edge == metrics::EdgeTreatment::border ? "border" : "none"},
+                      {"edge", s.periodic                                 ? "none"
+                               : s.edge == metrics::EdgeTreatment::border ? "border"
+                                                                          : "none"},
                       {"elements", s.elements()},
                       {"window_measure", s.window_measure},
                       {"units", scene.scene.units},
@@ -271,10 +307,14 @@ void add_stats_command(CLI::App& app, Action& action) {
     ReaderFlags reader;
   };
   auto args = std::make_shared<StatsArguments>();
-  CLI::App* command = app.add_subcommand(
-      "stats", "Metrics of an arrangement: collisions, intensity, directional distance distributions, G(r), g(r); "
-               "with --against, distances to an exemplar's (W1, neighbourhood distance)");
-  command->add_option("SCENE", args->scene, "exemplar or output (.svg, .obj, .ply, .off, .stl, .csv)")->required();
+  CLI::App* command =
+      app.add_subcommand("stats",
+                         "Metrics of an arrangement: collisions, intensity, directional distance "
+                         "distributions, G(r), g(r); "
+                         "with --against, distances to an exemplar's (W1, neighbourhood distance)");
+  command
+      ->add_option("SCENE", args->scene, "exemplar or output (.svg, .obj, .ply, .off, .stl, .csv)")
+      ->required();
   command->add_option("--against", args->against, "the exemplar to compare with");
   command->add_flag("--json", args->json, "print JSON instead of text");
   args->metrics.add_to(*command);
@@ -285,9 +325,11 @@ void add_stats_command(CLI::App& app, Action& action) {
       std::optional<metrics::SceneStatistics> reference_statistics;
       if (!args->against.empty()) {
         reference = read_exemplar(args->against, args->reader, args->metrics);
-        reference_statistics = metrics::compute_statistics(reference->scene, args->metrics.options(*reference, 0.0));
+        reference_statistics =
+            metrics::compute_statistics(reference->scene, args->metrics.options(*reference, 0.0));
       }
-      const EvaluatedScene scene = read_evaluated_scene(args->scene, args->reader, args->metrics.boundary);
+      const EvaluatedScene scene =
+          read_evaluated_scene(args->scene, args->reader, args->metrics.boundary);
       const Evaluation e = evaluate(scene, args->metrics, reference ? &*reference : nullptr,
                                     reference_statistics ? &*reference_statistics : nullptr);
       if (args->json) {

@@ -2,11 +2,10 @@
 // or open boundary), the metric options on the command line, and the metrics as JSON.
 #pragma once
 
-#include <optional>
-#include <string>
-
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
 
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
@@ -25,12 +24,14 @@ struct EvaluatedScene {
 
 // Reads `file`; the boundary is `boundary` (torus|open), or with "auto" the one recorded in a
 // synthesised output's record (open for anything else).
-EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader, const std::string& boundary);
+EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader,
+                                    const std::string& boundary);
 
 struct MetricFlags;
 // The exemplar side of a comparison: open, unless its own record says torus (`--boundary`
 // names the outputs' boundary, not the exemplar's).
-EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader, const MetricFlags& flags);
+EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader,
+                             const MetricFlags& flags);
 
 struct MetricFlags {
   std::string boundary = "auto";
@@ -54,7 +55,8 @@ struct Evaluation {
 };
 
 // Statistics of `scene`; against a reference, at the reference's range and compared with it.
-Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags, const EvaluatedScene* reference = nullptr,
+Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
+                    const EvaluatedScene* reference = nullptr,
                     const metrics::SceneStatistics* reference_statistics = nullptr);
 
 nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& evaluation);

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Checks that the library's modules include only the modules below them (dependencies point one
+# way: core and geometry at the bottom, the command line on top). Prints every offending include
+# and exits 1; silent and 0 when the layering holds.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# module: the modules it may include (besides itself)
+declare -A allowed=(
+  [core]=""
+  [geometry]="core"
+  [model]="core geometry"
+  [synthesis]="core geometry"
+  [render]="core geometry model"
+  [io]="core geometry model synthesis render"
+  [fit]="core geometry model"
+  [sample]="core geometry model synthesis"
+  [metrics]="core geometry"
+  [report]="core geometry model synthesis render io metrics"
+)
+status=0
+for dir in libshapeproc/*/; do
+  module=$(basename "$dir")
+  if [ -z "${allowed[$module]+set}" ]; then
+    echo "check-includes: module '$module' has no place in the layering (add it to scripts/check-includes.sh)"
+    status=1
+    continue
+  fi
+  while IFS= read -r line; do
+    file=${line%%:*}
+    used=$(sed -E 's#.*"libshapeproc/([a-z_]+)/.*#\1#' <<< "$line")
+    [ "$used" = "$module" ] && continue
+    if ! grep -qw -- "$used" <<< "${allowed[$module]}"; then
+      echo "check-includes: $file includes libshapeproc/$used/ but $module may include only: ${allowed[$module]:-nothing}"
+      status=1
+    fi
+  done < <(grep -rHE '^#include "libshapeproc/[a-z_]+/' "$dir" || true)
+done
+# The library never includes the command line.
+if grep -rqE '^#include "tools/' libshapeproc; then
+  grep -rHE '^#include "tools/' libshapeproc | sed 's/^/check-includes: the library includes the CLI: /'
+  status=1
+fi
+exit $status
