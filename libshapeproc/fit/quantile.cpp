@@ -4,11 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libshapeproc/core/check.hpp"
+
 namespace shapeproc::fit {
 
 double quantile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) throw std::invalid_argument("quantile of no values");
-  if (!(q >= 0 && q <= 1)) throw std::invalid_argument("quantile order must be in [0, 1]");
+  core::check(!sorted.empty(), "quantile", "no values");
+  core::check_in_range("quantile", "the order", q, 0.0, 1.0);
   const double h = (static_cast<double>(sorted.size()) - 1.0) * q;
   const std::size_t low = static_cast<std::size_t>(std::floor(h));
   if (low + 1 >= sorted.size()) return sorted.back();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/core/error.hpp"
 
 namespace shapeproc::geometry {
 
@@ -43,16 +44,16 @@ Vec3 healpix_base_pixel_centre(int pixel) {
 DirectionBins::DirectionBins(int dimension, int directions)
     : dimension_(dimension), directions_(directions) {
   if (directions < 1)
-    throw std::invalid_argument("directions: need at least 1, got " + std::to_string(directions));
+    throw core::ArgumentError("directions", "need at least 1, got " + std::to_string(directions));
   if (directions == 1) {
     axes_.push_back(Vec3::UnitX());
     return;
   }
   if (dimension == 2) {
     if (directions % 2 != 0) {
-      throw std::invalid_argument(
-          "directions: an even number (or 1 for isotropic) is needed in 2D, got " +
-          std::to_string(directions));
+      throw core::ArgumentError(
+          "directions",
+          "an even number (or 1 for isotropic) is needed in 2D, got " + std::to_string(directions));
     }
     for (int k = 0; k < directions / 2; ++k) {
       const double angle = 2 * core::kPi * k / directions;
@@ -60,8 +61,8 @@ DirectionBins::DirectionBins(int dimension, int directions)
     }
   } else {
     if (directions != 12) {
-      throw std::invalid_argument("directions: 3D uses the 12 HEALPix base pixels (12) or 1, got " +
-                                  std::to_string(directions));
+      throw core::ArgumentError("directions", "3D uses the 12 HEALPix base pixels (12) or 1, got " +
+                                                  std::to_string(directions));
     }
     for (int pixel : {0, 1, 2, 3, 4, 5}) axes_.push_back(healpix_base_pixel_centre(pixel));
   }

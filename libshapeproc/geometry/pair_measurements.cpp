@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
@@ -80,11 +81,9 @@ std::vector<Vec3> surface_samples(const Proxy3& proxy, double step) {
 
 PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options)
     : dimension_(scene.dimension), options_(options), bins_(scene.dimension, options.directions) {
-  if (!(options.proxy.tolerance >= 0.0))
-    throw std::invalid_argument("proxy tolerance must not be negative");
-  if (!(options.gravitation_theta >= 0.0 && options.gravitation_theta < 1.0)) {
-    throw std::invalid_argument("gravitation theta must be in [0, 1)");
-  }
+  core::check_non_negative("measure", "the proxy tolerance", options.proxy.tolerance);
+  core::check_in_range("measure", "the gravitation theta", options.gravitation_theta, 0.0, 1.0,
+                       true);
   if (options.periodic) {
     period_ = scene.window.sizes();
     if (dimension_ == 2) period_.z() = 0.0;

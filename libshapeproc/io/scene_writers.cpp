@@ -61,38 +61,56 @@ void require_dimension(const Scene& scene, int dimension, const char* format) {
 
 }  // namespace
 
+namespace {
+
+// One element: a <path>, a <g> of paths, or a dot for a point element.
+void write_svg_element(const Scene& scene, std::size_t i, std::ostream& out) {
+  const geometry::Box3& w = scene.window;
+  const geometry::Element& element = scene.elements[i];
+  const geometry::Shape shape = scene.placed_shape(i);
+  const std::string attributes = " id=\"e" + std::to_string(i) + "\" data-category=\"" +
+                                 xml_escape(scene.categories.at(element.category).name) + "\"";
+  if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
+    if (planar->parts.size() == 1) {
+      write_drawable(out, planar->parts.front(), attributes);
+    } else {
+      out << "<g" << attributes << ">\n";
+      for (const geometry::Drawable2& part : planar->parts) write_drawable(out, part, "");
+      out << "</g>\n";
+    }
+  } else {
+    // A point element: a small dot so that the output shows where it is.
+    const double r = 0.005 * w.sizes().head<2>().norm();
+    out << "<circle" << attributes << " cx=\"" << format_number(element.position.x()) << "\" cy=\""
+        << format_number(element.position.y()) << "\" r=\"" << format_number(r) << "\"/>\n";
+  }
+}
+
+}  // namespace
+
 void write_svg(const Scene& scene, std::ostream& out, const Provenance& provenance) {
   require_dimension(scene, 2, "SVG");
   const geometry::Box3& w = scene.window;
   const std::string width = format_number(w.sizes().x()), height = format_number(w.sizes().y());
   const std::string unit = scene.units == "px" ? "" : scene.units;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << unit << "\" height=\""
-      << height << unit << "\" viewBox=\"" << format_number(w.min().x()) << ' '
-      << format_number(w.min().y()) << ' ' << width << ' ' << height << "\">\n";
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
+      << width << unit << "\" height=\"" << height << unit << "\" viewBox=\""
+      << format_number(w.min().x()) << ' ' << format_number(w.min().y()) << ' ' << width << ' '
+      << height << "\">\n";
   if (!provenance.json.empty()) {
     out << "<metadata id=\"shapeproc\">" << xml_escape(provenance.json) << "</metadata>\n";
   }
-  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
-    const geometry::Element& element = scene.elements[i];
-    const geometry::Shape shape = scene.placed_shape(i);
-    const std::string attributes = " id=\"e" + std::to_string(i) + "\" data-category=\"" +
-                                   xml_escape(scene.categories.at(element.category).name) + "\"";
-    if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
-      if (planar->parts.size() == 1) {
-        write_drawable(out, planar->parts.front(), attributes);
-      } else {
-        out << "<g" << attributes << ">\n";
-        for (const geometry::Drawable2& part : planar->parts) write_drawable(out, part, "");
-        out << "</g>\n";
-      }
-    } else {
-      // A point element: a small dot so that the output shows where it is.
-      const double r = 0.005 * w.sizes().head<2>().norm();
-      out << "<circle" << attributes << " cx=\"" << format_number(element.position.x())
-          << "\" cy=\"" << format_number(element.position.y()) << "\" r=\"" << format_number(r)
-          << "\"/>\n";
+  // Each category in its own layer (Inkscape's groupmode), elements in scene order within it.
+  for (std::size_t c = 0; c < scene.categories.size(); ++c) {
+    const std::string name = xml_escape(scene.categories[c].name);
+    out << "<g inkscape:groupmode=\"layer\" inkscape:label=\"" << name << "\" id=\"layer" << c + 1
+        << "\">\n";
+    for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+      if (scene.elements[i].category == static_cast<int>(c)) write_svg_element(scene, i, out);
     }
+    out << "</g>\n";
   }
   out << "</svg>\n";
 }

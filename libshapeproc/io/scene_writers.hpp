@@ -16,8 +16,9 @@ struct Provenance {
 
 // Each element drawn with its own style; the window is the viewBox. An element with one drawable
 // is a <path>, one with several is a <g> of paths; each carries `data-category` with its category
-// name, so `--category-by attr:data-category` reads the categories back. Throws UsageError for
-// non-2D scenes.
+// name, so `--category-by attr:data-category` (or `layer`) reads the categories back. Each
+// category is an Inkscape layer named for it, holding its elements in scene order. Throws
+// UsageError for non-2D scenes.
 void write_svg(const geometry::Scene& scene, std::ostream& out, const Provenance& provenance);
 
 // One `o` object per element (named e<index>, with `# category` comments); 3D scenes only.

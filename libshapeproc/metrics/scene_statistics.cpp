@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/random.hpp"
 
@@ -163,9 +164,10 @@ int SceneStatistics::elements() const { return std::accumulate(counts.begin(), c
 
 SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  if (scene.elements.empty()) throw std::invalid_argument("the scene has no elements");
-  if (!(options.range >= 0) || options.correlation_bins < 1)
-    throw std::invalid_argument("bad statistics options");
+  core::check(!scene.elements.empty(), "statistics", "the scene has no elements");
+  core::check_non_negative("statistics", "the range", options.range);
+  core::check(options.correlation_bins >= 1, "statistics",
+              "at least one correlation bin is needed");
   const std::size_t n = scene.elements.size();
   const int dim = scene.dimension;
 
@@ -173,7 +175,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   stats.dimension = dim;
   stats.periodic = options.measurement.periodic;
   stats.window_measure = scene.window_measure();
-  if (!(stats.window_measure > 0)) throw std::invalid_argument("the window has no area");
+  core::check_positive("statistics", "the window's measure", stats.window_measure);
   stats.mean_spacing = std::pow(stats.window_measure / static_cast<double>(n), 1.0 / dim);
   const double range = options.range > 0 ? options.range : stats.mean_spacing;
   stats.range = range;
@@ -281,7 +283,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
 Comparison compare(const SceneStatistics& scene, const SceneStatistics& reference) {
   if (scene.axes.size() != reference.axes.size() ||
       std::abs(scene.range - reference.range) > 1e-9 * reference.range) {
-    throw std::invalid_argument(
+    throw core::ArgumentError(
+        "compare",
         "statistics computed with different ranges or direction bins cannot be compared");
   }
   Comparison c;

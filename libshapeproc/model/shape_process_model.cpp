@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "libshapeproc/core/error.hpp"
+
 namespace shapeproc::model {
 
 namespace {
@@ -15,7 +17,7 @@ std::string number(double v) {
 }
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
-  throw std::invalid_argument(where + ": " + what);
+  throw core::ArgumentError(where, what);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/render/raster.hpp"
@@ -112,7 +113,7 @@ std::string strip_xml_declaration(const std::string& svg) {
 
 void require(const ReportScene& s) {
   if (!s.scene || !s.statistics)
-    throw std::invalid_argument("report: a scene or its statistics are missing");
+    throw core::ArgumentError("report", "a scene or its statistics are missing");
 }
 
 }  // namespace

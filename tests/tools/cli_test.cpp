@@ -418,3 +418,94 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
 
 }  // namespace
 }  // namespace shapeproc::cli
+
+namespace shapeproc::cli {
+namespace {
+
+TEST(CliMessages, MisspeltOptionsAreNamedWithTheClosestValidOne) {
+  expect_one_line_error(
+      run_cli({"sample", "m.json", "--sizee", "4,4", "-o", "x.svg"}), 2,
+      "unknown option '--sizee' (did you mean --size?); see shapeproc sample --help");
+  expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--categry-by", "fill"}), 2,
+                        "did you mean --category-by?");
+  // Far from every option: no guess.
+  const Result far = run_cli({"info", data("svg/dots-random.svg"), "--zzzzzzzz"});
+  expect_one_line_error(far, 2, "unknown option '--zzzzzzzz'");
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+TEST(CliMessages, ModelArgumentsThatAreNotModels) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("x.svg").string();
+  expect_one_line_error(
+      run_cli({"sample", data("svg/dots-random.svg"), "--size", "4,4", "-o", out}), 2,
+      "this is an exemplar, not a model; use shapeproc synthesize");
+  const std::string json = dir.write("other.json", R"({"name": "not a model"})").string();
+  expect_one_line_error(run_cli({"sample", json, "--size", "4,4", "-o", out}), 2,
+                        "not a shapeproc model file");
+  expect_one_line_error(
+      run_cli({"sample", json, "--size", "4,4", "-o", dir.file("x.bmp").string()}), 2,
+      ".svg, .obj, .ply, .csv or .png");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSynthesize, OptionsAreCheckedBeforeTheFit) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  // --size with one number: refused before the (slow) fit, so no model file is written.
+  expect_one_line_error(run_cli({"synthesize", data("svg/two-kinds.svg"), "--size", "440",
+                                 "--model", model, "-o", dir.file("x.svg").string()}),
+                        2, "--size");
+  expect_one_line_error(run_cli({"synthesize", data("svg/two-kinds.svg"), "--size", "440,440",
+                                 "--model", model, "--domain", dir.file("missing.svg").string(),
+                                 "--boundary", "open", "-o", dir.file("x.svg").string()}),
+                        2, "missing.svg: no such file");
+  expect_one_line_error(
+      run_cli({"synthesize", data("svg/two-kinds.svg"), "--size", "440,440", "--model", model,
+               "--trace", dir.file("t.txt").string(), "-o", dir.file("x.svg").string()}),
+      2, "--trace");
+  EXPECT_FALSE(std::filesystem::exists(model));
+}
+
+TEST(CliSample, OutputsCarryLayersARecordAndPicturesTheirSeed) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  ASSERT_EQ(run_cli({"fit", data("svg/two-kinds.svg"), "--category-by", "fill", "--quadrature", "8",
+                     "-o", model})
+                .code,
+            0);
+  const std::string out = dir.file("out.svg").string(), png = dir.file("out.png").string();
+  const Result r = run_cli({"sample", model, "-o", out, "--size", "200,200", "--seed", "12",
+                            "--iterations", "4000", "--png", png, "--png-scale", "2", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // Each category in its own Inkscape layer.
+  pugi::xml_document svg;
+  ASSERT_TRUE(svg.load_file(out.c_str()));
+  int layers = 0;
+  for (pugi::xml_node g : svg.document_element().children("g")) {
+    EXPECT_STREQ(g.attribute("inkscape:groupmode").value(), "layer");
+    for (pugi::xml_node e : g.children())
+      EXPECT_STREQ(e.attribute("data-category").value(), g.attribute("inkscape:label").value());
+    ++layers;
+  }
+  EXPECT_EQ(layers, 2);
+  // The picture: 2 pixels per unit, and the seed and command in its text.
+  const geometry::Raster picture = io::read_grayscale_png(png);
+  EXPECT_EQ(picture.width, 400);
+  const std::string bytes = testing::read_file(png);
+  EXPECT_NE(bytes.find("seed 12"), std::string::npos);
+  EXPECT_NE(bytes.find("shapeproc sample"), std::string::npos);
+  // The output read back as a torus by stats --boundary auto (the record says so).
+  const Result stats = run_cli({"stats", out, "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_EQ(nlohmann::json::parse(stats.out)["boundary"], "torus");
+  // -o out.png: a picture of the output alone.
+  ASSERT_EQ(run_cli({"sample", model, "-o", dir.file("only.png").string(), "--size", "200,200",
+                     "--iterations", "100", "--quiet"})
+                .code,
+            0);
+  EXPECT_EQ(io::read_grayscale_png(dir.file("only.png")).width, 800);
+}
+
+}  // namespace
+}  // namespace shapeproc::cli

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "libshapeproc/core/error.hpp"
 #include "tools/cli/commands.hpp"
@@ -16,6 +18,48 @@ std::string one_line(std::string text) {
     if (c == '\n' || c == '\r') c = ' ';
   }
   while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+// Levenshtein distance, for suggesting the option a user meant.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown option '--sizee' (did you mean --size?)" for the first argument CLI11 did not expect.
+std::string unknown_option_message(const CLI::App& command,
+                                   const std::vector<std::string>& extras) {
+  const std::string given = extras.empty() ? std::string() : extras.front();
+  const std::string name = given.substr(0, given.find('='));
+  std::string best;
+  std::size_t best_distance = std::string::npos;
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& long_name : option->get_lnames()) {
+      const std::string candidate = "--" + long_name;
+      const std::size_t d = edit_distance(name, candidate);
+      if (d < best_distance) {
+        best_distance = d;
+        best = candidate;
+      }
+    }
+  }
+  std::string text =
+      (name.rfind("-", 0) == 0 ? "unknown option '" : "unexpected argument '") + name + "'";
+  if (!best.empty() && name.rfind("-", 0) == 0 &&
+      best_distance <= std::max<std::size_t>(2, name.size() / 3)) {
+    text += " (did you mean " + best + "?)";
+  }
   return text;
 }
 
@@ -68,7 +112,19 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
     out << e.what() << '\n';
     return 0;
   } catch (const CLI::ParseError& e) {
-    err << "shapeproc: " << one_line(e.what()) << " (see shapeproc --help)\n";
+    const CLI::App* chosen = &app;
+    for (const CLI::App* sub : app.get_subcommands()) chosen = sub;
+    const std::string name = chosen == &app ? "shapeproc" : "shapeproc " + chosen->get_name();
+    // A misspelt option is the likeliest cause of any parse error it comes with ("--size is
+    // required" after "--sizee"): name it first.
+    const std::vector<std::string> extras = chosen->remaining();
+    if (!extras.empty() &&
+        (extras.front().rfind("-", 0) == 0 || dynamic_cast<const CLI::ExtrasError*>(&e))) {
+      err << name << ": " << unknown_option_message(*chosen, extras) << "; see " << name
+          << " --help\n";
+      return 2;
+    }
+    err << "shapeproc: " << one_line(e.what()) << " (see " << name << " --help)\n";
     return 2;
   }
 
@@ -80,6 +136,12 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const core::UsageError& e) {
     err << "shapeproc: " << one_line(e.what()) << '\n';
     return 2;
+  } catch (const core::ArgumentError& e) {
+    err << "shapeproc: " << one_line(e.what()) << '\n';
+    return 2;
+  } catch (const core::Cancelled&) {
+    err << "shapeproc: cancelled; nothing was written\n";
+    return 130;
   } catch (const std::exception& e) {
     err << "shapeproc: internal error: " << one_line(e.what()) << '\n';
     return 1;

@@ -162,6 +162,8 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   record.domain_file = domain;
   record.intensity_file = intensity;
   chains_options.record = std::move(record);
+  const InterruptFlag interrupt;
+  chains_options.cancel = interrupt.flag();
   ProgressBar bar("sampling", verbosity.show_progress());
   chains_options.progress = [&bar](long long done, long long total) { bar.update(done, total); };
   const std::vector<synthesis::SynthesisResult> results =
@@ -171,7 +173,14 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   for (int c = 0; c < chains; ++c) {
     const synthesis::SynthesisResult& result = results[static_cast<std::size_t>(c)];
     const std::string file = suffixed(output, c, chains);
-    io::write_scene(result.scene, file, io::synthesis_provenance(result.record));
+    if (io::extension_of(file) == "png") {
+      render::RenderOptions picture;
+      picture.scale = png_scale;
+      picture.text = png_text(result.record);
+      render::write_png(result.scene, file, picture);
+    } else {
+      io::write_scene(result.scene, file, io::synthesis_provenance(result.record));
+    }
     if (!trace.empty()) write_trace(suffixed(trace, c, chains), result);
     if (!png.empty()) {
       render::RenderOptions picture;
