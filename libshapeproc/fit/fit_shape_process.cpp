@@ -39,11 +39,16 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   model = model_skeleton(exemplar, options);
   const std::vector<std::vector<int>> shapes_of = shapes_by_category(exemplar);
 
+  const auto stage = [&](const char* name) {
+    if (options.progress) options.progress(name, 0, 0);
+  };
   // Proxies and every pair's measurements.
+  stage("proxies");
   const bool periodic = options.edge == EdgeTreatment::periodic;
   auto clock = std::chrono::steady_clock::now();
   const geometry::PairMeasurer measurer(exemplar, model.measurement_options(periodic));
   result.seconds.proxies = seconds_since(clock);
+  stage("measurements");
   clock = std::chrono::steady_clock::now();
   const std::vector<geometry::PairRecord> pairs = measurer.all_pairs(exemplar.elements);
   result.seconds.measurements = seconds_since(clock);
@@ -55,6 +60,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
       exemplar_statistics(exemplar, pairs, interaction, region, model);
   result.data_points = statistics.data_points;
 
+  stage("quadrature");
   clock = std::chrono::steady_clock::now();
   const QuadratureDesign quadrature = quadrature_design(
       exemplar, options, region, measurer, interaction, statistics, shapes_of, periodic);
@@ -69,6 +75,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   if (existence) merge_equal_points(heavier);
   result.seconds.quadrature = seconds_since(clock);
 
+  stage("optimisation");
   // Maximum pseudo-likelihood, from β at the data's density and γ = 1.
   clock = std::chrono::steady_clock::now();
   const double measure = region.box.sizes().head(exemplar.dimension).prod();

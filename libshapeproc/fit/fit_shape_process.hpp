@@ -2,6 +2,7 @@
 // directional distance distributions, then β and γ by maximum log pseudo-likelihood.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct FitOptions {
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;
+  // Called at each stage ("proxies", "measurements", "quadrature", "optimisation") with the work
+  // done and its total (0: not known); during the quadrature, with blocks of rows done, from the
+  // integrating threads (calls may come from two threads at once). May be empty.
+  std::function<void(const char* stage, long long done, long long total)> progress;
 };
 
 struct FitResult {

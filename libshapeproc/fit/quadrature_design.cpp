@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <thread>
 
@@ -17,6 +18,8 @@ using geometry::Element;
 using geometry::Vec3;
 
 namespace {
+
+using FitProgress = std::function<void(const char*, long long, long long)>;
 
 // A dummy location with its shape, before integration.
 struct Dummy {
@@ -125,25 +128,30 @@ void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid,
 // of a block (the results do not depend on the blocks).
 void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::size_t>& block_start,
                      const CellGrid& grid, const FitRegion& region, CellContext context,
-                     double range, int refinement, std::vector<std::vector<CellPart>>& parts) {
+                     double range, int refinement, const FitProgress& progress,
+                     std::vector<std::vector<CellPart>>& parts) {
   Vec3 cell_size = Vec3::Zero();
   for (int axis = 0; axis < region.dimension; ++axis)
     cell_size[axis] = grid.sizes[axis] / grid.count[axis];
   context.lattice_origin = region.box.min();
   context.lattice_step = cell_size / 8.0;
   context.top_corner = 0.5 * cell_size.norm();
-  std::atomic<std::size_t> next_block{0};
+  std::atomic<std::size_t> next_block{0}, done{0};
+  const long long blocks = static_cast<long long>(block_start.size()) - 1;
   on_threads([&](std::size_t, std::size_t) {
     CornerCache cache;
     for (std::size_t b = next_block++; b + 1 < block_start.size(); b = next_block++) {
+      if (progress) progress("quadrature", static_cast<long long>(done.load()), blocks);
       cache.clear();
       for (std::size_t d = block_start[b]; d < block_start[b + 1]; ++d) {
         parts[d] = range <= 0 ? std::vector<CellPart>{CellPart{}}
                               : integrate_cell_adaptive(context, dummies[d].element, cell_size,
                                                         refinement, &cache);
       }
+      ++done;
     }
   });
+  if (progress) progress("quadrature", blocks, blocks);
 }
 
 }  // namespace
@@ -250,7 +258,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
       neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
     const CellContext context{&interaction, &measurer, &exemplar.elements,
                               &neighbours,  dimension, period};
-    integrate_cells(dummies, block_start, grid, region, context, range, options.refinement, parts);
+    integrate_cells(dummies, block_start, grid, region, context, range, options.refinement,
+                    options.progress, parts);
   }
 
   // Lines: the data points' share comes off every line of their category alike, so that the

@@ -21,6 +21,7 @@ struct FitArguments {
   std::string input, output;
   FitFlags fit;
   ReaderFlags reader;
+  VerbosityFlags verbosity;
 };
 
 std::vector<double> number_list(const std::string& text, const char* option) {
@@ -36,7 +37,8 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   const auto start = std::chrono::steady_clock::now();
   if (io::extension_of(args.output) != "json")
     throw core::UsageError(args.output + ": the model is written as .json");
-  const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments);
+  const fit::FitResult result =
+      fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity);
   io::write_model(result.model, args.output);
 
   print_model_summary(result.model, out);
@@ -54,12 +56,27 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 }  // namespace
 
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
-                            const ReaderFlags& reader, const std::vector<std::string>& arguments) {
-  const fit::FitOptions options = flags.options();
+                            const ReaderFlags& reader, const std::vector<std::string>& arguments,
+                            const VerbosityFlags& verbosity) {
+  fit::FitOptions options = flags.options();
+  verbosity.stage("reading " + input);
   const geometry::Scene exemplar = io::read_scene(input, reader.options());
+  // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
+  // terminal.
+  ProgressBar bar("fitting: quadrature", verbosity.show_progress());
+  std::string last_stage;
+  options.progress = [&](const char* stage, long long done, long long total) {
+    if (stage != last_stage && total == 0) {
+      last_stage = stage;
+      verbosity.stage(std::string("fit: ") + stage);
+      return;
+    }
+    bar.update(done, total);
+  };
   fit::FitResult result;
   try {
     result = fit::fit_shape_process(exemplar, options);
+    bar.finish();
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
@@ -157,6 +174,7 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   command->add_option("-o,--output", args->output, "model file (.json)")->required();
   args->fit.add_to(*command);
   args->reader.add_to(*command);
+  args->verbosity.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_fit(*args, arguments, out); };
   });

@@ -41,7 +41,8 @@ struct FitFlags {
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
 // reader and fit options. Fit failures become core::InputError naming the exemplar.
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
-                            const ReaderFlags& reader, const std::vector<std::string>& arguments);
+                            const ReaderFlags& reader, const std::vector<std::string>& arguments,
+                            const VerbosityFlags& verbosity);
 
 struct SampleFlags {
   std::string size, domain, intensity, boundary, trace, png;

@@ -121,7 +121,7 @@ void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out)
     }
   }
   out << "; " << model.interactions.size() << " interacting pair(s), " << bands
-      << " gamma(s), range " << g(range) << ' ' << model.units;
+      << " gamma(s), range " << g(range) << (model.units == "1" ? "" : " " + model.units);
   if (unbounded > 0)
     out << " (" << unbounded << " unbounded: the fit has no finite maximum, docs/fit.md)";
   out << '\n';

@@ -266,8 +266,8 @@ void add_synthesize_command(CLI::App& app, Action& action,
       args->sample.check(args->output);
       args->fit.options();  // its own checks, before reading or fitting anything
       args->reader.options();
-      args->sample.verbosity.stage("fitting " + args->input);
-      const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments);
+      const fit::FitResult fitted =
+          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity);
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
       print_model_brief(fitted.model, out);
       synthesis::SynthesisRecord record;
