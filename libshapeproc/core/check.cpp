@@ -3,18 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "libshapeproc/core/format.hpp"
+
 namespace shapeproc::core {
 
-std::string describe(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  // The shortest of %.15g .. %.17g that reads back as the same double.
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    if (std::strtod(text, nullptr) == value) break;
-  }
-  return text;
-}
+std::string describe(double value) { return format_number(value); }
 
 void check_positive(const char* function, const char* name, double value) {
   check(std::isfinite(value) && value > 0, function,

@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/fit/quantile.hpp"
+#include "libshapeproc/geometry/directions.hpp"
 
 namespace shapeproc::fit {
 
@@ -65,8 +66,7 @@ model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar,
   model.units = exemplar.units;
   model.measurement.distance = options.distance;
   model.measurement.direction = options.direction;
-  model.measurement.directions =
-      options.directions > 0 ? options.directions : (dimension == 3 ? 12 : 8);
+  model.measurement.directions = geometry::directions_or_default(options.directions, dimension);
   model.measurement.proxy_tolerance = options.proxy_tolerance;
   const std::vector<std::size_t> per_category = geometry::category_counts(exemplar);
   for (std::size_t c = 0; c < exemplar.categories.size(); ++c) {

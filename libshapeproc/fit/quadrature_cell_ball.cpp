@@ -4,6 +4,7 @@
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/quadrature_cell_internal.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 
 namespace shapeproc::fit {
 
@@ -49,11 +50,7 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context,
     const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
     if (!interaction.interacts(dummy.category, other.category)) return;
     const double reach = interaction.max_range(dummy.category, other.category);
-    Vec3 offset = other.position - dummy.position;
-    for (int axis = 0; axis < context.dimension; ++axis) {
-      if (context.period[axis] > 0)
-        offset[axis] -= context.period[axis] * std::round(offset[axis] / context.period[axis]);
-    }
+    const Vec3 offset = geometry::minimum_image(other.position - dummy.position, context.period);
     if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >=
         reach + corner)
       return;

@@ -9,10 +9,13 @@
 
 namespace shapeproc::fit {
 
-std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geometry::Element& dummy,
-                                           const geometry::Vec3& size, bool* uniform, CornerCache* cache);
+std::vector<CellPart> integrate_cell_plane(const CellContext& context,
+                                           const geometry::Element& dummy,
+                                           const geometry::Vec3& size, bool* uniform,
+                                           CornerCache* cache);
 
-std::vector<CellPart> integrate_cell_ball(const CellContext& context, const geometry::Element& dummy,
+std::vector<CellPart> integrate_cell_ball(const CellContext& context,
+                                          const geometry::Element& dummy,
                                           const geometry::Vec3& size, bool* uniform);
 
 // Radius of the disc (2D) or ball (3D) of the given measure.

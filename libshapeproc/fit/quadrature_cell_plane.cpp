@@ -13,6 +13,7 @@
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/cell_cuts.hpp"
 #include "libshapeproc/fit/quadrature_cell_internal.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 
 namespace shapeproc::fit {
 
@@ -49,7 +50,8 @@ struct NeighbourView {
 
 class PlaneCell {
  public:
-  PlaneCell(const CellContext& context, const geometry::Element& dummy, const Vec3& size, CornerCache* cache)
+  PlaneCell(const CellContext& context, const geometry::Element& dummy, const Vec3& size,
+            CornerCache* cache)
       : context_(context),
         interaction_(*context.interaction),
         measurer_(*context.measurer),
@@ -100,12 +102,13 @@ class PlaneCell {
     corner_ = std::hypot(hx_, hy_);
     // Samples at the corners use one cut-off whatever the refinement, so that they can be shared.
     sample_reach_ = 3 * (context_.top_corner > 0 ? context_.top_corner : corner_);
-    on_lattice_ = cache_ != nullptr && context_.lattice_step.x() > 0 && context_.lattice_step.y() > 0;
+    on_lattice_ =
+        cache_ != nullptr && context_.lattice_step.x() > 0 && context_.lattice_step.y() > 0;
     for (std::size_t i = 0; i < 4 && on_lattice_; ++i) {
-      const double fx =
-          (dummy_.position.x() + kCorners[i].x * hx_ - context_.lattice_origin.x()) / context_.lattice_step.x();
-      const double fy =
-          (dummy_.position.y() + kCorners[i].y * hy_ - context_.lattice_origin.y()) / context_.lattice_step.y();
+      const double fx = (dummy_.position.x() + kCorners[i].x * hx_ - context_.lattice_origin.x()) /
+                        context_.lattice_step.x();
+      const double fy = (dummy_.position.y() + kCorners[i].y * hy_ - context_.lattice_origin.y()) /
+                        context_.lattice_step.y();
       lattice_x_[i] = std::lround(fx);
       lattice_y_[i] = std::lround(fy);
       on_lattice_ = std::abs(fx - static_cast<double>(lattice_x_[i])) < 1e-6 &&
@@ -114,7 +117,9 @@ class PlaneCell {
   }
 
   // Whether the line n·p = c meets the cell.
-  bool meets(double nx, double ny, double c) const { return std::abs(c) < std::abs(nx) * hx_ + std::abs(ny) * hy_; }
+  bool meets(double nx, double ny, double c) const {
+    return std::abs(c) < std::abs(nx) * hx_ + std::abs(ny) * hy_;
+  }
 
   // The data elements whose interaction may reach the cell, nearest first: a hard core over the
   // whole cell then ends the work early.
@@ -124,12 +129,10 @@ class PlaneCell {
     context_.grid->for_each_candidate(dummy_.position, [&](int k) {
       const geometry::Element& other = (*context_.data)[static_cast<std::size_t>(k)];
       if (!interaction_.interacts(dummy_.category, other.category)) return;
-      Vec3 offset = other.position - dummy_.position;
-      for (int axis = 0; axis < 2; ++axis) {
-        if (context_.period[axis] > 0)
-          offset[axis] -= context_.period[axis] * std::round(offset[axis] / context_.period[axis]);
-      }
-      const double gap = offset.norm() - measurer_.radius(dummy_.shape) - measurer_.radius(other.shape);
+      const Vec3 offset =
+          geometry::minimum_image(other.position - dummy_.position, context_.period);
+      const double gap =
+          offset.norm() - measurer_.radius(dummy_.shape) - measurer_.radius(other.shape);
       if (gap >= interaction_.max_range(dummy_.category, other.category) + corner_) return;
       candidates.push_back({gap, k, offset});
     });
@@ -163,7 +166,8 @@ class PlaneCell {
     v.cutoff = reach + sample_reach_;
     const std::vector<double>& breakpoints = interaction_.breakpoints(ca, cb);
     const int certain = measurer_.certain_axis(dummy_.shape, v.other->shape, v.offset, corner_);
-    const std::vector<double>& deciding = certain >= 0 ? interaction_.thresholds(ca, cb, certain) : breakpoints;
+    const std::vector<double>& deciding =
+        certain >= 0 ? interaction_.thresholds(ca, cb, certain) : breakpoints;
     v.d = v.lo;
     v.exact = any_within(deciding, v.lo - corner_, v.hi + corner_);
     if (v.exact) {
@@ -215,8 +219,10 @@ class PlaneCell {
         v.k,
         lattice_x_[i],
         lattice_y_[i],
-        context_.period.x() > 0 ? static_cast<int>(std::lround(image.x() / context_.period.x())) : 0,
-        context_.period.y() > 0 ? static_cast<int>(std::lround(image.y() / context_.period.y())) : 0};
+        context_.period.x() > 0 ? static_cast<int>(std::lround(image.x() / context_.period.x()))
+                                : 0,
+        context_.period.y() > 0 ? static_cast<int>(std::lround(image.y() / context_.period.y()))
+                                : 0};
   }
 
   Vec3 offset_at_corner(const NeighbourView& v, std::size_t i) const {
@@ -227,7 +233,9 @@ class PlaneCell {
   }
 
   double corner_distance(const NeighbourView& v, std::size_t i) const {
-    const auto measure = [&] { return measurer_.distance(dummy_.shape, v.other->shape, offset_at_corner(v, i), v.cutoff); };
+    const auto measure = [&] {
+      return measurer_.distance(dummy_.shape, v.other->shape, offset_at_corner(v, i), v.cutoff);
+    };
     return on_lattice_ ? cache_->distance(corner_key(v, i), measure) : measure();
   }
 
@@ -261,11 +269,14 @@ class PlaneCell {
         return band_a >= 0 || band_a != interaction_.band(ca, cb, axis_b, x);
       };
       if (differ_at(std::max(0.0, range_low))) return true;
-      return std::any_of(breakpoints.begin(), breakpoints.end(),
-                         [&](double t) { return t > range_low && t <= range_high && differ_at(t); });
+      return std::any_of(breakpoints.begin(), breakpoints.end(), [&](double t) {
+        return t > range_low && t <= range_high && differ_at(t);
+      });
     };
     const long half_turn = directions / 2;
-    const auto axis_of_sector = [&](long s) { return static_cast<int>(((s % half_turn) + half_turn) % half_turn); };
+    const auto axis_of_sector = [&](long s) {
+      return static_cast<int>(((s % half_turn) + half_turn) % half_turn);
+    };
     const long nearest_other = sector + (angle > static_cast<double>(sector) * step ? 1 : -1);
     if (!(directions > 2 && margin * v.offset.norm() < kSectorReach * corner_ &&
           differ(n.axis, axis_of_sector(nearest_other)))) {
@@ -305,14 +316,16 @@ class PlaneCell {
   }
 
   // Thresholds of `axes` within (low, high], ascending, with the axes they belong to.
-  std::vector<std::pair<double, std::uint64_t>> thresholds_within(int ca, int cb, std::uint64_t axes, double low,
+  std::vector<std::pair<double, std::uint64_t>> thresholds_within(int ca, int cb,
+                                                                  std::uint64_t axes, double low,
                                                                   double high) const {
     std::vector<std::pair<double, std::uint64_t>> found;
     for (int axis = 0; axis < 64 && (axes >> axis) != 0; ++axis) {
       if (!holds(axes, axis)) continue;
       for (const double t : interaction_.thresholds(ca, cb, axis)) {
         if (t <= low || t > high) continue;
-        auto at = std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == t; });
+        auto at =
+            std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == t; });
         if (at == found.end()) {
           found.push_back({t, 0});
           at = found.end() - 1;
@@ -329,7 +342,8 @@ class PlaneCell {
   // gradient line a distance grows linearly. Slope by least squares through the centre from the
   // corners off contact (at contact the field is flat), then κ from what is left.
   void add_distance_cuts(const NeighbourView& v, std::uint64_t axes) {
-    const auto crossing = thresholds_within(dummy_.category, v.other->category, axes, v.d - corner_, v.d + corner_);
+    const auto crossing =
+        thresholds_within(dummy_.category, v.other->category, axes, v.d - corner_, v.d + corner_);
     if (crossing.empty()) return;
     const double d = v.d;
     std::array<double, 4> at;
@@ -366,7 +380,8 @@ class PlaneCell {
     }
     const bool curved = off_contact >= 3 && weight > 1e-3 * corner4;
     // A curvature radius below the cell's half-diagonal is taken as that radius.
-    const double bend = std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner_, 1.0 / corner_);
+    const double bend =
+        std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner_, 1.0 / corner_);
     // The level set ξ = level − bend·η² as chords across the cell, each moved towards the
     // parabola by 2/3 of its sagitta so that the areas balance; the convex side is the
     // intersection of the chords' half-planes.
@@ -374,7 +389,8 @@ class PlaneCell {
     const int chords = sagitta < 0.05 * side_ ? 1 : sagitta < 0.5 * side_ ? 2 : 4;
     for (const auto& [b, threshold_axes] : crossing) {
       const double level = (b - d) / slope;
-      PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides_.size()), chords};
+      PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides_.size()),
+                   chords};
       const double sign = cut.inside_below ? 1.0 : -1.0;
       for (int i = 0; i < chords; ++i) {
         const double e0 = -corner_ + 2 * corner_ * i / chords, e1 = e0 + 2 * corner_ / chords;
@@ -392,8 +408,9 @@ class PlaneCell {
   // early); after a neighbour's cuts, pieces in its hard core are dropped. A distance cut only
   // splits pieces on the side of the axes whose threshold it is.
   const std::vector<Piece>& cut_into_pieces(bool* uniform) {
-    std::stable_sort(neighbours_.begin(), neighbours_.end(),
-                     [](const PlaneNeighbour& a, const PlaneNeighbour& b) { return a.distance < b.distance; });
+    std::stable_sort(
+        neighbours_.begin(), neighbours_.end(),
+        [](const PlaneNeighbour& a, const PlaneNeighbour& b) { return a.distance < b.distance; });
     constexpr std::size_t kMaxCuts = 64, kMaxPieces = 256;
     thread_local std::vector<Piece> pieces, next;
     pieces.assign(1, Piece{});
@@ -413,7 +430,8 @@ class PlaneCell {
         const HalfPlane* last = first + cut.side_count;
         if (static_cast<std::size_t>(c) >= kMaxCuts || pieces.size() >= kMaxPieces) {
           // Too many boundaries: the rest keep the centre's side.
-          const bool centre_inside = std::all_of(first, last, [](const HalfPlane& h) { return h.c >= 0; });
+          const bool centre_inside =
+              std::all_of(first, last, [](const HalfPlane& h) { return h.c >= 0; });
           if (static_cast<std::size_t>(c) < kMaxCuts && centre_inside) {
             for (Piece& piece : pieces) piece.inside |= std::uint64_t{1} << c;
           }
@@ -448,7 +466,8 @@ class PlaneCell {
       next.clear();
       for (const Piece& piece : pieces) {
         const int axis = piece_axis(n, cuts_, piece.inside);
-        if (interaction_.band(dummy_.category, n.category, axis, piece_distance(n, cuts_, piece.inside, axis)) !=
+        if (interaction_.band(dummy_.category, n.category, axis,
+                              piece_distance(n, cuts_, piece.inside, axis)) !=
             Interaction::kHardCore) {
           next.push_back(piece);
         }
@@ -467,20 +486,21 @@ class PlaneCell {
       model::InteractionCounts counts = base_;
       for (const PlaneNeighbour& n : neighbours_) {
         const int axis = piece_axis(n, cuts_, piece.inside);
-        const int band =
-            interaction_.band(dummy_.category, n.category, axis, piece_distance(n, cuts_, piece.inside, axis));
+        const int band = interaction_.band(dummy_.category, n.category, axis,
+                                           piece_distance(n, cuts_, piece.inside, axis));
         if (band >= 0) counts.add(interaction_.parameter(dummy_.category, n.category, axis, band));
       }
       const double fraction = piece.polygon.area() / cell_area;
-      const auto same =
-          std::find_if(result.begin(), result.end(), [&](const CellPart& p) { return p.counts == counts.counts; });
+      const auto same = std::find_if(result.begin(), result.end(),
+                                     [&](const CellPart& p) { return p.counts == counts.counts; });
       if (same != result.end()) {
         same->fraction += fraction;
       } else {
         result.push_back({fraction, std::move(counts.counts)});
       }
     }
-    std::sort(result.begin(), result.end(), [](const CellPart& a, const CellPart& b) { return a.counts < b.counts; });
+    std::sort(result.begin(), result.end(),
+              [](const CellPart& a, const CellPart& b) { return a.counts < b.counts; });
     return result;
   }
 
@@ -502,8 +522,9 @@ class PlaneCell {
 
 }  // namespace
 
-std::vector<CellPart> integrate_cell_plane(const CellContext& context, const geometry::Element& dummy,
-                                           const Vec3& size, bool* uniform, CornerCache* cache) {
+std::vector<CellPart> integrate_cell_plane(const CellContext& context,
+                                           const geometry::Element& dummy, const Vec3& size,
+                                           bool* uniform, CornerCache* cache) {
   return PlaneCell(context, dummy, size, cache).integrate(uniform);
 }
 

@@ -15,9 +15,16 @@
 
 namespace shapeproc::geometry {
 
+// The default number of canonical directions: 8 in 2D, the 12 HEALPix base pixels in 3D.
+inline int default_directions(int dimension) { return dimension == 3 ? 12 : 8; }
+// `directions` when positive, else the default for the dimension.
+inline int directions_or_default(int directions, int dimension) {
+  return directions > 0 ? directions : default_directions(dimension);
+}
+
 class DirectionBins {
  public:
-  // Throws std::invalid_argument for D < 1, odd D > 1 in 2D, or D other than 1 and 12 in 3D.
+  // Throws core::ArgumentError for D < 1, odd D > 1 in 2D, or D other than 1 and 12 in 3D.
   DirectionBins(int dimension, int directions);
 
   int dimension() const { return dimension_; }

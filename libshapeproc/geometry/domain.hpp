@@ -18,6 +18,15 @@ struct Proxy2;
 
 enum class Boundary { torus, open };
 
+// `offset` replaced by its nearest image on the torus of sizes `period` (axes with period 0 are
+// open): the one place the minimum-image rule is written.
+inline Vec3 minimum_image(Vec3 offset, const Vec3& period) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (period[axis] > 0) offset[axis] -= period[axis] * std::round(offset[axis] / period[axis]);
+  }
+  return offset;
+}
+
 // "torus" or "open"; parse_boundary throws core::ArgumentError on anything else.
 const char* to_string(Boundary boundary);
 Boundary parse_boundary(const std::string& text);
@@ -43,13 +52,7 @@ class Domain {
 
   // The offset `offset` (from one position to another) replaced by its nearest image on a torus;
   // unchanged on an open domain.
-  Vec3 minimum_image(Vec3 offset) const {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (period_[axis] > 0)
-        offset[axis] -= period_[axis] * std::round(offset[axis] / period_[axis]);
-    }
-    return offset;
-  }
+  Vec3 minimum_image(const Vec3& offset) const { return geometry::minimum_image(offset, period_); }
   // A position moved into the box along the torus's axes (unchanged when open).
   Vec3 wrap(Vec3 position) const;
   // Whether a reference position lies in the box (closed).

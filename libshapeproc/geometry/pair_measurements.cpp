@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 
@@ -487,12 +488,8 @@ std::vector<PairRecord> PairMeasurer::all_pairs(const std::vector<Element>& elem
       const Element& b = elements[j];
       if (std::isfinite(range) && options_.distance != DistanceKind::hausdorff) {
         // Cheap reject: d >= |offset| - r_a - r_b for every distance kind but Hausdorff.
-        Vec3 t = b.position - a.position;
-        if (options_.periodic) {
-          for (int k = 0; k < dimension_; ++k) {
-            if (period_[k] > 0) t[k] -= period_[k] * std::round(t[k] / period_[k]);
-          }
-        }
+        const Vec3 t = options_.periodic ? minimum_image(b.position - a.position, period_)
+                                         : Vec3(b.position - a.position);
         const double reach =
             options_.distance == DistanceKind::centroid ? 0.0 : radii_[a.shape] + radii_[b.shape];
         if (t.norm() - reach >= range) continue;

@@ -39,7 +39,7 @@ geometry::Domain read_domain(const DomainFiles& files, int dimension) {
                    [](double v) { return v > 0 && std::isfinite(v); })) {
     std::string given;
     for (std::size_t i = 0; i < sizes.size(); ++i)
-      given += (i ? "," : "") + format_number(sizes[i]);
+      given += (i ? "," : "") + core::format_number(sizes[i]);
     throw core::UsageError("--size: expected " + std::string(dimension == 2 ? "W,H" : "W,H,D") +
                            " (positive) for a " + std::to_string(dimension) + "D model, got '" +
                            given + "'");

@@ -23,16 +23,17 @@ constexpr int kVersion = 1;
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string path_data(const geometry::Path2& path) {
-  std::string d =
-      "M" + format_number(path.start_point().x()) + " " + format_number(path.start_point().y());
+  std::string d = "M" + core::format_number(path.start_point().x()) + " " +
+                  core::format_number(path.start_point().y());
   for (const geometry::Segment2& s : path.segments) {
     if (s.cubic) {
-      d += "C" + format_number(s.control1.x()) + " " + format_number(s.control1.y()) + " " +
-           format_number(s.control2.x()) + " " + format_number(s.control2.y()) + " ";
+      d += "C" + core::format_number(s.control1.x()) + " " + core::format_number(s.control1.y()) +
+           " " + core::format_number(s.control2.x()) + " " + core::format_number(s.control2.y()) +
+           " ";
     } else {
       d += "L";
     }
-    d += format_number(s.end.x()) + " " + format_number(s.end.y());
+    d += core::format_number(s.end.x()) + " " + core::format_number(s.end.y());
   }
   if (path.closed) d += "Z";
   return d;

@@ -15,9 +15,9 @@ namespace {
 std::string path_data(const geometry::Path2& path) {
   std::string d;
   auto point = [&](const geometry::Vec2& p) {
-    d += format_number(p.x());
+    d += core::format_number(p.x());
     d += ' ';
-    d += format_number(p.y());
+    d += core::format_number(p.y());
   };
   d += 'M';
   point(path.start_point());
@@ -81,8 +81,9 @@ void write_svg_element(const Scene& scene, std::size_t i, std::ostream& out) {
   } else {
     // A point element: a small dot so that the output shows where it is.
     const double r = 0.005 * w.sizes().head<2>().norm();
-    out << "<circle" << attributes << " cx=\"" << format_number(element.position.x()) << "\" cy=\""
-        << format_number(element.position.y()) << "\" r=\"" << format_number(r) << "\"/>\n";
+    out << "<circle" << attributes << " cx=\"" << core::format_number(element.position.x())
+        << "\" cy=\"" << core::format_number(element.position.y()) << "\" r=\""
+        << core::format_number(r) << "\"/>\n";
   }
 }
 
@@ -91,14 +92,15 @@ void write_svg_element(const Scene& scene, std::size_t i, std::ostream& out) {
 void write_svg(const Scene& scene, std::ostream& out, const Provenance& provenance) {
   require_dimension(scene, 2, "SVG");
   const geometry::Box3& w = scene.window;
-  const std::string width = format_number(w.sizes().x()), height = format_number(w.sizes().y());
+  const std::string width = core::format_number(w.sizes().x()),
+                    height = core::format_number(w.sizes().y());
   const std::string unit = scene.units == "px" ? "" : scene.units;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
          "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\""
       << width << unit << "\" height=\"" << height << unit << "\" viewBox=\""
-      << format_number(w.min().x()) << ' ' << format_number(w.min().y()) << ' ' << width << ' '
-      << height << "\">\n";
+      << core::format_number(w.min().x()) << ' ' << core::format_number(w.min().y()) << ' ' << width
+      << ' ' << height << "\">\n";
   if (!provenance.json.empty()) {
     out << "<metadata id=\"shapeproc\">" << xml_escape(provenance.json) << "</metadata>\n";
   }
@@ -127,8 +129,8 @@ void write_obj(const Scene& scene, std::ostream& out, const Provenance& provenan
     out << "o e" << i << "\n# category " << scene.categories.at(scene.elements[i].category).name
         << "\n";
     for (const geometry::Vec3& v : mesh->mesh.vertices) {
-      out << "v " << format_number(v.x()) << ' ' << format_number(v.y()) << ' '
-          << format_number(v.z()) << '\n';
+      out << "v " << core::format_number(v.x()) << ' ' << core::format_number(v.y()) << ' '
+          << core::format_number(v.z()) << '\n';
     }
     for (const auto& t : mesh->mesh.triangles) {
       out << "f " << t[0] + offset << ' ' << t[1] + offset << ' ' << t[2] + offset << '\n';
@@ -155,8 +157,8 @@ void write_ply(const Scene& scene, std::ostream& out, const Provenance& provenan
       << "element face " << triangles << "\nproperty list uchar int vertex_indices\nend_header\n";
   for (const geometry::Shape& shape : placed) {
     for (const geometry::Vec3& v : std::get<geometry::MeshShape>(shape.geometry).mesh.vertices) {
-      out << format_number(v.x()) << ' ' << format_number(v.y()) << ' ' << format_number(v.z())
-          << '\n';
+      out << core::format_number(v.x()) << ' ' << core::format_number(v.y()) << ' '
+          << core::format_number(v.z()) << '\n';
     }
   }
   std::size_t offset = 0;
@@ -173,8 +175,8 @@ void write_csv(const Scene& scene, std::ostream& out) {
   const bool three = scene.dimension == 3;
   out << (three ? "x,y,z,category,shape\n" : "x,y,category,shape\n");
   for (const geometry::Element& e : scene.elements) {
-    out << format_number(e.position.x()) << ',' << format_number(e.position.y()) << ',';
-    if (three) out << format_number(e.position.z()) << ',';
+    out << core::format_number(e.position.x()) << ',' << core::format_number(e.position.y()) << ',';
+    if (three) out << core::format_number(e.position.z()) << ',';
     out << csv_field(scene.categories.at(e.category).name) << ',' << e.shape << '\n';
   }
 }

@@ -570,10 +570,10 @@ Drawable2 SvgReader::styled(std::vector<Path2> paths, const State& state) const 
   if (auto width = style.find("stroke-width"); width != style.end()) {
     const double scale = std::sqrt(std::abs(map.linear().determinant()));
     if (const auto w = parse_number(width->second); w && scale != 1.0) {
-      width->second = format_number(*w * scale);
+      width->second = core::format_number(*w * scale);
     }
   }
-  if (state.opacity != 1.0) style["opacity"] = format_number(state.opacity);
+  if (state.opacity != 1.0) style["opacity"] = core::format_number(state.opacity);
   drawable.style = std::move(style);
   return drawable;
 }

@@ -12,13 +12,6 @@
 
 namespace shapeproc::io {
 
-std::string format_number(double value) {
-  if (value == 0.0) return "0";  // also folds -0
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
-
 namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }

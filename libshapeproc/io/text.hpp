@@ -8,10 +8,9 @@
 #include <string_view>
 #include <vector>
 
-namespace shapeproc::io {
+#include "libshapeproc/core/format.hpp"
 
-// Shortest decimal text that reads back as exactly `value` ("0.1", "2", "1e-20").
-std::string format_number(double value);
+namespace shapeproc::io {
 
 // Parses a whole string as one finite number; nullopt on anything else.
 std::optional<double> parse_number(std::string_view text);

@@ -5,16 +5,13 @@
 #include <stdexcept>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::model {
 
 namespace {
 
-std::string number(double v) {
-  std::ostringstream text;
-  text << v;
-  return text.str();
-}
+std::string number(double v) { return core::format_number(v); }
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   throw core::ArgumentError(where, what);

@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::render {
 
@@ -32,11 +33,7 @@ std::string colour(double gamma) {
   return text;
 }
 
-std::string fmt(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
+std::string fmt(double v) { return core::format_general(v, 4); }
 
 // An annular sector between radii r0 < r1 and angles a0 < a1 (radians, y down as in SVG).
 std::string sector(double cx, double cy, double r0, double r1, double a0, double a1) {

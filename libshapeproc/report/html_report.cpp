@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "libshapeproc/render/interaction_plot.hpp"
 #include "libshapeproc/render/raster.hpp"
@@ -28,10 +29,7 @@ std::string output_colour(std::size_t i) {
 std::string escape(const std::string& text) { return io::xml_escape(text); }
 
 std::string num(double v, int precision = 4) {
-  if (!std::isfinite(v)) return "–";
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*g", precision, v);
-  return text;
+  return std::isfinite(v) ? core::format_general(v, precision) : "–";
 }
 
 struct Series {

@@ -102,9 +102,9 @@ class ShapeProcessSampler::Chain {
 
   void propose_death() {
     ++moves_.deaths_proposed;
+    const int slot = uniform_slot();
+    if (slot < 0) return;
     const int n = state_.size();
-    if (n == 0) return;
-    const int slot = state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(n)));
     const Element& x = state_.at(slot);
     const double log_lambda =
         s_.log_beta_[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
@@ -119,9 +119,8 @@ class ShapeProcessSampler::Chain {
 
   void propose_shift() {
     ++moves_.shifts_proposed;
-    const int n = state_.size();
-    if (n == 0) return;
-    const int slot = state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(n)));
+    const int slot = uniform_slot();
+    if (slot < 0) return;
     Element moved = state_.at(slot);
     moved.position += offset_in_ball();
     moved.position = s_.domain_.wrap(moved.position);
@@ -142,6 +141,12 @@ class ShapeProcessSampler::Chain {
   std::vector<Element> elements() const { return state_.elements(); }
 
  private:
+  // A uniformly chosen element's slot; -1 (and no draw) when the configuration is empty.
+  int uniform_slot() {
+    const int n = state_.size();
+    return n == 0 ? -1 : state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(n)));
+  }
+
   // Uniform in the ball of radius ρ, by rejection from its bounding cube.
   Vec3 offset_in_ball() {
     const double radius = s_.shift_radius_;

@@ -17,11 +17,11 @@ TEST(Text, FormatNumberRoundTripsExactly) {
   std::uniform_real_distribution<double> value(-1e6, 1e6);
   for (int i = 0; i < 1000; ++i) {
     const double x = value(rng) * std::pow(10.0, static_cast<int>(rng() % 20) - 10);
-    EXPECT_EQ(parse_number(format_number(x)).value(), x);
+    EXPECT_EQ(parse_number(core::format_number(x)).value(), x);
   }
-  EXPECT_EQ(format_number(0.1), "0.1");
-  EXPECT_EQ(format_number(-0.0), "0");
-  EXPECT_EQ(format_number(2.0), "2");
+  EXPECT_EQ(core::format_number(0.1), "0.1");
+  EXPECT_EQ(core::format_number(-0.0), "0");
+  EXPECT_EQ(core::format_number(2.0), "2");
 }
 
 TEST(Text, NumberListsAcceptSvgMinifiedForms) {

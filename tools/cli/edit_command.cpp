@@ -115,13 +115,13 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
       c.beta *= args.scale_beta;
       c.beta_standard_error *= args.scale_beta;
     }
-    edits.push_back("scale-beta " + io::format_number(args.scale_beta));
+    edits.push_back("scale-beta " + core::format_number(args.scale_beta));
   }
   if (args.scale_thresholds != 1.0) {
     for (auto& pair : m.interactions)
       for (auto& axis : pair.axes)
         for (double& t : axis.thresholds) t *= args.scale_thresholds;
-    edits.push_back("scale-thresholds " + io::format_number(args.scale_thresholds));
+    edits.push_back("scale-thresholds " + core::format_number(args.scale_thresholds));
   }
   for (const std::string& edit : args.beta) {
     const auto equals = edit.find('=');

@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/directions.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -34,9 +35,10 @@ void write_pairs(std::ostream& out, int dimension, const std::vector<geometry::P
   out << (dimension == 3 ? "i,j,distance,ox,oy,oz,axis\n" : "i,j,distance,ox,oy,axis\n");
   for (const geometry::PairRecord& p : pairs) {
     const geometry::Measurement& m = p.measurement;
-    out << p.i << ',' << p.j << ',' << io::format_number(m.distance) << ','
-        << io::format_number(m.direction.x()) << ',' << io::format_number(m.direction.y()) << ',';
-    if (dimension == 3) out << io::format_number(m.direction.z()) << ',';
+    out << p.i << ',' << p.j << ',' << core::format_number(m.distance) << ','
+        << core::format_number(m.direction.x()) << ',' << core::format_number(m.direction.y())
+        << ',';
+    if (dimension == 3) out << core::format_number(m.direction.z()) << ',';
     out << m.axis << '\n';
   }
 }
@@ -58,7 +60,7 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   geometry::MeasurementOptions options;
   options.distance = distance_kind(args.distance);
   options.direction = direction_kind(args.direction);
-  options.directions = args.directions > 0 ? args.directions : (scene.dimension == 3 ? 12 : 8);
+  options.directions = geometry::directions_or_default(args.directions, scene.dimension);
   options.periodic = args.periodic;
   options.proxy.tolerance = args.proxy_tolerance;
 

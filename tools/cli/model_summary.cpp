@@ -8,17 +8,13 @@
 #include <sstream>
 
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::cli {
 
 namespace {
 
-std::string g(double v, int digits = 4) {
-  if (!std::isfinite(v)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
+std::string g(double v, int digits = 4) { return core::format_general(v, digits); }
 
 std::string direction_text(const geometry::Vec3& d, int dimension) {
   if (dimension == 2) return g(std::atan2(d.y(), d.x()) * 180 / core::kPi, 3) + " deg";

@@ -36,7 +36,7 @@ void write_trace(const std::string& file, const synthesis::SynthesisResult& resu
     f << "# shapeproc " << result.record.command << " seed " << result.record.seed << " chain "
       << result.record.chain << "\nstep,elements,log_density\n";
     for (const auto& t : result.trace)
-      f << t.step << ',' << t.elements << ',' << io::format_number(t.log_density) << '\n';
+      f << t.step << ',' << t.elements << ',' << core::format_number(t.log_density) << '\n';
   });
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/directions.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -19,18 +20,8 @@ namespace shapeproc::cli {
 namespace {
 
 // printf-style formatting of one number, for tables.
-std::string fixed(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", precision, v);
-  return buffer;
-}
-std::string general(double v, int precision = 4) {
-  if (!std::isfinite(v)) return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*g", precision, v);
-  return buffer;
-}
+using core::format_fixed;
+using core::format_general;
 
 nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -48,8 +39,8 @@ nlohmann::json cdf_json(const metrics::Distribution& d, double range, int points
 
 std::string direction_text(const geometry::Vec3& v, int dimension) {
   std::ostringstream s;
-  s << '(' << fixed(v.x(), 2) << ", " << fixed(v.y(), 2);
-  if (dimension == 3) s << ", " << fixed(v.z(), 2);
+  s << '(' << format_fixed(v.x(), 2) << ", " << format_fixed(v.y(), 2);
+  if (dimension == 3) s << ", " << format_fixed(v.z(), 2);
   s << ')';
   return s.str();
 }
@@ -67,20 +58,20 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
   const std::string unit = scene.scene.units;
   const geometry::Vec3 size = scene.scene.window.sizes();
   out << "scene       " << scene.file << ": " << s.dimension << "D, " << s.elements()
-      << " elements, window " << general(size.x()) << " x " << general(size.y());
-  if (s.dimension == 3) out << " x " << general(size.z());
+      << " elements, window " << format_general(size.x()) << " x " << format_general(size.y());
+  if (s.dimension == 3) out << " x " << format_general(size.z());
   out << ' ' << unit << ", " << boundary_text(s) << '\n';
   for (std::size_t c = 0; c < s.categories.size(); ++c) {
     out << (c == 0 ? "intensity   " : "            ") << s.categories[c] << ": " << s.counts[c]
-        << " elements, " << general(s.intensity[c]) << " per " << unit << area;
+        << " elements, " << format_general(s.intensity[c]) << " per " << unit << area;
     if (e.comparison)
-      out << "  (x" << fixed(e.comparison->intensity_ratio[c], 2) << " the exemplar's)";
+      out << "  (x" << format_fixed(e.comparison->intensity_ratio[c], 2) << " the exemplar's)";
     out << '\n';
   }
   const double fraction = s.elements() > 0 ? 100.0 * s.collisions.elements / s.elements() : 0.0;
   out << "collisions  " << s.collisions.pairs.size() << " pairs, " << s.collisions.elements
-      << " elements (" << fixed(fraction, 1) << "%)\n";
-  out << "distances   shape distance up to R = " << general(s.range) << ' ' << unit
+      << " elements (" << format_fixed(fraction, 1) << "%)\n";
+  out << "distances   shape distance up to R = " << format_general(s.range) << ' ' << unit
       << (reference.empty() ? " (mean spacing)" : " (the exemplar's mean spacing)")
       << "; nearest: mean over elements of "
       << "the distance to the nearest neighbour (R if none); neighbours: mean count within R\n";
@@ -90,9 +81,11 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
   auto row = [&](const std::string& name, const std::string& direction,
                  const metrics::DirectionalStatistics& d, const metrics::DistributionDistances* w) {
     out << "            " << std::left << std::setw(6) << name << std::setw(20) << direction
-        << std::right << std::setw(7) << general(d.nearest.mean(), 4) << std::setw(12)
-        << fixed(d.neighbours, 2);
-    if (w) out << std::setw(12) << fixed(w->nearest, 3) << std::setw(10) << fixed(w->pairs, 3);
+        << std::right << std::setw(7) << format_general(d.nearest.mean(), 4) << std::setw(12)
+        << format_fixed(d.neighbours, 2);
+    if (w)
+      out << std::setw(12) << format_fixed(w->nearest, 3) << std::setw(10)
+          << format_fixed(w->pairs, 3);
     out << '\n';
   };
   row("all", "", s.all, e.comparison ? &e.comparison->all : nullptr);
@@ -102,14 +95,15 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
   }
   if (e.comparison) {
     out << "            (W1 divided by the exemplar's mean nearest distance, "
-        << general(e.comparison->scale) << ' ' << unit << ")\n";
+        << format_general(e.comparison->scale) << ' ' << unit << ")\n";
   }
   out << "G(r), g(r)  ";
   const int columns = 6;
-  for (int k = 1; k <= columns; ++k) out << std::setw(8) << general(s.range * k / columns, 3);
+  for (int k = 1; k <= columns; ++k)
+    out << std::setw(8) << format_general(s.range * k / columns, 3);
   out << "  r\n            ";
   for (int k = 1; k <= columns; ++k)
-    out << std::setw(8) << fixed(s.all.nearest.cdf(s.range * k / columns), 3);
+    out << std::setw(8) << format_fixed(s.all.nearest.cdf(s.range * k / columns), 3);
   out << "  G\n            ";
   const std::size_t bins = s.correlation.size();
   for (int k = 1; k <= columns; ++k) {
@@ -124,17 +118,17 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
         ++count;
       }
     }
-    out << std::setw(8) << (count > 0 ? fixed(sum / count, 3) : "-");
+    out << std::setw(8) << (count > 0 ? format_fixed(sum / count, 3) : "-");
   }
   out << "  g\n";
   if (e.neighbourhood) {
     const metrics::NeighbourhoodDistance& n = *e.neighbourhood;
-    out << "neighbourhood distance (Davison eq. 5, Ma eq. 1): " << general(n.mean) << ' ' << unit
-        << "² = " << fixed(n.normalised, 3) << " a² (radius " << general(n.radius) << ' ' << unit
-        << ", " << fixed(n.mean_neighbours, 1) << " neighbours, " << n.output_centres
-        << " centres)\n";
+    out << "neighbourhood distance (Davison eq. 5, Ma eq. 1): " << format_general(n.mean) << ' '
+        << unit << "² = " << format_fixed(n.normalised, 3) << " a² (radius "
+        << format_general(n.radius) << ' ' << unit << ", " << format_fixed(n.mean_neighbours, 1)
+        << " neighbours, " << n.output_centres << " centres)\n";
   }
-  out << "time        " << fixed(s.seconds + 0.0, 3) << " s\n";
+  out << "time        " << format_fixed(s.seconds + 0.0, 3) << " s\n";
 }
 
 }  // namespace
@@ -192,7 +186,7 @@ metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene,
     throw core::UsageError("--proxy-tolerance must be in (0, 1)");
   metrics::StatisticsOptions o;
   o.measurement.direction = direction_kind(direction);
-  o.measurement.directions = directions > 0 ? directions : (scene.scene.dimension == 3 ? 12 : 8);
+  o.measurement.directions = geometry::directions_or_default(directions, scene.scene.dimension);
   o.measurement.periodic = scene.periodic;
   o.measurement.proxy.tolerance = proxy_tolerance;
   try {

@@ -1,0 +1,15 @@
+// Numbers as text, one formatter per use: exact for files, fixed and general for tables.
+#pragma once
+
+#include <string>
+
+namespace shapeproc::core {
+
+// The shortest text that reads back as the same double ("0.1", "1e-300"; -0 as "0"): for files
+// and messages.
+std::string format_number(double value);
+// printf's %.Nf and %.Ng, "-" for NaN and infinities: for tables people read.
+std::string format_fixed(double value, int precision = 3);
+std::string format_general(double value, int digits = 4);
+
+}  // namespace shapeproc::core
