@@ -17,10 +17,11 @@ namespace shapeproc::fit {
 enum class EdgeTreatment { none, periodic, border };
 
 struct FitOptions {
-  int directions = 0;  // canonical directions; 0 = 8 in 2D, 12 in 3D
-  geometry::DistanceKind distance = geometry::DistanceKind::shape;
-  geometry::DirectionKind direction = geometry::DirectionKind::gravitation;
-  double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
+  // How pairs are measured, as the model records it; directions 0 = the default for the
+  // exemplar's dimension (geometry::default_directions).
+  model::MeasurementSettings measurement = {geometry::DistanceKind::shape,
+                                            geometry::DirectionKind::gravitation, 0,
+                                            geometry::ProxyOptions{}.tolerance};
   // Quantile orders q_0 < q_1 < … of the thresholds, or explicit thresholds (then the same for
   // every pair and axis; quantiles are ignored).
   std::vector<double> quantiles = {0.0, 0.1, 0.2};

@@ -64,10 +64,9 @@ model::ShapeProcessModel model_skeleton(const geometry::Scene& exemplar,
   model::ShapeProcessModel model;
   model.dimension = dimension;
   model.units = exemplar.units;
-  model.measurement.distance = options.distance;
-  model.measurement.direction = options.direction;
-  model.measurement.directions = geometry::directions_or_default(options.directions, dimension);
-  model.measurement.proxy_tolerance = options.proxy_tolerance;
+  model.measurement = options.measurement;
+  model.measurement.directions =
+      geometry::directions_or_default(options.measurement.directions, dimension);
   const std::vector<std::size_t> per_category = geometry::category_counts(exemplar);
   for (std::size_t c = 0; c < exemplar.categories.size(); ++c) {
     core::check(per_category[c] > 0, "fit",

@@ -78,7 +78,7 @@ TEST(Fit, TinyStraussMatchesTheExactMple) {
     g -= (-hbg * gb + hbb * gg) / det;
   }
   FitOptions options;
-  options.directions = 1;
+  options.measurement.directions = 1;
   options.thresholds = {0.0, r};
   options.quadrature = 400;
   const FitResult fit = fit_shape_process(scene, options);
@@ -233,7 +233,7 @@ TEST(FitSpecialCases, IdenticalShapesAndEdgeTreatments) {
     FitOptions options;
     options.quadrature = 12;
     options.edge = edge;
-    options.directions = 2;
+    options.measurement.directions = 2;
     options.quantiles = {0.0, 0.05};
     const FitResult fit = fit_shape_process(bubbles, options);
     EXPECT_TRUE(std::isfinite(fit.log_pseudo_likelihood)) << to_string(edge);

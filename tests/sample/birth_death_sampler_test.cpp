@@ -214,8 +214,8 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   ASSERT_GT(sampled.scene.elements.size(), 700u);
 
   fit::FitOptions fit_options;
-  fit_options.directions = 4;
-  fit_options.direction = geometry::DirectionKind::centroid;
+  fit_options.measurement.directions = 4;
+  fit_options.measurement.direction = geometry::DirectionKind::centroid;
   fit_options.thresholds = {0.0, 4.0, 8.0};
   fit_options.edge = fit::EdgeTreatment::periodic;
   fit_options.quadrature = 128;

@@ -130,21 +130,21 @@ void FitFlags::add_to(CLI::App& command) {
 
 fit::FitOptions FitFlags::options() const {
   fit::FitOptions o;
-  o.directions = directions;
+  o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");
   o.edge = edge == "periodic" ? fit::EdgeTreatment::periodic
            : edge == "border" ? fit::EdgeTreatment::border
                               : fit::EdgeTreatment::none;
-  o.distance = distance_kind(distance);
-  o.direction = direction_kind(direction);
+  o.measurement.distance = distance_kind(distance);
+  o.measurement.direction = direction_kind(direction);
   o.quadrature = quadrature;
   o.shapes_per_location = shapes_per_location;
   o.refinement = refine;
   o.lines = lines;
   if (!(proxy_tolerance >= 0 && proxy_tolerance < 1))
     throw core::UsageError("--proxy-tolerance must be in [0, 1)");
-  o.proxy_tolerance = proxy_tolerance;
+  o.measurement.proxy_tolerance = proxy_tolerance;
   if (!(data_weight >= 0 && data_weight < 1))
     throw core::UsageError("--data-weight must be in [0, 1)");
   o.data_weight = data_weight;
