@@ -6,6 +6,10 @@
 #include <set>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "tests/test_support.hpp"
 
 namespace shapeproc::synthesis {
 namespace {
@@ -126,6 +130,52 @@ TEST(RunChains, AChainsErrorReachesTheCaller) {
   EXPECT_THROW(run_chains(method, options), core::UsageError);
   options.chains = 0;
   EXPECT_THROW(run_chains(method, options), core::ArgumentError);
+}
+
+}  // namespace
+}  // namespace shapeproc::synthesis
+
+// The README's and docs/synthesis.md's example, with the shape-process sampler: fit, then chains
+// on a torus twice the exemplar's size; the chains' outputs do not depend on the thread count.
+
+namespace shapeproc::synthesis {
+namespace {
+
+TEST(RunChains, ShapeProcessChainsAsTheDocsShowThem) {
+  const geometry::Scene scene = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  fit::FitOptions fit_options;
+  fit_options.quadrature = 16;
+  const auto model = fit::fit_shape_process(scene, fit_options).model;
+  const auto size = scene.window.sizes();
+  const auto domain =
+      geometry::Domain::from_sizes({2 * size.x(), 2 * size.y()}, geometry::Boundary::torus);
+  sample::SamplerOptions options;
+  options.iterations = 3000;
+  const sample::ShapeProcessSampler sampler(model, domain, options);
+  ChainOptions chains;
+  chains.chains = 3;
+  chains.seed = 1;
+  chains.threads = 1;
+  const std::vector<SynthesisResult> one = run_chains(sampler, chains);
+  chains.threads = 3;
+  const std::vector<SynthesisResult> three = run_chains(sampler, chains);
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(one[c].record.method, "shape-process");
+    EXPECT_EQ(one[c].record.steps, 3000);
+    EXPECT_EQ(one[c].record.size, (std::vector<double>{2 * size.x(), 2 * size.y()}));
+    EXPECT_EQ(one[c].record.boundary, geometry::Boundary::torus);
+    ASSERT_EQ(one[c].scene.elements.size(), three[c].scene.elements.size());
+    for (std::size_t i = 0; i < one[c].scene.elements.size(); ++i) {
+      EXPECT_EQ(one[c].scene.elements[i].position, three[c].scene.elements[i].position);
+    }
+  }
+  // Chain 1 is the one-off sampler with the run's seed.
+  core::Random random(1);
+  const sample::SampleResult alone = sampler.sample(random);
+  ASSERT_EQ(alone.scene.elements.size(), one[0].scene.elements.size());
+  for (std::size_t i = 0; i < alone.scene.elements.size(); ++i) {
+    EXPECT_EQ(alone.scene.elements[i].position, one[0].scene.elements[i].position);
+  }
 }
 
 }  // namespace
