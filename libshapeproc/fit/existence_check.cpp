@@ -26,12 +26,10 @@ void add_existence_notes(const MpleResult& mple, bool follows_share,
   if (follows_share) {
     notes.push_back(
         "the pseudo-likelihood has no finite maximum without the data points' share of the "
-        "quadrature: "
-        "no region of the window offers another element the neighbourhoods the elements have (a "
-        "packed "
-        "exemplar, or one whose statistics are separated); the estimates follow that share "
-        "(--data-weight), "
-        "and parameters that move with it are marked unbounded");
+        "quadrature: no region of the window offers another element the neighbourhoods the "
+        "elements have (a packed exemplar, or one whose statistics are separated); the estimates "
+        "follow that share (the fit's data weight), and parameters that move with it are marked "
+        "unbounded");
   }
   bool unbounded = false;
   for (model::ParameterStatus status : mple.status)
@@ -39,11 +37,9 @@ void add_existence_notes(const MpleResult& mple, bool follows_share,
   if (unbounded && !follows_share) {
     notes.push_back(
         "some parameters have no finite maximum: the exemplar separates their statistics (for "
-        "example "
-        "every element of a category near another category); they stay at the search bound |log "
-        "gamma| = 30 "
-        "and are marked unbounded. Fewer bands (--quantiles), fewer directions or one category "
-        "help.");
+        "example every element of a category near another category); they stay at the search "
+        "bound |log gamma| = 30 and are marked unbounded. Fewer bands (quantile orders), fewer "
+        "directions or one category help.");
   }
 }
 

@@ -44,7 +44,11 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   };
   // Proxies and every pair's measurements.
   stage("proxies");
-  const bool periodic = options.edge == EdgeTreatment::periodic;
+  // The exemplar's window as a domain: a torus for the periodic edge treatment.
+  const geometry::Domain window(exemplar.window, exemplar.dimension,
+                                options.edge == EdgeTreatment::periodic ? geometry::Boundary::torus
+                                                                        : geometry::Boundary::open);
+  const bool periodic = window.periodic();
   auto clock = std::chrono::steady_clock::now();
   const geometry::PairMeasurer measurer(exemplar, model.measurement_options(periodic));
   result.seconds.proxies = seconds_since(clock);
@@ -62,8 +66,8 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
 
   stage("quadrature");
   clock = std::chrono::steady_clock::now();
-  const QuadratureDesign quadrature = quadrature_design(
-      exemplar, options, region, measurer, interaction, statistics, shapes_of, periodic);
+  const QuadratureDesign quadrature = quadrature_design(exemplar, options, region, measurer,
+                                                        interaction, statistics, shapes_of, window);
   result.quadrature_cells = quadrature.cells;
   result.quadrature_lines = quadrature.lines;
   result.quadrature_points = static_cast<int>(quadrature.design.points.size());

@@ -160,7 +160,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
                                    const FitRegion& region, const geometry::PairMeasurer& measurer,
                                    const model::Interaction& interaction,
                                    const ExemplarStatistics& statistics,
-                                   const std::vector<std::vector<int>>& shapes_of, bool periodic) {
+                                   const std::vector<std::vector<int>>& shapes_of,
+                                   const geometry::Domain& window) {
   const int dimension = region.dimension;
   const int categories = static_cast<int>(shapes_of.size());
   const std::size_t n = exemplar.elements.size();
@@ -238,7 +239,7 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
   out.lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> parts(dummies.size());
-  const Vec3 period = periodic ? Vec3(exemplar.window.sizes()) : Vec3(Vec3::Zero());
+  const Vec3& period = window.period();
   if (out.lines) {
     LineContext context;
     context.interaction = &interaction;
@@ -253,7 +254,7 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
         exemplar.window, dimension,
         range + 2 * max_radius +
             std::sqrt(static_cast<double>(dimension)) * grid.longest / grid.cells_along,
-        periodic);
+        window.periodic());
     for (std::size_t k = 0; k < n; ++k)
       neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
     const CellContext context{&interaction, &measurer, &exemplar.elements,

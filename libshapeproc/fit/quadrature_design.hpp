@@ -12,6 +12,7 @@
 
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 
 namespace shapeproc::fit {
 
@@ -24,12 +25,14 @@ struct QuadratureDesign {
 };
 
 // The design for `exemplar` (its statistics in `statistics`), integrated on up to two threads
-// (the result does not depend on the thread count). `periodic`: the exemplar's window is a torus.
+// (the result does not depend on the thread count). `window`: the exemplar's window as a domain,
+// a torus for the periodic edge treatment.
 QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
                                    const FitRegion& region, const geometry::PairMeasurer& measurer,
                                    const model::Interaction& interaction,
                                    const ExemplarStatistics& statistics,
-                                   const std::vector<std::vector<int>>& shapes_of, bool periodic);
+                                   const std::vector<std::vector<int>>& shapes_of,
+                                   const geometry::Domain& window);
 
 // The same design with the data points' share multiplied by `factor` (the dummies' share scaled
 // so the weights still sum to |W|).

@@ -12,7 +12,7 @@ Configuration::Configuration(const model::Interaction& interaction,
     : interaction_(interaction),
       measurer_(measurer),
       grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
-      domain_(domain) {
+      period_(domain.period()) {
   shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
 }
 
@@ -26,7 +26,7 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
     if (slot == skip) return;
     const Element& other = elements_[static_cast<std::size_t>(slot)];
     if (!interaction_.interacts(xi.category, other.category)) return;
-    const Vec3 t = domain_.minimum_image(other.position - xi.position);
+    const Vec3 t = geometry::minimum_image(other.position - xi.position, period_);
     // Shape distances are at least the reference positions' distance minus both radii (t is
     // the nearest image in every coordinate, so no other image is nearer).
     const double squared = t.squaredNorm();

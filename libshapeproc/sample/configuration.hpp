@@ -70,7 +70,7 @@ class Configuration {
   std::vector<int> alive_, free_, position_in_alive_;
   std::vector<std::vector<Link>> links_;  // per slot
   std::vector<double> local_;             // per slot: log of the local factor of β
-  const geometry::Domain& domain_;
+  Vec3 period_;  // the domain's torus period (zero when open), kept by value for the inner loop
   bool shape_distances_ = true;
   mutable std::vector<std::pair<double, int>>
       candidates_;  // scratch of log_interaction: (squared distance, slot)

@@ -66,7 +66,7 @@ void check_output_extension(const std::string& file, const std::string& option) 
   if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "csv" ||
       extension == "png")
     return;
-  throw core::UsageError(option + ": cannot write '" + file +
+  throw core::UsageError(option + ": unknown output format '." + extension + "' of '" + file +
                          "': expected .svg, .obj, .ply, .csv or .png (a picture)");
 }
 
