@@ -75,7 +75,7 @@ geometry::Box3 proxy_box(const geometry::PairMeasurer& measurer, int shape) {
 // points; Monte Carlo otherwise (offsets uniform in the ball where d < R is possible).
 std::vector<double> offset_measure(const geometry::Scene& scene,
                                    const geometry::PairMeasurer& measurer, double range, int bins,
-                                   const StatisticsOptions& options) {
+                                   const StatisticsOptions& options, core::Random& random) {
   const int dim = scene.dimension;
   const double width = range / bins;
   std::vector<double> measure(static_cast<std::size_t>(bins), 0.0);
@@ -88,7 +88,6 @@ std::vector<double> offset_measure(const geometry::Scene& scene,
     return measure;
   }
   const std::size_t n = scene.elements.size();
-  core::Random random(options.seed);
   const int samples =
       options.offset_samples > 0 ? options.offset_samples : (dim == 2 ? 1 << 16 : 1 << 13);
   for (int m = 0; m < samples; ++m) {
@@ -162,7 +161,8 @@ Distribution censored_distribution(const std::vector<double>& values,
 
 int SceneStatistics::elements() const { return std::accumulate(counts.begin(), counts.end(), 0); }
 
-SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options) {
+SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options,
+                                   core::Random random) {
   const auto start = std::chrono::steady_clock::now();
   core::check(!scene.elements.empty(), "statistics", "the scene has no elements");
   core::check_non_negative("statistics", "the range", options.range);
@@ -267,7 +267,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   // g(r): the edge-corrected mean number of neighbours per distance bin over the number a
   // binomial pattern of the same elements would give, (n - 1) / |W| times the offset measure.
   const std::vector<double> reference =
-      n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options)
+      n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options, random)
             : std::vector<double>(static_cast<std::size_t>(options.correlation_bins), 0.0);
   const double density = static_cast<double>(n - 1) / stats.window_measure;
   for (int k = 0; k < options.correlation_bins; ++k) {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
@@ -32,7 +33,6 @@ struct StatisticsOptions {
   int correlation_bins = 24;  // g(r) histogram bins over [0, R)
   int offset_samples = 0;     // Monte-Carlo offsets for g(r)'s reference measure (shaped elements);
                               // 0: 65,536 in 2D, 8,192 in 3D (mesh distances cost ~50x more)
-  std::uint64_t seed = 1;     // of those offsets
 
   static geometry::MeasurementOptions default_measurement() {
     geometry::MeasurementOptions m;
@@ -100,8 +100,11 @@ struct SceneStatistics {
   double mean_nearest() const { return all.nearest.mean(); }
 };
 
-// Throws std::invalid_argument for an empty scene or bad options.
-SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options);
+// `random` draws the Monte-Carlo offsets of g(r)'s reference measure (shaped elements only); it is
+// taken by value, so callers pass a fresh generator (`core::Random(1)`) to get the same figures
+// for the same scene. Throws core::ArgumentError for an empty scene or bad options.
+SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options,
+                                   core::Random random);
 
 struct DistributionDistances {
   double nearest =

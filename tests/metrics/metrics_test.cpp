@@ -76,7 +76,7 @@ TEST(Collisions, TwoOverlappingSquaresAndOneApart) {
     <rect x="10" y="10" width="20" height="20"/><rect x="25" y="25" width="20" height="20"/>
     <rect x="70" y="70" width="20" height="20"/></svg>)";
   const geometry::Scene scene = io::parse_svg(svg, "squares.svg", {});
-  const SceneStatistics s = compute_statistics(scene, StatisticsOptions{});
+  const SceneStatistics s = compute_statistics(scene, StatisticsOptions{}, core::Random(1));
   ASSERT_EQ(s.collisions.pairs.size(), 1u);
   EXPECT_EQ(s.collisions.elements, 2);
   EXPECT_EQ(std::count(s.collisions.colliding.begin(), s.collisions.colliding.end(), true), 2);
@@ -89,15 +89,16 @@ TEST(Collisions, NestedAndTouchingShapesCollideSeparateOnesDoNot) {
     <rect x="10" y="10" width="40" height="40"/><rect x="20" y="20" width="10" height="10"/>
     <rect x="60" y="10" width="10" height="10"/><rect x="70" y="10" width="10" height="10"/>
     <rect x="60" y="60" width="10" height="10"/><rect x="71" y="60" width="10" height="10"/></svg>)";
-  const SceneStatistics s =
-      compute_statistics(io::parse_svg(svg, "nested.svg", {}), StatisticsOptions{});
+  const SceneStatistics s = compute_statistics(io::parse_svg(svg, "nested.svg", {}),
+                                               StatisticsOptions{}, core::Random(1));
   EXPECT_EQ(s.collisions.pairs.size(), 2u);  // nested, touching; the last two are 1 apart
   EXPECT_EQ(s.collisions.elements, 4);
 }
 
 TEST(SceneStatistics, LatticeNearestNeighboursPerAxis) {
   const double spacing = 10.0;
-  const SceneStatistics s = compute_statistics(lattice(spacing, 12, 12), torus(2.0 * spacing));
+  const SceneStatistics s =
+      compute_statistics(lattice(spacing, 12, 12), torus(2.0 * spacing), core::Random(1));
   EXPECT_DOUBLE_EQ(s.intensity.at(0), 1.0 / (spacing * spacing));
   EXPECT_TRUE(s.collisions.pairs.empty());
   ASSERT_EQ(s.axes.size(), 4u);  // 8 directions: axes at 0°, 45°, 90°, 135°
@@ -112,11 +113,12 @@ TEST(SceneStatistics, LatticeNearestNeighboursPerAxis) {
 
   // A lattice of spacing 11 against it: W1 of the nearest distances is 1 / 10 of the mean
   // nearest distance; a shifted copy of the same lattice is at distance 0.
-  const SceneStatistics wider = compute_statistics(lattice(11.0, 12, 12), torus(2.0 * spacing));
+  const SceneStatistics wider =
+      compute_statistics(lattice(11.0, 12, 12), torus(2.0 * spacing), core::Random(1));
   EXPECT_NEAR(compare(wider, s).all.nearest, 0.1, 1e-9);
   geometry::Scene shifted = lattice(spacing, 12, 12);
   for (geometry::Element& e : shifted.elements) e.position += Vec3(3.0, 4.0, 0.0);
-  const SceneStatistics same = compute_statistics(shifted, torus(2.0 * spacing));
+  const SceneStatistics same = compute_statistics(shifted, torus(2.0 * spacing), core::Random(1));
   const Comparison c = compare(same, s);
   EXPECT_NEAR(c.all.nearest, 0.0, 1e-9);
   EXPECT_NEAR(c.all.pairs, 0.0, 1e-9);
@@ -132,7 +134,7 @@ TEST(SceneStatistics, PoissonNearestNeighbourDistribution) {
   for (const bool periodic : {true, false}) {
     StatisticsOptions o = torus(4.0);
     o.measurement.periodic = periodic;
-    const SceneStatistics s = compute_statistics(scene, o);
+    const SceneStatistics s = compute_statistics(scene, o, core::Random(1));
     const double used = s.all.nearest.samples;
     ASSERT_GT(used, periodic ? n - 1 : 0.8 * n);
     for (double r = 0.25; r < 4.0; r += 0.25) {
@@ -151,7 +153,7 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   const geometry::Scene points = poisson(100.0, 100.0, 2000, 11);
   StatisticsOptions o = torus(5.0);
   o.correlation_bins = 10;
-  const SceneStatistics s = compute_statistics(points, o);
+  const SceneStatistics s = compute_statistics(points, o, core::Random(1));
   for (std::size_t k = 0; k < s.correlation.size(); ++k) {
     const double expected_pairs = 2000.0 * (2000.0 - 1) / 10000.0 * core::kPi *
                                   (std::pow((static_cast<double>(k) + 1) * 0.5, 2) -
@@ -170,7 +172,7 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
   const geometry::Scene squares = io::parse_svg(svg.str(), "squares.svg", {});
   StatisticsOptions so = torus(10.0);
   so.correlation_bins = 5;
-  const SceneStatistics q = compute_statistics(squares, so);
+  const SceneStatistics q = compute_statistics(squares, so, core::Random(1));
   for (std::size_t k = 0; k < q.correlation.size(); ++k) {
     // Offsets u with d in [2k, 2k + 2) between two 8 x 4 rectangles (Steiner: the 16 x 8 Minkowski
     // sum grown by r has area 128 + 48 r + π r²; bin 0 also holds the overlaps).

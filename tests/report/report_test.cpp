@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/report/html_report.hpp"
@@ -19,10 +20,12 @@ TEST(HtmlReport, WritesPagePicturesAtOneScaleAndMetrics) {
     moved.position.x() += width;
     output.elements.push_back(moved);
   }
-  const metrics::SceneStatistics reference = metrics::compute_statistics(exemplar, {});
+  const metrics::SceneStatistics reference =
+      metrics::compute_statistics(exemplar, {}, core::Random(1));
   metrics::StatisticsOptions options;
   options.range = reference.range;
-  const metrics::SceneStatistics stats = metrics::compute_statistics(output, options);
+  const metrics::SceneStatistics stats =
+      metrics::compute_statistics(output, options, core::Random(1));
   const metrics::Comparison comparison = metrics::compare(stats, reference);
   const metrics::NeighbourhoodDistance neighbourhood =
       metrics::average_neighbourhood_distance(output, false, exemplar, false);

@@ -51,11 +51,13 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
   const geometry::Scene& output = result.scene;
 
   metrics::StatisticsOptions open;
-  const metrics::SceneStatistics reference = metrics::compute_statistics(exemplar, open);
+  const metrics::SceneStatistics reference =
+      metrics::compute_statistics(exemplar, open, core::Random(1));
   metrics::StatisticsOptions torus;
   torus.measurement.periodic = true;
   torus.range = reference.range;
-  const metrics::SceneStatistics stats = metrics::compute_statistics(output, torus);
+  const metrics::SceneStatistics stats =
+      metrics::compute_statistics(output, torus, core::Random(1));
   const metrics::Comparison c = metrics::compare(stats, reference);
 
   EXPECT_TRUE(stats.collisions.pairs.empty())
@@ -74,7 +76,7 @@ TEST_P(ShippedOutputs, CollisionFreeWithTheExemplarsDensityAndSpacing) {
                       random.uniform(0, domain.box().max().y()), 0.0);
   }
   const metrics::Comparison baseline =
-      metrics::compare(metrics::compute_statistics(independent, torus), reference);
+      metrics::compare(metrics::compute_statistics(independent, torus, core::Random(1)), reference);
   EXPECT_LT(c.all.nearest, baseline.all.nearest) << name;
   EXPECT_LT(mean_axis_w1(c), mean_axis_w1(baseline)) << name;
   RecordProperty("w1_nearest", std::to_string(c.all.nearest) + " vs independent " +

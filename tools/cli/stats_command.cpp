@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/geometry/directions.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/synthesis_record_io.hpp"
@@ -221,7 +222,8 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
                            "D");
   }
   const double range = reference_statistics ? reference_statistics->range : 0.0;
-  e.statistics = metrics::compute_statistics(scene.scene, flags.options(scene, range));
+  e.statistics =
+      metrics::compute_statistics(scene.scene, flags.options(scene, range), core::Random(1));
   if (reference && reference_statistics) {
     e.comparison = metrics::compare(e.statistics, *reference_statistics);
     e.neighbourhood = metrics::average_neighbourhood_distance(
@@ -319,8 +321,8 @@ void add_stats_command(CLI::App& app, Action& action) {
       std::optional<metrics::SceneStatistics> reference_statistics;
       if (!args->against.empty()) {
         reference = read_exemplar(args->against, args->reader, args->metrics);
-        reference_statistics =
-            metrics::compute_statistics(reference->scene, args->metrics.options(*reference, 0.0));
+        reference_statistics = metrics::compute_statistics(
+            reference->scene, args->metrics.options(*reference, 0.0), core::Random(1));
       }
       const EvaluatedScene scene =
           read_evaluated_scene(args->scene, args->reader, args->metrics.boundary);
