@@ -17,9 +17,8 @@ using geometry::Vec3;
 namespace {
 
 // A scene's window as a domain, torus or open.
-geometry::Domain scene_domain(const geometry::Scene& scene, bool periodic) {
-  return geometry::Domain(scene.window, scene.dimension,
-                          periodic ? geometry::Boundary::torus : geometry::Boundary::open);
+geometry::Domain scene_domain(const geometry::Scene& scene, geometry::Boundary boundary) {
+  return geometry::Domain(scene.window, scene.dimension, boundary);
 }
 
 double inner_distance(const geometry::Scene& scene, const Vec3& p) {
@@ -33,9 +32,10 @@ double inner_distance(const geometry::Scene& scene, const Vec3& p) {
 }  // namespace
 
 NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output,
-                                                     bool output_periodic,
+                                                     geometry::Boundary output_boundary,
                                                      const geometry::Scene& exemplar,
-                                                     bool exemplar_periodic, double radius) {
+                                                     geometry::Boundary exemplar_boundary,
+                                                     double radius) {
   if (output.elements.empty() || exemplar.elements.empty())
     throw core::ArgumentError("neighbourhood distance", "a scene has no elements");
   if (output.dimension != exemplar.dimension)
@@ -60,7 +60,7 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
 
   // Every exemplar element is a candidate centre: a neighbourhood cut by the exemplar's edge only
   // matches worse, and the minimum passes over it.
-  const geometry::Domain exemplar_domain = scene_domain(exemplar, exemplar_periodic);
+  const geometry::Domain exemplar_domain = scene_domain(exemplar, exemplar_boundary);
   const geometry::NeighbourhoodIndex exemplar_index(exemplar.elements, exemplar_domain, 2.0 * r,
                                                     exemplar_map);
   std::vector<std::vector<geometry::Neighbourhood>> exemplar_hoods(exemplar.categories.size());
@@ -74,14 +74,15 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
   // them.
   std::vector<std::size_t> centres;
   for (std::size_t o = 0; o < output.elements.size(); ++o) {
-    if (output_periodic || inner_distance(output, output.elements[o].position) >= r)
+    if (output_boundary == geometry::Boundary::torus ||
+        inner_distance(output, output.elements[o].position) >= r)
       centres.push_back(o);
   }
   if (centres.empty()) {
     for (std::size_t o = 0; o < output.elements.size(); ++o) centres.push_back(o);
   }
 
-  const geometry::Domain output_domain = scene_domain(output, output_periodic);
+  const geometry::Domain output_domain = scene_domain(output, output_boundary);
   const geometry::NeighbourhoodIndex output_index(output.elements, output_domain, r, output_map);
   double total = 0.0, neighbours = 0.0;
   for (const std::size_t o : centres) {

@@ -15,6 +15,7 @@
 // neighbourhoods are cut), on either side, unless no element is far enough from the edge.
 #pragma once
 
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
 namespace shapeproc::metrics {
@@ -31,8 +32,9 @@ struct NeighbourhoodDistance {
 // `radius` 0 means twice the exemplar's mean spacing (a 2-ring neighbourhood, Davison et al. §6).
 // Throws std::invalid_argument when either scene is empty or their dimensions differ.
 NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output,
-                                                     bool output_periodic,
+                                                     geometry::Boundary output_boundary,
                                                      const geometry::Scene& exemplar,
-                                                     bool exemplar_periodic, double radius = 0.0);
+                                                     geometry::Boundary exemplar_boundary,
+                                                     double radius = 0.0);
 
 }  // namespace shapeproc::metrics

@@ -173,7 +173,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
 
   SceneStatistics stats;
   stats.dimension = dim;
-  stats.periodic = options.measurement.periodic;
+  stats.boundary =
+      options.measurement.periodic ? geometry::Boundary::torus : geometry::Boundary::open;
   stats.window_measure = scene.window_measure();
   core::check_positive("statistics", "the window's measure", stats.window_measure);
   stats.mean_spacing = std::pow(stats.window_measure / static_cast<double>(n), 1.0 / dim);
@@ -193,7 +194,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
 
   // Distance of each element to the window's edge (infinite on a torus).
   std::vector<double> borders(n, std::numeric_limits<double>::infinity());
-  if (!stats.periodic) {
+  if (!stats.periodic()) {
     for (std::size_t i = 0; i < n; ++i) {
       const geometry::Element& e = scene.elements[i];
       geometry::Box3 box = proxy_box(measurer, e.shape);
@@ -208,7 +209,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
     nearest[p.i] = std::min(nearest[p.i], p.measurement.distance);
     nearest[p.j] = std::min(nearest[p.j], p.measurement.distance);
   }
-  if (!stats.periodic) {
+  if (!stats.periodic()) {
     stats.edge = options.edge;
     if (options.edge == EdgeTreatment::automatic) {
       std::size_t observed = 0;

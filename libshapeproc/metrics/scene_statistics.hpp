@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
@@ -80,7 +81,8 @@ struct Collisions {
 
 struct SceneStatistics {
   int dimension = 2;
-  bool periodic = false;
+  geometry::Boundary boundary = geometry::Boundary::open;  // torus: no edge correction
+  bool periodic() const { return boundary == geometry::Boundary::torus; }
   EdgeTreatment edge = EdgeTreatment::none;  // the treatment used (none on a torus)
   double window_measure = 0.0;
   double range = 0.0;

@@ -196,7 +196,7 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
       [](const ReportScene& s, std::size_t) { return std::to_string(s.statistics->elements()); });
   row("boundary", [](const ReportScene& s, std::size_t) {
     const metrics::SceneStatistics& t = *s.statistics;
-    return std::string(t.periodic                                 ? "torus"
+    return std::string(t.periodic()                               ? "torus"
                        : t.edge == metrics::EdgeTreatment::border ? "open, border-corrected"
                                                                   : "open");
   });

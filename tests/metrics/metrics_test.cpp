@@ -185,8 +185,8 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
 
 TEST(NeighbourhoodDistance, ZeroAgainstItselfAndStretchedLatticeExact) {
   const geometry::Scene exemplar = lattice(10.0, 21, 21);
-  const NeighbourhoodDistance self =
-      average_neighbourhood_distance(exemplar, false, exemplar, false);
+  const NeighbourhoodDistance self = average_neighbourhood_distance(
+      exemplar, geometry::Boundary::open, exemplar, geometry::Boundary::open);
   EXPECT_DOUBLE_EQ(self.mean, 0.0);
   EXPECT_DOUBLE_EQ(self.radius, 20.0);
   EXPECT_GT(self.output_centres, 100);
@@ -202,8 +202,8 @@ TEST(NeighbourhoodDistance, ZeroAgainstItselfAndStretchedLatticeExact) {
       if ((i != 0 || j != 0) && len < radius)
         expected += std::pow(eps * spacing, 2) * (i * i + j * j);
     }
-  const NeighbourhoodDistance d =
-      average_neighbourhood_distance(output, true, exemplar, false, radius);
+  const NeighbourhoodDistance d = average_neighbourhood_distance(
+      output, geometry::Boundary::torus, exemplar, geometry::Boundary::open, radius);
   EXPECT_NEAR(d.mean, expected, 1e-9 * expected);
   EXPECT_EQ(d.output_centres, 100);
 }
@@ -215,10 +215,16 @@ TEST(NeighbourhoodDistance, CategoriesArePairedByName) {
   geometry::Scene b = a;
   std::swap(b.categories[0], b.categories[1]);  // same names, other numbering
   for (geometry::Element& e : b.elements) e.category = 1 - e.category;
-  EXPECT_DOUBLE_EQ(average_neighbourhood_distance(b, true, a, true).mean, 0.0);
+  EXPECT_DOUBLE_EQ(
+      average_neighbourhood_distance(b, geometry::Boundary::torus, a, geometry::Boundary::torus)
+          .mean,
+      0.0);
   geometry::Scene renamed = a;
   renamed.categories[1].name = "unknown";
-  EXPECT_GT(average_neighbourhood_distance(renamed, true, a, true).mean, 0.0);
+  EXPECT_GT(average_neighbourhood_distance(renamed, geometry::Boundary::torus, a,
+                                           geometry::Boundary::torus)
+                .mean,
+            0.0);
 }
 
 }  // namespace

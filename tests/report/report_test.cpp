@@ -27,8 +27,8 @@ TEST(HtmlReport, WritesPagePicturesAtOneScaleAndMetrics) {
   const metrics::SceneStatistics stats =
       metrics::compute_statistics(output, options, core::Random(1));
   const metrics::Comparison comparison = metrics::compare(stats, reference);
-  const metrics::NeighbourhoodDistance neighbourhood =
-      metrics::average_neighbourhood_distance(output, false, exemplar, false);
+  const metrics::NeighbourhoodDistance neighbourhood = metrics::average_neighbourhood_distance(
+      output, geometry::Boundary::open, exemplar, geometry::Boundary::open);
 
   Report report;
   report.exemplar = {"dots-random.svg", &exemplar, &reference, nullptr, nullptr, ""};

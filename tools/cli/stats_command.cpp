@@ -47,7 +47,7 @@ std::string direction_text(const geometry::Vec3& v, int dimension) {
 }
 
 std::string boundary_text(const metrics::SceneStatistics& s) {
-  if (s.periodic) return "torus";
+  if (s.periodic()) return "torus";
   return s.edge == metrics::EdgeTreatment::border ? "open (border-corrected)"
                                                   : "open (no edge correction)";
 }
@@ -141,9 +141,9 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
   e.scene = io::read_scene(file, reader.options());
   e.record = io::read_synthesis_record(file);
   if (boundary == "torus") {
-    e.periodic = true;
+    e.boundary = geometry::Boundary::torus;
   } else if (boundary == "auto" && e.record) {
-    e.periodic = e.record->boundary == geometry::Boundary::torus;
+    e.boundary = e.record->boundary;
   }
   if (e.scene.elements.empty())
     throw core::InputError(file, 0, "the scene has no elements to measure");
@@ -188,7 +188,7 @@ metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene,
   metrics::StatisticsOptions o;
   o.measurement.direction = direction_kind(direction);
   o.measurement.directions = geometry::directions_or_default(directions, scene.scene.dimension);
-  o.measurement.periodic = scene.periodic;
+  o.measurement.periodic = scene.boundary == geometry::Boundary::torus;
   o.measurement.proxy.tolerance = proxy_tolerance;
   try {
     geometry::DirectionBins bins(scene.scene.dimension, o.measurement.directions);
@@ -227,7 +227,7 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
   if (reference && reference_statistics) {
     e.comparison = metrics::compare(e.statistics, *reference_statistics);
     e.neighbourhood = metrics::average_neighbourhood_distance(
-        scene.scene, scene.periodic, reference->scene, reference->periodic, flags.neighbourhood);
+        scene.scene, scene.boundary, reference->scene, reference->boundary, flags.neighbourhood);
   }
   return e;
 }
@@ -267,8 +267,8 @@ nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e)
       {"list", s.collisions.pairs}};
   nlohmann::json j = {{"scene", scene.file},
                       {"dimension", s.dimension},
-                      {"boundary", s.periodic ? "torus" : "open"},
-                      {"edge", s.periodic                                 ? "none"
+                      {"boundary", geometry::to_string(s.boundary)},
+                      {"edge", s.periodic()                               ? "none"
                                : s.edge == metrics::EdgeTreatment::border ? "border"
                                                                           : "none"},
                       {"elements", s.elements()},

@@ -18,7 +18,7 @@ namespace shapeproc::cli {
 struct EvaluatedScene {
   std::string file;
   geometry::Scene scene;
-  bool periodic = false;
+  geometry::Boundary boundary = geometry::Boundary::open;
   std::optional<synthesis::SynthesisRecord> record;  // a synthesised output's record, else none
 };
 
