@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "libshapeproc/core/assert.hpp"
+
 namespace shapeproc::sample {
 
 Configuration::Configuration(const model::Interaction& interaction,
@@ -86,6 +88,7 @@ void Configuration::remove(int slot) {
   grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
   unlink(slot);
   const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
+  SHAPEPROC_ASSERT(rank >= 0, "only a live element is removed");
   const int last = alive_.back();
   alive_[static_cast<std::size_t>(rank)] = last;
   position_in_alive_[static_cast<std::size_t>(last)] = rank;
@@ -124,6 +127,7 @@ void Configuration::unlink(int slot) {
     std::vector<Link>& back = links_[static_cast<std::size_t>(l.slot)];
     const auto it =
         std::find_if(back.begin(), back.end(), [&](const Link& b) { return b.slot == slot; });
+    SHAPEPROC_ASSERT(it != back.end(), "links are symmetric");
     *it = back.back();
     back.pop_back();
   }

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <thread>
 
+#include "libshapeproc/core/assert.hpp"
 #include "libshapeproc/core/check.hpp"
 
 namespace shapeproc::synthesis {
@@ -102,6 +103,7 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
   for (std::thread& t : pool) t.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+  SHAPEPROC_ASSERT(next.load() >= chains, "every chain ran");
   return results;
 }
 
