@@ -1,7 +1,6 @@
 #include "tools/cli/common.hpp"
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::cli {
@@ -68,11 +67,6 @@ void check_output_extension(const std::string& file, const std::string& option) 
     return;
   throw core::UsageError(option + ": unknown output format '." + extension + "' of '" + file +
                          "': expected .svg, .obj, .ply, .csv or .png (a picture)");
-}
-
-model::ShapeProcessModel read_model_argument(const std::string& file, const std::string& command) {
-  (void)command;
-  return io::read_model(file);
 }
 
 io::Provenance make_provenance(const std::string& command,

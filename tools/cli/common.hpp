@@ -9,7 +9,6 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
-#include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::cli {
 
@@ -34,10 +33,6 @@ geometry::DirectionKind direction_kind(const std::string& name);
 // Throws core::UsageError unless `file` ends in an extension scenes can be written to (.svg, .obj,
 // .ply, .csv, or .png for a picture of the scene); `option` names the flag in the message.
 void check_output_extension(const std::string& file, const std::string& option);
-
-// Reads a model file named on the command line; an exemplar given instead gets a message saying
-// which command takes it.
-model::ShapeProcessModel read_model_argument(const std::string& file, const std::string& command);
 
 // Provenance of an output: tool, version, subcommand, the full argument list and parameters.
 io::Provenance make_provenance(const std::string& command,

@@ -232,7 +232,7 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
       args->sample.check(args->output);
-      const model::ShapeProcessModel model = read_model_argument(args->model, "sample");
+      const model::ShapeProcessModel model = io::read_model(args->model);
       synthesis::SynthesisRecord record;
       record.command = "sample";
       record.arguments = arguments;
