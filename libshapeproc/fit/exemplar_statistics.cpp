@@ -9,9 +9,9 @@ namespace shapeproc::fit {
 using geometry::Element;
 using model::Interaction;
 
-FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double range) {
+FitRegion fit_region(const geometry::Scene& exemplar, geometry::EdgeTreatment edge, double range) {
   FitRegion region{exemplar.window, exemplar.dimension};
-  if (edge != EdgeTreatment::border) return region;
+  if (edge != geometry::EdgeTreatment::border) return region;
   for (int axis = 0; axis < exemplar.dimension; ++axis) {
     region.box.min()[axis] += range;
     region.box.max()[axis] -= range;

@@ -24,7 +24,7 @@ struct FitRegion {
 };
 
 // Throws core::ArgumentError when the border treatment leaves no window.
-FitRegion fit_region(const geometry::Scene& exemplar, EdgeTreatment edge, double range);
+FitRegion fit_region(const geometry::Scene& exemplar, geometry::EdgeTreatment edge, double range);
 
 struct ExemplarStatistics {
   std::vector<model::InteractionCounts> per_element;  // t(z_n | z \ z_n), every element

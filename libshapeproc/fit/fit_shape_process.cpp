@@ -20,16 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-const char* to_string(EdgeTreatment edge) {
-  switch (edge) {
-    case EdgeTreatment::none:
-      return "none";
-    case EdgeTreatment::periodic:
-      return "periodic";
-    case EdgeTreatment::border:
-      return "border";
-  }
-  return "none";
+const char* edge_name(const FitOptions& options) {
+  if (options.boundary == geometry::Boundary::torus) return "periodic";
+  return geometry::to_string(options.edge);
 }
 
 FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& options) {
@@ -45,9 +38,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   // Proxies and every pair's measurements.
   stage("proxies");
   // The exemplar's window as a domain: a torus for the periodic edge treatment.
-  const geometry::Domain window(exemplar.window, exemplar.dimension,
-                                options.edge == EdgeTreatment::periodic ? geometry::Boundary::torus
-                                                                        : geometry::Boundary::open);
+  const geometry::Domain window(exemplar.window, exemplar.dimension, options.boundary);
   const bool periodic = window.periodic();
   auto clock = std::chrono::steady_clock::now();
   const geometry::PairMeasurer measurer(exemplar, model.measurement_options(periodic));

@@ -6,15 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
-
-// Edge treatment (math note): none (neighbours and quadrature inside W, every data point counts),
-// periodic (W is a torus), border (only data points and quadrature locations at least R inside W
-// contribute; their neighbours anywhere in W count).
-enum class EdgeTreatment { none, periodic, border };
 
 struct FitOptions {
   // How pairs are measured, as the model records it; directions 0 = the default for the
@@ -26,7 +22,10 @@ struct FitOptions {
   // every pair and axis; quantiles are ignored).
   std::vector<double> quantiles = {0.0, 0.1, 0.2};
   std::vector<double> thresholds;
-  EdgeTreatment edge = EdgeTreatment::none;
+  // The exemplar's window: a torus (`periodic` in the model file and on the command line) or open,
+  // with an edge treatment (none or border; geometry/domain.hpp).
+  geometry::Boundary boundary = geometry::Boundary::open;
+  geometry::EdgeTreatment edge = geometry::EdgeTreatment::none;
   // Quadrature: dummy locations on a grid of this many cells along the window's longest side
   // (0: the default, see docs/fit.md), each crossed with `shapes_per_location` shapes of every
   // category taken in rotation (0: all shapes of the category).
@@ -70,6 +69,8 @@ struct FitResult {
 // window), with a message for the user.
 FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& options);
 
-const char* to_string(EdgeTreatment edge);
+// The fit's edge treatment as the model file and the command line name it: "periodic" (a torus),
+// "border" or "none".
+const char* edge_name(const FitOptions& options);
 
 }  // namespace shapeproc::fit

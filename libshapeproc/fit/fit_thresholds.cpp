@@ -52,6 +52,11 @@ void check_fit_options(const FitOptions& o) {
   core::check(!(o.lines && o.refinement > 0), "fit",
               "refinement applies to cells, not to quadrature lines");
   core::check_in_range("fit", "the data points' weight", o.data_weight, 0.0, 1.0, true);
+  core::check(o.edge != geometry::EdgeTreatment::automatic, "fit",
+              "the edge treatment is none or border");
+  core::check(
+      !(o.boundary == geometry::Boundary::torus && o.edge == geometry::EdgeTreatment::border),
+      "fit", "a periodic window needs no border correction");
   core::check(o.quadrature >= 0 && o.shapes_per_location >= 0 && o.min_pairs_per_axis >= 1, "fit",
               "quadrature, shapes per location and minimum pairs must be positive");
 }

@@ -45,7 +45,7 @@ std::string fit_record_json(const geometry::Scene& exemplar, const FitOptions& o
         {"max", std::vector<double>(exemplar.window.max().data(),
                                     exemplar.window.max().data() + dimension)}}},
       {"elements", exemplar.elements.size()},
-      {"edge", to_string(options.edge)},
+      {"edge", edge_name(options)},
       {"quantiles", fixed_thresholds ? nlohmann::json() : nlohmann::json(options.quantiles)},
       {"thresholds", fixed_thresholds ? nlohmann::json(options.thresholds) : nlohmann::json()},
       {"quadrature",

@@ -10,6 +10,12 @@ namespace shapeproc::geometry {
 
 const char* to_string(Boundary boundary) { return boundary == Boundary::torus ? "torus" : "open"; }
 
+const char* to_string(EdgeTreatment edge) {
+  return edge == EdgeTreatment::border ? "border"
+         : edge == EdgeTreatment::none ? "none"
+                                       : "automatic";
+}
+
 Boundary parse_boundary(const std::string& text) {
   if (text == "torus") return Boundary::torus;
   if (text == "open") return Boundary::open;

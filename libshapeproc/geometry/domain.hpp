@@ -27,6 +27,14 @@ inline Vec3 minimum_image(Vec3 offset, const Vec3& period) {
   return offset;
 }
 
+// How statistics treat the elements near an open window's edge (math note "Edge treatment"):
+// `none`: every element counts, its neighbourhood cut by the edge; `border`: only elements at
+// least the interaction range inside the window count, their neighbours anywhere in it;
+// `automatic` (metrics): border when enough elements are that far inside, else none. A torus
+// needs no treatment.
+enum class EdgeTreatment { automatic, none, border };
+const char* to_string(EdgeTreatment edge);
+
 // "torus" or "open"; parse_boundary throws core::ArgumentError on anything else.
 const char* to_string(Boundary boundary);
 Boundary parse_boundary(const std::string& text);

@@ -23,7 +23,7 @@ namespace shapeproc::metrics {
 // the edge). `none`: every element counts as if the window were all there is. `automatic`: border,
 // unless it would censor the nearest neighbour of more than half the elements (windows that are
 // the elements' bounding box, as for meshes), then none.
-enum class EdgeTreatment { automatic, border, none };
+using geometry::EdgeTreatment;
 
 struct StatisticsOptions {
   // Distance kind is always the shape distance; direction kind, direction count and proxy

@@ -216,7 +216,7 @@ TEST(FitSpecialCases, TinyAndDegenerateExemplarsGiveClearResults) {
   EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), too_big),
                std::invalid_argument);
   FitOptions border = options;
-  border.edge = EdgeTreatment::border;
+  border.edge = geometry::EdgeTreatment::border;
   border.thresholds = {0.0, 0.6};
   EXPECT_THROW(fit_shape_process(points(row, std::vector<int>(8, 0), kUnit), border),
                std::invalid_argument);
@@ -228,17 +228,19 @@ TEST(FitSpecialCases, IdenticalShapesAndEdgeTreatments) {
   split.split_subpaths = true;
   const Scene bubbles =
       io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), split);
-  for (const EdgeTreatment edge :
-       {EdgeTreatment::none, EdgeTreatment::periodic, EdgeTreatment::border}) {
+  for (const char* edge : {"none", "periodic", "border"}) {
     FitOptions options;
     options.quadrature = 12;
-    options.edge = edge;
+    options.boundary =
+        edge == std::string("periodic") ? geometry::Boundary::torus : geometry::Boundary::open;
+    options.edge = edge == std::string("border") ? geometry::EdgeTreatment::border
+                                                 : geometry::EdgeTreatment::none;
     options.measurement.directions = 2;
     options.quantiles = {0.0, 0.05};
     const FitResult fit = fit_shape_process(bubbles, options);
-    EXPECT_TRUE(std::isfinite(fit.log_pseudo_likelihood)) << to_string(edge);
+    EXPECT_TRUE(std::isfinite(fit.log_pseudo_likelihood)) << edge;
     EXPECT_GT(fit.model.categories[0].beta, 0.0);
-    if (edge == EdgeTreatment::border) {
+    if (edge == std::string("border")) {
       EXPECT_LT(fit.data_points, 17);
     }
   }

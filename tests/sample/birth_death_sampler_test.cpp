@@ -217,7 +217,7 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   fit_options.measurement.directions = 4;
   fit_options.measurement.direction = geometry::DirectionKind::centroid;
   fit_options.thresholds = {0.0, 4.0, 8.0};
-  fit_options.edge = fit::EdgeTreatment::periodic;
+  fit_options.boundary = geometry::Boundary::torus;
   fit_options.quadrature = 128;
   const fit::FitResult refit = fit::fit_shape_process(sampled.scene, fit_options);
   const auto& beta = refit.model.categories[0];

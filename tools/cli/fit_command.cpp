@@ -133,9 +133,8 @@ fit::FitOptions FitFlags::options() const {
   o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");
-  o.edge = edge == "periodic" ? fit::EdgeTreatment::periodic
-           : edge == "border" ? fit::EdgeTreatment::border
-                              : fit::EdgeTreatment::none;
+  o.boundary = edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
+  o.edge = edge == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none;
   o.measurement.distance = distance_kind(distance);
   o.measurement.direction = direction_kind(direction);
   o.quadrature = quadrature;
