@@ -9,7 +9,10 @@ Interaction::Interaction(const ShapeProcessModel& model)
     : categories_(static_cast<int>(model.categories.size())) {
   pair_index_.assign(static_cast<std::size_t>(categories_ * categories_), -1);
   parameters_ = categories_;
-  for (int c = 0; c < categories_; ++c) locations_.push_back({-1, c, -1});
+  for (int c = 0; c < categories_; ++c) {
+    locations_.push_back({-1, c, -1});
+    theta_.push_back(std::log(model.categories[static_cast<std::size_t>(c)].beta));
+  }
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const PairInteraction& source = model.interactions[p];
     Pair pair;
@@ -19,6 +22,7 @@ Interaction::Interaction(const ShapeProcessModel& model)
       Axis axis;
       axis.thresholds = a.thresholds;
       for (double g : a.gammas) axis.log_gammas.push_back(std::log(g));  // log 0 = −∞
+      theta_.insert(theta_.end(), axis.log_gammas.begin(), axis.log_gammas.end());
       axis.first_parameter = parameters_;
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
         locations_.push_back({static_cast<int>(p), static_cast<int>(i), static_cast<int>(k)});

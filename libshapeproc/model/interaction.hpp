@@ -44,6 +44,8 @@ class Interaction {
   // θ index of a band (betas come first: θ[c] = log β_c).
   int parameter(int ca, int cb, int axis, int band) const;
   double log_gamma(int ca, int cb, int axis, int band) const;
+  // log γ of an interaction parameter (θ index ≥ category_count()).
+  double log_gamma_of(int parameter) const { return theta_[static_cast<std::size_t>(parameter)]; }
 
   // Location of a θ index: (pair, axis, band), or (-1, category, -1) for a β.
   struct Location {
@@ -74,6 +76,7 @@ class Interaction {
   std::vector<int> pair_index_;  // categories x categories -> index into pairs_ or -1
   std::vector<Pair> pairs_;
   std::vector<Location> locations_;
+  std::vector<double> theta_;  // θ: log β (betas, from the model) then log γ, by θ index
 };
 
 // What one neighbour does to ξ. `distance` is a value of the interval between the pair's

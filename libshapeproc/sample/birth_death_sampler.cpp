@@ -29,6 +29,8 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
+  core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
+              "trace and observation intervals must be >= 0");
 
   shape_space_ = model_.shape_space();
   shape_space_.window = domain_.box();
@@ -136,6 +138,7 @@ class ShapeProcessSampler::Chain {
   }
 
   int size() const { return state_.size(); }
+  const std::vector<double>& statistics() const { return state_.statistics(); }
   double log_density() const { return log_density_; }
   const MoveCounts& moves() const { return moves_; }
   std::vector<Element> elements() const { return state_.elements(); }
@@ -207,6 +210,9 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   long long step = 1;
   for (;; ++step) {
     chain.step();
+    if (options_.observe_every > 0 && step % options_.observe_every == 0) {
+      result.observations.push_back(chain.statistics());
+    }
     if (options_.trace_every > 0 && step % options_.trace_every == 0) {
       result.trace.push_back({step, chain.size(), chain.log_density()});
     }
@@ -226,6 +232,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   result.iterations = step;
   if (automatic && control.progress) control.progress(step, step);
   result.moves = chain.moves();
+  result.statistics = chain.statistics();
   result.scene = shape_space_;
   result.scene.elements = chain.elements();
   return result;

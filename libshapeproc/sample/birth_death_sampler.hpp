@@ -41,6 +41,9 @@ struct SamplerOptions {
   double shift_radius = 0.0;  // ρ; 0 = half the model's interaction range (1/20 of the
                               // domain's shorter side for a model without interaction)
   long long trace_every = 0;  // record the state every so many steps (0: no trace)
+  // Record the sufficient statistics t(x) every so many steps (0: never), for Monte Carlo
+  // estimates of E_θ[t] and Cov_θ[t] (maximum-likelihood fits).
+  long long observe_every = 0;
 };
 
 // How often each move was proposed and accepted.
@@ -56,6 +59,10 @@ struct SampleResult {
   MoveCounts moves;
   bool stationary = true;  // false when the automatic rule hit max_iterations
   std::vector<synthesis::TracePoint> trace;
+  // The sufficient statistics t(x) by θ index (model::Interaction's numbering: elements per
+  // category, then pairs per interaction parameter) at the end, and every observe_every steps.
+  std::vector<double> statistics;
+  std::vector<std::vector<double>> observations;
 };
 
 // The shape process as a synthesis method: construction validates the model and options and

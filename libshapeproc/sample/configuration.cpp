@@ -15,6 +15,7 @@ Configuration::Configuration(const model::Interaction& interaction,
       measurer_(measurer),
       grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
       period_(domain.period()) {
+  statistics_.assign(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
   shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
 }
 
@@ -56,9 +57,10 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
     if (effect.band == model::Interaction::kHardCore)
       return -std::numeric_limits<double>::infinity();
     if (effect.band >= 0) {
-      const double value =
-          interaction_.log_gamma(xi.category, other.category, effect.axis, effect.band);
-      links.push_back({slot, value});
+      const int parameter =
+          interaction_.parameter(xi.category, other.category, effect.axis, effect.band);
+      const double value = interaction_.log_gamma_of(parameter);
+      links.push_back({slot, parameter, value});
       total += value;
     }
   }
@@ -81,11 +83,13 @@ void Configuration::add(const Element& e, double local, const std::vector<Link>&
   position_in_alive_[static_cast<std::size_t>(slot)] = static_cast<int>(alive_.size());
   alive_.push_back(slot);
   grid_.insert(slot, e.position);
+  statistics_[static_cast<std::size_t>(e.category)] += 1.0;
   link(slot, local, links);
 }
 
 void Configuration::remove(int slot) {
   grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
+  statistics_[static_cast<std::size_t>(elements_[static_cast<std::size_t>(slot)].category)] -= 1.0;
   unlink(slot);
   const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
   SHAPEPROC_ASSERT(rank >= 0, "only a live element is removed");
@@ -118,8 +122,10 @@ std::vector<Element> Configuration::elements() const {
 void Configuration::link(int slot, double local, const std::vector<Link>& links) {
   local_[static_cast<std::size_t>(slot)] = local;
   links_[static_cast<std::size_t>(slot)] = links;
-  for (const Link& l : links)
-    links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.log_gamma});
+  for (const Link& l : links) {
+    links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.parameter, l.log_gamma});
+    statistics_[static_cast<std::size_t>(l.parameter)] += 1.0;
+  }
 }
 
 void Configuration::unlink(int slot) {
@@ -130,6 +136,7 @@ void Configuration::unlink(int slot) {
     SHAPEPROC_ASSERT(it != back.end(), "links are symmetric");
     *it = back.back();
     back.pop_back();
+    statistics_[static_cast<std::size_t>(l.parameter)] -= 1.0;
   }
   links_[static_cast<std::size_t>(slot)].clear();
 }

@@ -21,6 +21,7 @@ using geometry::Vec3;
 // One interaction of an element with a neighbour: the neighbour's slot and log Γ of the pair.
 struct Link {
   int slot;
+  int parameter;  // θ index of the pair's band
   double log_gamma;
 };
 
@@ -58,6 +59,10 @@ class Configuration {
 
   std::vector<Element> elements() const;
 
+  // The sufficient statistics t(x) of the configuration, by θ index: elements per category, then
+  // pairs per interaction parameter (each pair once). Kept up to date by add, remove and move.
+  const std::vector<double>& statistics() const { return statistics_; }
+
  private:
   void link(int slot, double local, const std::vector<Link>& links);
 
@@ -70,6 +75,7 @@ class Configuration {
   std::vector<int> alive_, free_, position_in_alive_;
   std::vector<std::vector<Link>> links_;  // per slot
   std::vector<double> local_;             // per slot: log of the local factor of β
+  std::vector<double> statistics_;        // t(x), by θ index
   Vec3 period_;  // the domain's torus period (zero when open), kept by value for the inner loop
   bool shape_distances_ = true;
   mutable std::vector<std::pair<double, int>>

@@ -8,6 +8,7 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -230,6 +231,48 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
           << "axis " << a << " band " << k + 1;
     }
   }
+}
+
+}  // namespace
+}  // namespace shapeproc::sample
+
+namespace shapeproc::sample {
+namespace {
+
+// The configuration keeps t(x) up to date through births, deaths and shifts: at the end it equals
+// a recount of the output's pairs by the measurement code, band by band.
+TEST(BirthDeath, SufficientStatisticsMatchARecountOfTheOutput) {
+  const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
+  const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::torus);
+  SamplerOptions options;
+  options.iterations = 30000;
+  options.observe_every = 1000;
+  const SampleResult result = sample_with_seed(m, domain, options, 21);
+  ASSERT_GT(result.scene.elements.size(), 10u);
+
+  const model::Interaction interaction(m);
+  std::vector<double> recount(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
+  for (const geometry::Element& e : result.scene.elements)
+    recount[static_cast<std::size_t>(e.category)] += 1;
+  const geometry::PairMeasurer measurer(result.scene, m.measurement_options(true));
+  for (const geometry::PairRecord& p :
+       measurer.all_pairs(result.scene.elements, interaction.range())) {
+    const geometry::Element& a = result.scene.elements[static_cast<std::size_t>(p.i)];
+    const geometry::Element& b = result.scene.elements[static_cast<std::size_t>(p.j)];
+    const int band =
+        interaction.band(a.category, b.category, p.measurement.axis, p.measurement.distance);
+    ASSERT_NE(band, model::Interaction::kHardCore);
+    if (band >= 0)
+      recount[static_cast<std::size_t>(
+          interaction.parameter(a.category, b.category, p.measurement.axis, band))] += 1;
+  }
+  EXPECT_EQ(result.statistics, recount);
+  double pairs = 0;
+  for (std::size_t k = 1; k < recount.size(); ++k) pairs += recount[k];
+  EXPECT_GT(pairs, 0.0) << "the test needs interacting pairs";
+  // Observations every 1000 steps; the last is the final state.
+  ASSERT_EQ(result.observations.size(), 30u);
+  EXPECT_EQ(result.observations.back(), result.statistics);
 }
 
 }  // namespace
