@@ -428,6 +428,13 @@ TEST(CliMessages, MisspeltOptionsAreNamedWithTheClosestValidOne) {
       "unknown option '--sizee' (did you mean --size?); see shapeproc sample --help");
   expect_one_line_error(run_cli({"info", data("svg/dots-random.svg"), "--categry-by", "fill"}), 2,
                         "did you mean --category-by?");
+  // Range checks say what is wanted in a few words.
+  expect_one_line_error(
+      run_cli({"sample", "m.json", "--size", "4,4", "-o", "x.svg", "--iterations", "-5"}), 2,
+      "--iterations: must be >= 0, got -5");
+  expect_one_line_error(
+      run_cli({"sample", "m.json", "--size", "4,4", "-o", "x.svg", "--png-scale", "0"}), 2,
+      "--png-scale: must be > 0, got 0");
   // Far from every option: no guess.
   const Result far = run_cli({"info", data("svg/dots-random.svg"), "--zzzzzzzz"});
   expect_one_line_error(far, 2, "unknown option '--zzzzzzzz'");

@@ -1,5 +1,7 @@
 #include "tools/cli/common.hpp"
 
+#include <cmath>
+
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/text.hpp"
 
@@ -68,6 +70,24 @@ void check_output_extension(const std::string& file, const std::string& option) 
   throw core::UsageError(option + ": unknown output format '." + extension + "' of '" + file +
                          "': expected .svg, .obj, .ply, .csv or .png (a picture)");
 }
+
+namespace {
+CLI::Validator number_check(const std::string& name, bool allow_zero) {
+  return CLI::Validator(
+      [allow_zero](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value))
+          return "expected a number, got '" + text + "'";
+        if (allow_zero ? value < 0 : value <= 0)
+          return std::string("must be ") + (allow_zero ? ">= 0" : "> 0") + ", got " + text;
+        return {};
+      },
+      name);
+}
+}  // namespace
+
+CLI::Validator positive_number() { return number_check("POSITIVE", false); }
+CLI::Validator non_negative_number() { return number_check("NONNEGATIVE", true); }
 
 io::Provenance make_provenance(const std::string& command,
                                const std::vector<std::string>& arguments,

@@ -34,6 +34,11 @@ geometry::DirectionKind direction_kind(const std::string& name);
 // .ply, .csv, or .png for a picture of the scene); `option` names the flag in the message.
 void check_output_extension(const std::string& file, const std::string& option);
 
+// Option checks with short messages ("must be > 0, got 0"), in place of CLI11's range validators
+// whose messages print the largest double.
+CLI::Validator positive_number();
+CLI::Validator non_negative_number();
+
 // Provenance of an output: tool, version, subcommand, the full argument list and parameters.
 io::Provenance make_provenance(const std::string& command,
                                const std::vector<std::string>& arguments,

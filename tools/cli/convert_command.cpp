@@ -30,7 +30,7 @@ void add_convert_command(CLI::App& app, Action& action, const std::vector<std::s
   command
       ->add_option("--png-scale", args->png_scale,
                    "pixels per unit length of a PNG (default: 800 pixels along the longer side)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {

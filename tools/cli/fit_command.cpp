@@ -105,11 +105,11 @@ void FitFlags::add_to(CLI::App& command) {
   command
       .add_option("--quadrature", quadrature,
                   "quadrature cells along the window's longest side (default 48 in 2D, 8 in 3D)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   command
       .add_option("--shapes-per-location", shapes_per_location,
                   "shapes crossed with each quadrature location, in rotation (default: all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   command.add_flag(
       "--quadrature-lines", lines,
       "2D: integrate each row of quadrature cells exactly along the row (slower; see docs/fit.md)");

@@ -70,7 +70,7 @@ void SampleFlags::add_to(CLI::App& command) {
       .add_option(
           "--iterations", iterations,
           "steps per chain (default: until the element count is stationary, see docs/sample.md)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   command
       .add_option("--shift-probability", shift_probability,
                   "share of steps that shift an element (0: birth-death only)")
@@ -79,7 +79,7 @@ void SampleFlags::add_to(CLI::App& command) {
   command
       .add_option("--shift-radius", shift_radius,
                   "largest shift (default: half the interaction range)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   command.add_option("--seed", seed, "random seed")->capture_default_str();
   command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")
       ->check(CLI::Range(1, 1000));
@@ -96,7 +96,7 @@ void SampleFlags::add_to(CLI::App& command) {
   command
       .add_option("--png-scale", png_scale,
                   "pixels per unit length of the PNG (default: 800 pixels along the longer side)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   verbosity.add_to(command);
 }
 
