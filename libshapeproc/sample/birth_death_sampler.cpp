@@ -244,6 +244,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   synthesis::SynthesisResult out;
   out.scene = std::move(sampled.scene);
   out.trace = std::move(sampled.trace);
+  out.observations = std::move(sampled.observations);
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
   record.boundary = domain_.boundary();

@@ -36,6 +36,9 @@ struct SynthesisResult {
   geometry::Scene scene;          // the elements made, with the domain's box as window
   SynthesisRecord record;         // the method's part filled; run_chains adds chain and time
   std::vector<TracePoint> trace;  // empty unless asked for
+  // Sufficient statistics t(x) observed along the chain, for methods that are exponential
+  // families (the shape process: SamplerOptions::observe_every); empty otherwise.
+  std::vector<std::vector<double>> observations;
   // Method-specific counters, in order, for a one-line summary ("births accepted" = "512/20000").
   std::vector<std::pair<std::string, std::string>> counters;
 };
