@@ -20,7 +20,8 @@ constexpr int kBatchesPerChain = 5;
 std::vector<double> theta_of(const model::ShapeProcessModel& model) {
   const model::Interaction interaction(model);
   std::vector<double> theta(static_cast<std::size_t>(interaction.parameter_count()));
-  for (std::size_t c = 0; c < model.categories.size(); ++c) theta[c] = std::log(model.categories[c].beta);
+  for (std::size_t c = 0; c < model.categories.size(); ++c)
+    theta[c] = std::log(model.categories[c].beta);
   for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count(); ++p) {
     theta[static_cast<std::size_t>(p)] = interaction.log_gamma_of(p);
   }
@@ -45,10 +46,11 @@ void set_theta(model::ShapeProcessModel& model, const std::vector<double>& theta
 
 }  // namespace
 
-StatisticsMoments statistics_moments(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                                     const MleOptions& options) {
-  core::check(options.chains >= 1 && options.steps > 0 && options.observe_every > 0 && options.burn_in >= 0, "mle",
-              "chains, steps and the observation interval must be positive");
+StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
+                                     const geometry::Domain& domain, const MleOptions& options) {
+  core::check(
+      options.chains >= 1 && options.steps > 0 && options.observe_every > 0 && options.burn_in >= 0,
+      "mle", "chains, steps and the observation interval must be positive");
   sample::SamplerOptions sampler_options;
   sampler_options.iterations = options.burn_in + options.steps;
   sampler_options.observe_every = options.observe_every;
@@ -63,11 +65,13 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model, cons
   const std::size_t p = static_cast<std::size_t>(model::Interaction(model).parameter_count());
   std::vector<std::vector<double>> batch_means;
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(p));
-  Eigen::MatrixXd outer = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
+  Eigen::MatrixXd outer =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
   int count = 0;
   for (const synthesis::SynthesisResult& result : results) {
     const std::size_t skip = static_cast<std::size_t>(options.burn_in / options.observe_every);
-    const std::size_t kept = result.observations.size() > skip ? result.observations.size() - skip : 0;
+    const std::size_t kept =
+        result.observations.size() > skip ? result.observations.size() - skip : 0;
     const std::size_t per_batch = std::max<std::size_t>(1, kept / kBatchesPerChain);
     std::vector<double> batch(p, 0.0);
     std::size_t in_batch = 0;
@@ -86,7 +90,8 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model, cons
       }
     }
   }
-  core::check(count >= 2, "mle", "too few observations: raise the steps or lower the observation interval");
+  core::check(count >= 2, "mle",
+              "too few observations: raise the steps or lower the observation interval");
   StatisticsMoments m;
   m.observations = count;
   const Eigen::VectorXd mean = sum / count;
@@ -112,7 +117,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   const std::size_t categories = start.categories.size();
   core::check(observed.size() == p, "mle", "the observed statistics have the wrong size");
   for (std::size_t c = 0; c < categories; ++c) {
-    core::check(observed[c] > 0, "mle", "category '" + start.categories[c].name + "' has no element");
+    core::check(observed[c] > 0, "mle",
+                "category '" + start.categories[c].name + "' has no element");
   }
   MleResult r;
   r.observed = observed;
@@ -167,7 +173,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       r.converged = true;
       const Eigen::MatrixXd inverse = solver.solve(Eigen::MatrixXd::Identity(n, n));
       for (Eigen::Index i = 0; i < n; ++i) {
-        r.standard_errors[free[static_cast<std::size_t>(i)]] = std::sqrt(std::max(0.0, inverse(i, i)));
+        r.standard_errors[free[static_cast<std::size_t>(i)]] =
+            std::sqrt(std::max(0.0, inverse(i, i)));
       }
       break;
     }

@@ -45,8 +45,8 @@ struct StatisticsMoments {
   int observations = 0;
 };
 
-StatisticsMoments statistics_moments(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                                     const MleOptions& options);
+StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
+                                     const geometry::Domain& domain, const MleOptions& options);
 
 struct MleResult {
   std::vector<double> theta;            // by θ index; −∞ for bands on the boundary

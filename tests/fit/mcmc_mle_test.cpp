@@ -1,8 +1,8 @@
 #include "libshapeproc/fit/mcmc_mle.hpp"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -24,7 +24,8 @@ TEST(MaximumLikelihood, PoissonIsClosedForm) {
   EXPECT_DOUBLE_EQ(std::exp(mle.theta[0]), 37.0 / 5000.0);
   EXPECT_DOUBLE_EQ(with_estimates(points(1.0), mle).categories[0].beta, 37.0 / 5000.0);
   EXPECT_THROW(maximise_likelihood(points(1.0), window, {0.0}, MleOptions{}), core::ArgumentError);
-  EXPECT_THROW(maximise_likelihood(points(1.0), window, {1.0, 2.0}, MleOptions{}), core::ArgumentError);
+  EXPECT_THROW(maximise_likelihood(points(1.0), window, {1.0, 2.0}, MleOptions{}),
+               core::ArgumentError);
 }
 
 // A Strauss-type point process with two bands on a torus, sampled at known θ: the MLE from its
@@ -42,7 +43,8 @@ TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
   sample::SamplerOptions sampler_options;
   sampler_options.iterations = 60000;
   core::Random random(5);
-  const sample::SampleResult z = sample::sample_shape_process(truth, window, sampler_options, random);
+  const sample::SampleResult z =
+      sample::sample_shape_process(truth, window, sampler_options, random);
   const std::vector<double>& observed = z.statistics;
   ASSERT_GT(observed[0], 60.0);
   ASSERT_GT(observed[1], 3.0);
@@ -60,7 +62,8 @@ TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
   const std::vector<double> true_theta = {std::log(0.03), std::log(0.3), std::log(0.7)};
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_NEAR(mle.theta[k], true_theta[k], 3 * mle.standard_errors[k]) << "parameter " << k;
-    EXPECT_NEAR(mle.expected[k], observed[k], options.tolerance * mle.expected_error[k] + 1e-9) << k;
+    EXPECT_NEAR(mle.expected[k], observed[k], options.tolerance * mle.expected_error[k] + 1e-9)
+        << k;
   }
 }
 

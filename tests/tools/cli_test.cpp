@@ -516,3 +516,41 @@ TEST(CliSample, OutputsCarryLayersARecordAndPicturesTheirSeed) {
 
 }  // namespace
 }  // namespace shapeproc::cli
+
+namespace shapeproc::cli {
+namespace {
+
+TEST(CliFit, MaximumLikelihoodMatchesTheExemplarsCount) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("m.json").string();
+  const Result r = run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "16", "--estimator",
+                            "mle", "--mle-steps", "40000", "-o", model, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json fit = nlohmann::json::parse(testing::read_file(model))["fit"];
+  const nlohmann::json& e = fit["estimator"];
+  EXPECT_EQ(e["method"], "mcmc-mle");
+  EXPECT_TRUE(e["converged"].get<bool>());
+  // Every expected statistic within the tolerance of 2 Monte Carlo standard errors.
+  for (const auto& z : e["z"]) EXPECT_LE(std::abs(z.get<double>()), 2.0);
+  EXPECT_EQ(e["observed"][0], 30.0);
+  // Same seed, same model bytes (but for the timings).
+  const std::string again = dir.file("again.json").string();
+  ASSERT_EQ(run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "16", "--estimator", "mle",
+                     "--mle-steps", "40000", "-o", again, "--quiet"})
+                .code,
+            0);
+  nlohmann::json a = nlohmann::json::parse(testing::read_file(model)),
+                 b = nlohmann::json::parse(testing::read_file(again));
+  for (nlohmann::json* j : {&a, &b}) {
+    (*j)["fit"].erase("seconds");
+    (*j)["fit"]["estimator"].erase("seconds");
+    (*j)["fit"].erase("arguments");
+  }
+  EXPECT_EQ(a, b);
+  expect_one_line_error(run_cli({"fit", data("svg/dots-random.svg"), "--estimator", "mle", "--edge",
+                                 "border", "-o", dir.file("b.json").string()}),
+                        2, "no border correction");
+}
+
+}  // namespace
+}  // namespace shapeproc::cli

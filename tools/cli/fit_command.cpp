@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -77,6 +78,17 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   try {
     result = fit::fit_shape_process(exemplar, options);
     bar.finish();
+    if (flags.estimator == "mle") {
+      fit::MleOptions mle = flags.mle_options();
+      ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
+      mle.progress = [&](int iteration, double worst_z) {
+        verbosity.stage("mle: iteration " + std::to_string(iteration) + ", largest |z| " +
+                        core::format_general(worst_z, 3));
+        iterations.update(iteration, mle.max_iterations);
+      };
+      result = fit::refine_to_maximum_likelihood(exemplar, options, std::move(result), mle);
+      iterations.finish();
+    }
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
@@ -126,6 +138,29 @@ void FitFlags::add_to(CLI::App& command) {
           "--data-weight", data_weight,
           "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
       ->capture_default_str();
+  command
+      .add_option("--estimator", estimator,
+                  "mpl (maximum pseudo-likelihood) or mle (then maximum likelihood by MCMC from "
+                  "the MPL fit; "
+                  "edge none or periodic; see docs/fit.md)")
+      ->check(CLI::IsMember({"mpl", "mle"}))
+      ->capture_default_str();
+  command.add_option("--mle-chains", mle_chains, "MLE: chains per iteration")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  command.add_option("--mle-steps", mle_steps, "MLE: steps of each chain after its burn-in")
+      ->check(positive_number())
+      ->capture_default_str();
+  command.add_option("--mle-seed", mle_seed, "MLE: random seed of its chains")
+      ->capture_default_str();
+}
+
+fit::MleOptions FitFlags::mle_options() const {
+  fit::MleOptions o;
+  o.chains = mle_chains;
+  o.steps = mle_steps;
+  o.seed = mle_seed;
+  return o;
 }
 
 fit::FitOptions FitFlags::options() const {
@@ -155,6 +190,7 @@ nlohmann::json FitFlags::to_json() const {
           {"quantiles", quantiles},
           {"thresholds", thresholds},
           {"edge", edge},
+          {"estimator", estimator},
           {"distance", distance},
           {"direction", direction},
           {"quadrature", quadrature},

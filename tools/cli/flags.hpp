@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -32,9 +33,14 @@ struct FitFlags {
   bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
+  std::string estimator = "mpl";
+  int mle_chains = fit::MleOptions{}.chains;
+  long long mle_steps = fit::MleOptions{}.steps;
+  std::uint64_t mle_seed = fit::MleOptions{}.seed;
 
   void add_to(CLI::App& command);
   fit::FitOptions options() const;  // throws core::UsageError
+  fit::MleOptions mle_options() const;
   nlohmann::json to_json() const;
 };
 

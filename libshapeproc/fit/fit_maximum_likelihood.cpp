@@ -1,0 +1,85 @@
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "libshapeproc/core/check.hpp"
+#include "libshapeproc/core/format.hpp"
+#include "libshapeproc/model/interaction.hpp"
+
+namespace shapeproc::fit {
+
+namespace {
+// Starting values of log γ are kept within ±kStartBound: the MPLE of a packed exemplar may sit at
+// the search bound, far from anything a sampler can reach.
+constexpr double kStartBound = 3.0;
+}  // namespace
+
+std::vector<double> observed_statistics(const geometry::Scene& exemplar, const model::ShapeProcessModel& model) {
+  const model::Interaction interaction(model);
+  std::vector<double> t(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
+  for (const geometry::Element& e : exemplar.elements) t[static_cast<std::size_t>(e.category)] += 1.0;
+  for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count(); ++p) {
+    const model::Interaction::Location where = interaction.locate(p);
+    const model::AxisParameters& axis =
+        model.interactions[static_cast<std::size_t>(where.pair)].axes[static_cast<std::size_t>(where.axis)];
+    t[static_cast<std::size_t>(p)] = static_cast<double>(axis.observed_pairs.at(static_cast<std::size_t>(where.band)));
+  }
+  return t;
+}
+
+FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const FitOptions& fit_options, FitResult mple,
+                                       const MleOptions& options) {
+  core::check(fit_options.edge != geometry::EdgeTreatment::border, "fit",
+              "the maximum-likelihood fit supports no border correction yet: use no edge treatment or a periodic one");
+  const auto start_clock = std::chrono::steady_clock::now();
+  const geometry::Domain window(exemplar.window, exemplar.dimension, fit_options.boundary);
+  model::ShapeProcessModel start = mple.model;
+  const std::vector<double> observed = observed_statistics(exemplar, start);
+  for (std::size_t c = 0; c < start.categories.size(); ++c) {
+    model::CategoryParameters& category = start.categories[c];
+    if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / window.measure();
+  }
+  for (model::PairInteraction& pair : start.interactions) {
+    for (model::AxisParameters& axis : pair.axes) {
+      for (double& gamma : axis.gammas) gamma = std::exp(std::clamp(std::log(gamma), -kStartBound, kStartBound));
+    }
+  }
+  const MleResult mle = maximise_likelihood(start, window, observed, options);
+  FitResult result = std::move(mple);
+  const std::string fit_json = result.model.fit_json;
+  result.model = with_estimates(start, mle);
+  if (!mle.converged) {
+    result.notes.push_back("the maximum-likelihood fit did not converge in " + std::to_string(options.max_iterations) +
+                           " iterations: some expected counts still differ from the exemplar's by more than " +
+                           core::format_number(options.tolerance) + " Monte Carlo standard errors");
+  }
+  nlohmann::json record = nlohmann::json::parse(fit_json);
+  std::vector<double> z;
+  for (std::size_t k = 0; k < observed.size(); ++k) {
+    const double se = mle.expected_error.size() > k ? mle.expected_error[k] : 0.0;
+    z.push_back(se > 0 ? (observed[k] - mle.expected[k]) / se : 0.0);
+  }
+  record["estimator"] = {
+      {"method", "mcmc-mle"},
+      {"start", "mple"},
+      {"iterations", mle.iterations},
+      {"converged", mle.converged},
+      {"chains", options.chains},
+      {"burn_in", options.burn_in},
+      {"steps", options.steps},
+      {"observe_every", options.observe_every},
+      {"seed", options.seed},
+      {"observed", observed},
+      {"expected", mle.expected},
+      {"expected_standard_error", mle.expected_error},
+      {"z", z},
+      {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count()}};
+  record["notes"] = result.notes;
+  result.model.fit_json = record.dump();
+  return result;
+}
+
+}  // namespace shapeproc::fit

@@ -1,0 +1,20 @@
+// The maximum-likelihood fit of the shape process (mcmc_mle.hpp), started from the maximum
+// pseudo-likelihood fit: the thresholds, shapes and categories of `mple` are kept, β and γ are
+// re-estimated so that the model's expected counts match the exemplar's, on the exemplar's own
+// window (open for the edge treatment none, a torus for periodic).
+#pragma once
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/fit/mcmc_mle.hpp"
+
+namespace shapeproc::fit {
+
+// The exemplar's sufficient statistics t(z) in the model's θ numbering: elements per category,
+// then its pairs per interaction band (FitResult's observed pairs).
+std::vector<double> observed_statistics(const geometry::Scene& exemplar, const model::ShapeProcessModel& model);
+
+// Throws core::ArgumentError for the border edge treatment (not supported by the MLE yet).
+FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const FitOptions& fit_options,
+                                       FitResult mple, const MleOptions& options);
+
+}  // namespace shapeproc::fit
