@@ -3,7 +3,7 @@
 # the files that are not and exits 1. `bash scripts/check-format.sh --fix` formats them in place.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mapfile -t files < <(git ls-files 'libshapeproc/*.[ch]pp' 'tools/*.[ch]pp' 'tests/*.[ch]pp' 'benchmarks/*.[ch]pp')
+mapfile -t files < <(git ls-files --cached --others --exclude-standard 'libshapeproc/*.[ch]pp' 'tools/*.[ch]pp' 'tests/*.[ch]pp' 'benchmarks/*.[ch]pp')
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
   exit 0

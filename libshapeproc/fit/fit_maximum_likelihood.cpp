@@ -17,34 +17,41 @@ namespace {
 constexpr double kStartBound = 3.0;
 }  // namespace
 
-std::vector<double> observed_statistics(const geometry::Scene& exemplar, const model::ShapeProcessModel& model) {
+std::vector<double> observed_statistics(const geometry::Scene& exemplar,
+                                        const model::ShapeProcessModel& model) {
   const model::Interaction interaction(model);
   std::vector<double> t(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
-  for (const geometry::Element& e : exemplar.elements) t[static_cast<std::size_t>(e.category)] += 1.0;
+  for (const geometry::Element& e : exemplar.elements)
+    t[static_cast<std::size_t>(e.category)] += 1.0;
   for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count(); ++p) {
     const model::Interaction::Location where = interaction.locate(p);
-    const model::AxisParameters& axis =
-        model.interactions[static_cast<std::size_t>(where.pair)].axes[static_cast<std::size_t>(where.axis)];
-    t[static_cast<std::size_t>(p)] = static_cast<double>(axis.observed_pairs.at(static_cast<std::size_t>(where.band)));
+    const model::AxisParameters& axis = model.interactions[static_cast<std::size_t>(where.pair)]
+                                            .axes[static_cast<std::size_t>(where.axis)];
+    t[static_cast<std::size_t>(p)] =
+        static_cast<double>(axis.observed_pairs.at(static_cast<std::size_t>(where.band)));
   }
   return t;
 }
 
-FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const FitOptions& fit_options, FitResult mple,
+FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
+                                       const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options) {
   core::check(fit_options.edge != geometry::EdgeTreatment::border, "fit",
-              "the maximum-likelihood fit supports no border correction yet: use no edge treatment or a periodic one");
+              "the maximum-likelihood fit supports no border correction yet: use no edge treatment "
+              "or a periodic one");
   const auto start_clock = std::chrono::steady_clock::now();
   const geometry::Domain window(exemplar.window, exemplar.dimension, fit_options.boundary);
   model::ShapeProcessModel start = mple.model;
   const std::vector<double> observed = observed_statistics(exemplar, start);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
-    if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / window.measure();
+    if (category.beta_status != model::ParameterStatus::free)
+      category.beta = observed[c] / window.measure();
   }
   for (model::PairInteraction& pair : start.interactions) {
     for (model::AxisParameters& axis : pair.axes) {
-      for (double& gamma : axis.gammas) gamma = std::exp(std::clamp(std::log(gamma), -kStartBound, kStartBound));
+      for (double& gamma : axis.gammas)
+        gamma = std::exp(std::clamp(std::log(gamma), -kStartBound, kStartBound));
     }
   }
   const MleResult mle = maximise_likelihood(start, window, observed, options);
@@ -52,9 +59,10 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const Fi
   const std::string fit_json = result.model.fit_json;
   result.model = with_estimates(start, mle);
   if (!mle.converged) {
-    result.notes.push_back("the maximum-likelihood fit did not converge in " + std::to_string(options.max_iterations) +
-                           " iterations: some expected counts still differ from the exemplar's by more than " +
-                           core::format_number(options.tolerance) + " Monte Carlo standard errors");
+    result.notes.push_back(
+        "the maximum-likelihood fit did not converge in " + std::to_string(options.max_iterations) +
+        " iterations: some expected counts still differ from the exemplar's by more than " +
+        core::format_number(options.tolerance) + " Monte Carlo standard errors");
   }
   nlohmann::json record = nlohmann::json::parse(fit_json);
   std::vector<double> z;
@@ -76,7 +84,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const Fi
       {"expected", mle.expected},
       {"expected_standard_error", mle.expected_error},
       {"z", z},
-      {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count()}};
+      {"seconds",
+       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count()}};
   record["notes"] = result.notes;
   result.model.fit_json = record.dump();
   return result;

@@ -11,10 +11,12 @@ namespace shapeproc::fit {
 
 // The exemplar's sufficient statistics t(z) in the model's θ numbering: elements per category,
 // then its pairs per interaction band (FitResult's observed pairs).
-std::vector<double> observed_statistics(const geometry::Scene& exemplar, const model::ShapeProcessModel& model);
+std::vector<double> observed_statistics(const geometry::Scene& exemplar,
+                                        const model::ShapeProcessModel& model);
 
 // Throws core::ArgumentError for the border edge treatment (not supported by the MLE yet).
-FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar, const FitOptions& fit_options,
-                                       FitResult mple, const MleOptions& options);
+FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
+                                       const FitOptions& fit_options, FitResult mple,
+                                       const MleOptions& options);
 
 }  // namespace shapeproc::fit
