@@ -37,7 +37,11 @@ struct Piece {
   std::uint64_t inside = 0;
 };
 
-inline bool holds(std::uint64_t inside, int cut) { return ((inside >> cut) & 1u) != 0; }
+// Whether bit `cut` of `inside` is set; cuts past the 64th are never recorded (the cell keeps the
+// centre's side of them), so they hold nothing.
+inline bool holds(std::uint64_t inside, int cut) {
+  return cut >= 0 && cut < 64 && ((inside >> cut) & 1u) != 0;
+}
 
 // The axis of neighbour `n` for a piece inside the cuts `inside`: the sector cut's axis that
 // holds it, else the neighbour's centre axis.
