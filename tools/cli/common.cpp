@@ -89,6 +89,15 @@ CLI::Validator number_check(const std::string& name, bool allow_zero) {
 CLI::Validator positive_number() { return number_check("POSITIVE", false); }
 CLI::Validator non_negative_number() { return number_check("NONNEGATIVE", true); }
 
+std::string command_line(const std::vector<std::string>& arguments) {
+  std::string out;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    if (i > 0) out += ' ';
+    out += i == 0 ? "shapeproc" : arguments[i];
+  }
+  return out;
+}
+
 io::Provenance make_provenance(const std::string& command,
                                const std::vector<std::string>& arguments,
                                const nlohmann::json& parameters) {

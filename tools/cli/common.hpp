@@ -39,6 +39,9 @@ void check_output_extension(const std::string& file, const std::string& option);
 CLI::Validator positive_number();
 CLI::Validator non_negative_number();
 
+// The command line as a user would retype it: "shapeproc" and the arguments after the program.
+std::string command_line(const std::vector<std::string>& arguments);
+
 // Provenance of an output: tool, version, subcommand, the full argument list and parameters.
 io::Provenance make_provenance(const std::string& command,
                                const std::vector<std::string>& arguments,

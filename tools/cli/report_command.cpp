@@ -13,19 +13,6 @@
 
 namespace shapeproc::cli {
 
-namespace {
-
-std::string join(const std::vector<std::string>& arguments) {
-  std::string out;
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    if (i > 0) out += ' ';
-    out += i == 0 ? "shapeproc" : arguments[i];
-  }
-  return out;
-}
-
-}  // namespace
-
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   struct ReportArguments {
     std::string exemplar, directory, model;
@@ -81,7 +68,7 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       }
       r.model = model.get();
       r.model_label = args->model;
-      r.command = join(arguments);
+      r.command = command_line(arguments);
       if (model && !model->fit_json.empty()) {
         const nlohmann::json fit = nlohmann::json::parse(model->fit_json, nullptr, false);
         if (fit.is_object() && fit.contains("seconds") && fit["seconds"].is_object()) {

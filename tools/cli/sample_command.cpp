@@ -43,16 +43,13 @@ void write_trace(const std::string& file, const synthesis::SynthesisResult& resu
 // The PNG's text chunks: what made it, so a picture found alone still says its seed and command.
 std::vector<std::pair<std::string, std::string>> png_text(
     const synthesis::SynthesisRecord& record) {
-  std::string command;
-  for (std::size_t i = 0; i < record.arguments.size(); ++i)
-    command += (i ? " " : "") + (i == 0 ? std::string("shapeproc") : record.arguments[i]);
   return {
       {"Software", std::string("shapeproc ") + SHAPEPROC_VERSION},
       {"Comment", "seed " + std::to_string(record.chain_seed) +
                       (record.chains > 1 ? " (chain " + std::to_string(record.chain) +
                                                " of run seed " + std::to_string(record.seed) + ")"
                                          : std::string())},
-      {"Source", command}};
+      {"Source", command_line(record.arguments)}};
 }
 
 }  // namespace
