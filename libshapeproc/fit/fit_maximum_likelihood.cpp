@@ -1,7 +1,6 @@
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -20,9 +19,12 @@ constexpr double kStartBound = 3.0;
 std::vector<double> observed_statistics(const geometry::Scene& exemplar,
                                         const model::ShapeProcessModel& model) {
   const model::Interaction interaction(model);
-  std::vector<double> t(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
-  for (const geometry::Element& e : exemplar.elements)
+  std::vector<double> t(static_cast<std::size_t>(interaction.statistic_count()), 0.0);
+  for (const geometry::Element& e : exemplar.elements) {
     t[static_cast<std::size_t>(e.category)] += 1.0;
+    if (const int k = interaction.class_statistic(e.shape); k >= 0)
+      t[static_cast<std::size_t>(k)] += 1.0;
+  }
   for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count(); ++p) {
     const model::Interaction::Location where = interaction.locate(p);
     const model::AxisParameters& axis = model.interactions[static_cast<std::size_t>(where.pair)]
@@ -39,7 +41,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   core::check(fit_options.edge != geometry::EdgeTreatment::border, "fit",
               "the maximum-likelihood fit supports no border correction yet: use no edge treatment "
               "or a periodic one");
-  const auto start_clock = std::chrono::steady_clock::now();
   const geometry::Domain window(exemplar.window, exemplar.dimension, fit_options.boundary);
   model::ShapeProcessModel start = mple.model;
   const std::vector<double> observed = observed_statistics(exemplar, start);
@@ -60,32 +61,39 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   result.model = with_estimates(start, mle);
   if (!mle.converged) {
     result.notes.push_back(
-        "the maximum-likelihood fit did not converge in " + std::to_string(options.max_iterations) +
-        " iterations: some expected counts still differ from the exemplar's by more than " +
-        core::format_number(options.tolerance) + " Monte Carlo standard errors");
+        "the maximum-likelihood fit did not converge in " + std::to_string(mle.iterations) +
+        " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +
+        core::format_number(options.max_seconds) +
+        " s): some expected counts still differ from the exemplar's by more than " +
+        core::format_number(mle.tolerance) + " Monte Carlo standard errors");
   }
   nlohmann::json record = nlohmann::json::parse(fit_json);
+  std::vector<int> penalised;  // θ indices where the attraction prior holds log γ down
+  for (std::size_t k = 0; k < mle.penalised.size(); ++k)
+    if (mle.penalised[k]) penalised.push_back(static_cast<int>(k));
   std::vector<double> z;
   for (std::size_t k = 0; k < observed.size(); ++k) {
     const double se = mle.expected_error.size() > k ? mle.expected_error[k] : 0.0;
     z.push_back(se > 0 ? (observed[k] - mle.expected[k]) / se : 0.0);
   }
-  record["estimator"] = {
-      {"method", "mcmc-mle"},
-      {"start", "mple"},
-      {"iterations", mle.iterations},
-      {"converged", mle.converged},
-      {"chains", options.chains},
-      {"burn_in", options.burn_in},
-      {"steps", options.steps},
-      {"observe_every", options.observe_every},
-      {"seed", options.seed},
-      {"observed", observed},
-      {"expected", mle.expected},
-      {"expected_standard_error", mle.expected_error},
-      {"z", z},
-      {"seconds",
-       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count()}};
+  record["estimator"] = {{"method", "mcmc-mle"},
+                         {"start", "mple"},
+                         {"iterations", mle.iterations},
+                         {"converged", mle.converged},
+                         {"chains", options.sampling.chains},
+                         {"burn_in", options.sampling.burn_in},
+                         {"steps", options.sampling.steps},
+                         {"observe_every", options.sampling.observe_every},
+                         {"seed", options.sampling.seed},
+                         {"attraction_prior_sd", options.attraction_prior_sd},
+                         {"penalised", penalised},
+                         {"observed", observed},
+                         {"expected", mle.expected},
+                         {"expected_standard_error", mle.expected_error},
+                         {"z", z},
+                         {"tolerance", mle.tolerance},
+                         {"significance", options.significance},
+                         {"seconds", mle.seconds}};
   record["notes"] = result.notes;
   result.model.fit_json = record.dump();
   return result;

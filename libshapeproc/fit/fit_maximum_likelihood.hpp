@@ -10,7 +10,8 @@
 namespace shapeproc::fit {
 
 // The exemplar's sufficient statistics t(z) in the model's θ numbering: elements per category,
-// then its pairs per interaction band (FitResult's observed pairs).
+// then its pairs per interaction band (FitResult's observed pairs), then elements per shape class
+// (the exemplar's element e has the model's shape e.shape).
 std::vector<double> observed_statistics(const geometry::Scene& exemplar,
                                         const model::ShapeProcessModel& model);
 

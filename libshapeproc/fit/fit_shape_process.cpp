@@ -8,6 +8,7 @@
 #include "libshapeproc/fit/fit_thresholds.hpp"
 #include "libshapeproc/fit/model_assembly.hpp"
 #include "libshapeproc/fit/quadrature_design.hpp"
+#include "libshapeproc/fit/shape_classes.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
@@ -49,6 +50,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   result.seconds.measurements = seconds_since(clock);
 
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
+  assign_shape_classes(model, exemplar);
   const model::Interaction interaction(model);
   const FitRegion region = fit_region(exemplar, options.edge, interaction.range());
   const ExemplarStatistics statistics =

@@ -2,33 +2,34 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/sample/birth_death_sampler.hpp"
-#include "libshapeproc/synthesis/run_chains.hpp"
 
 namespace shapeproc::fit {
 
 namespace {
 
-constexpr int kBatchesPerChain = 5;
-
-// The model's θ in the Interaction's numbering.
+// The model's θ in the numbering of its sufficient statistics (Interaction::statistic_count):
+// log β per category, log γ per band, then log w per shape class.
 std::vector<double> theta_of(const model::ShapeProcessModel& model) {
   const model::Interaction interaction(model);
-  std::vector<double> theta(static_cast<std::size_t>(interaction.parameter_count()));
+  std::vector<double> theta(static_cast<std::size_t>(interaction.statistic_count()));
   for (std::size_t c = 0; c < model.categories.size(); ++c)
     theta[c] = std::log(model.categories[c].beta);
   for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count(); ++p) {
     theta[static_cast<std::size_t>(p)] = interaction.log_gamma_of(p);
   }
+  for (std::size_t k = 0; k < model.shape_classes.size(); ++k)
+    theta[static_cast<std::size_t>(interaction.parameter_count()) + k] =
+        std::log(model.shape_classes[k].weight);
   return theta;
 }
 
-// `model` with θ written into it.
+// `model` with θ written into it (class weights as they are, not normalised).
 void set_theta(model::ShapeProcessModel& model, const std::vector<double>& theta) {
   const model::Interaction interaction(model);
   for (int p = 0; p < interaction.parameter_count(); ++p) {
@@ -42,149 +43,252 @@ void set_theta(model::ShapeProcessModel& model, const std::vector<double>& theta
           .gammas[static_cast<std::size_t>(where.band)] = value;
     }
   }
+  for (std::size_t k = 0; k < model.shape_classes.size(); ++k)
+    model.shape_classes[k].weight =
+        std::exp(theta[static_cast<std::size_t>(interaction.parameter_count()) + k]);
 }
 
 }  // namespace
 
-StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
-                                     const geometry::Domain& domain, const MleOptions& options) {
-  core::check(
-      options.chains >= 1 && options.steps > 0 && options.observe_every > 0 && options.burn_in >= 0,
-      "mle", "chains, steps and the observation interval must be positive");
-  sample::SamplerOptions sampler_options;
-  sampler_options.iterations = options.burn_in + options.steps;
-  sampler_options.observe_every = options.observe_every;
-  const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
+namespace {
 
-  // The chains' observations after the burn-in, in batches.
-  synthesis::ChainOptions chains;
-  chains.chains = options.chains;
-  chains.threads = options.threads;
-  chains.seed = options.seed;
-  const std::vector<synthesis::SynthesisResult> results = synthesis::run_chains(sampler, chains);
-  const std::size_t p = static_cast<std::size_t>(model::Interaction(model).parameter_count());
-  std::vector<std::vector<double>> batch_means;
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(p));
-  Eigen::MatrixXd outer =
-      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
-  int count = 0;
-  for (const synthesis::SynthesisResult& result : results) {
-    const std::size_t skip = static_cast<std::size_t>(options.burn_in / options.observe_every);
-    const std::size_t kept =
-        result.observations.size() > skip ? result.observations.size() - skip : 0;
-    const std::size_t per_batch = std::max<std::size_t>(1, kept / kBatchesPerChain);
-    std::vector<double> batch(p, 0.0);
-    std::size_t in_batch = 0;
-    for (std::size_t i = skip; i < result.observations.size(); ++i) {
-      const std::vector<double>& t = result.observations[i];
-      const Eigen::Map<const Eigen::VectorXd> v(t.data(), static_cast<Eigen::Index>(p));
-      sum += v;
-      outer += v * v.transpose();
-      ++count;
-      for (std::size_t k = 0; k < p; ++k) batch[k] += t[k];
-      if (++in_batch == per_batch) {
-        for (double& b : batch) b /= static_cast<double>(per_batch);
-        batch_means.push_back(batch);
-        batch.assign(p, 0.0);
-        in_batch = 0;
+constexpr int kReweightedSteps = 10;        // Newton steps on one sample at most
+constexpr double kMinEffectiveShare = 0.5;  // reweighting stops below this effective size
+constexpr long long kRoughDivisor = 4;      // first simulations: a quarter of the steps
+constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a pair or more
+constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
+
+using Clock = std::chrono::steady_clock;
+
+// What one Newton step needs at a point: the penalised gap and information over the free θ.
+struct Gap {
+  Eigen::VectorXd gap;
+  Eigen::MatrixXd information;
+  double worst_z = 0.0;
+};
+
+class Newton {
+ public:
+  Newton(const std::vector<double>& observed, std::vector<std::size_t> free, std::size_t categories,
+         std::size_t parameters, const MleOptions& options)
+      : observed_(observed),
+        free_(std::move(free)),
+        categories_(categories),
+        parameters_(parameters),
+        options_(options) {}
+
+  std::size_t size() const { return free_.size(); }
+
+  // The gap t(z) − E_θ[t] − ∇ penalty and the information Cov_θ[t] + ∇² penalty at θ.
+  Gap gap(const StatisticsMoments& m, const std::vector<double>& theta) const {
+    const std::size_t p = observed_.size();
+    const Eigen::Index n = static_cast<Eigen::Index>(free_.size());
+    Gap g{Eigen::VectorXd(n), Eigen::MatrixXd(n, n), 0.0};
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::size_t k = free_[static_cast<std::size_t>(i)];
+      g.gap[i] = observed_[k] - m.mean[k];
+      for (Eigen::Index j = 0; j < n; ++j)
+        g.information(i, j) = m.covariance[k * p + free_[static_cast<std::size_t>(j)]];
+      if (penalised(k, theta)) {
+        const double precision =
+            1.0 / (options_.attraction_prior_sd * options_.attraction_prior_sd);
+        g.gap[i] -= theta[k] * precision;
+        g.information(i, i) += precision;
       }
+      const double se = std::max(m.standard_error[k], 1e-9);
+      g.worst_z = std::max(g.worst_z, std::abs(g.gap[i]) / se);
     }
+    return g;
   }
-  core::check(count >= 2, "mle",
-              "too few observations: raise the steps or lower the observation interval");
-  StatisticsMoments m;
-  m.observations = count;
-  const Eigen::VectorXd mean = sum / count;
-  const Eigen::MatrixXd covariance = (outer - count * mean * mean.transpose()) / (count - 1);
-  m.mean.assign(mean.data(), mean.data() + mean.size());
-  m.covariance.assign(covariance.data(), covariance.data() + covariance.size());  // symmetric
-  const double batches = static_cast<double>(batch_means.size());
-  m.standard_error.assign(p, 0.0);
-  for (std::size_t k = 0; k < p; ++k) {
-    double bm = 0.0, bv = 0.0;
-    for (const auto& b : batch_means) bm += b[k] / batches;
-    for (const auto& b : batch_means) bv += (b[k] - bm) * (b[k] - bm) / std::max(1.0, batches - 1);
-    m.standard_error[k] = std::sqrt(bv / batches);
+
+  bool penalised(std::size_t k, const std::vector<double>& theta) const {
+    return k >= categories_ && k < parameters_ && options_.attraction_prior_sd > 0 && theta[k] > 0;
   }
-  return m;
+  // The expected pairs the prior takes from the band: log γ / σ² at the optimum.
+  double pairs_moved(std::size_t k, const std::vector<double>& theta) const {
+    if (!penalised(k, theta)) return 0.0;
+    return theta[k] / (options_.attraction_prior_sd * options_.attraction_prior_sd);
+  }
+
+  // One damped Newton step from θ. A statistic the sample never varies (a shape class or band
+  // the chains did not reach) carries no information: it moves by `max_step` towards its
+  // observed value, and the Newton system is solved over the others.
+  std::vector<double> step(const Gap& g, std::vector<double> theta) const {
+    const Eigen::Index n = g.gap.size();
+    std::vector<Eigen::Index> informed;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (g.information(i, i) > kNoInformation) informed.push_back(i);
+    const Eigen::Index m = static_cast<Eigen::Index>(informed.size());
+    Eigen::MatrixXd information(m, m);
+    Eigen::VectorXd gap(m);
+    for (Eigen::Index a = 0; a < m; ++a) {
+      gap[a] = g.gap[informed[static_cast<std::size_t>(a)]];
+      for (Eigen::Index b = 0; b < m; ++b)
+        information(a, b) = g.information(informed[static_cast<std::size_t>(a)],
+                                          informed[static_cast<std::size_t>(b)]);
+    }
+    Eigen::VectorXd solved =
+        Eigen::LDLT<Eigen::MatrixXd>(information + 1e-9 * Eigen::MatrixXd::Identity(m, m))
+            .solve(gap);
+    if (!solved.allFinite()) solved.setZero();
+    Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index a = 0; a < m; ++a) step[informed[static_cast<std::size_t>(a)]] = solved[a];
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (g.information(i, i) <= kNoInformation && g.gap[i] != 0)
+        step[i] = std::copysign(options_.max_step, g.gap[i]);
+    const double largest = step.cwiseAbs().maxCoeff();
+    if (largest > options_.max_step) step *= options_.max_step / largest;
+    for (Eigen::Index i = 0; i < n; ++i) theta[free_[static_cast<std::size_t>(i)]] += step[i];
+    return theta;
+  }
+
+  // Newton steps on the sample drawn at θ₀, reweighted to each new θ, until the steps become
+  // small or the reweighted sample's effective size falls below kMinEffectiveShare.
+  std::vector<double> reweighted_steps(const StatisticsMoments& sample, const Gap& at_start,
+                                       const std::vector<double>& theta0) const {
+    std::vector<double> theta = step(at_start, theta0);
+    for (int inner = 1; inner < kReweightedSteps; ++inner) {
+      std::vector<double> delta(theta.size(), 0.0);
+      for (std::size_t k : free_) delta[k] = theta[k] - theta0[k];
+      double share = 1.0;
+      const StatisticsMoments here = reweighted(sample, delta, share);
+      if (share < kMinEffectiveShare) break;
+      const std::vector<double> next = step(gap(here, theta), theta);
+      double moved = 0.0;
+      for (std::size_t k : free_) moved = std::max(moved, std::abs(next[k] - theta[k]));
+      theta = next;
+      if (moved < 1e-3) break;
+    }
+    return theta;
+  }
+
+  // Standard errors of θ̂ from the inverse of the (penalised) information.
+  void standard_errors(const Gap& g, std::vector<double>& out) const {
+    const Eigen::Index n = g.gap.size();
+    const Eigen::MatrixXd inverse =
+        Eigen::LDLT<Eigen::MatrixXd>(g.information + 1e-9 * Eigen::MatrixXd::Identity(n, n))
+            .solve(Eigen::MatrixXd::Identity(n, n));
+    for (Eigen::Index i = 0; i < n; ++i)
+      out[free_[static_cast<std::size_t>(i)]] = std::sqrt(std::max(0.0, inverse(i, i)));
+  }
+
+ private:
+  const std::vector<double>& observed_;
+  std::vector<std::size_t> free_;
+  std::size_t categories_;
+  std::size_t parameters_;  // θ indices from here on are shape classes
+  const MleOptions& options_;
+};
+
+}  // namespace
+
+double convergence_tolerance(double significance, std::size_t components) {
+  core::check_in_range("mle", "the significance level", significance, 0.0, 1.0, false);
+  const double tail = significance / static_cast<double>(std::max<std::size_t>(1, components));
+  double low = 0.0, high = 40.0;  // P(|Z| > z) = erfc(z / √2) falls from 1 to 0
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (low + high);
+    (std::erfc(mid / std::sqrt(2.0)) > tail ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
 }
 
 MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geometry::Domain& window,
                               const std::vector<double>& observed, const MleOptions& options) {
+  const auto clock = Clock::now();
   model::validate(start);
   const model::Interaction interaction(start);
-  const std::size_t p = static_cast<std::size_t>(interaction.parameter_count());
+  const std::size_t p = static_cast<std::size_t>(interaction.statistic_count());
+  const std::size_t parameters = static_cast<std::size_t>(interaction.parameter_count());
   const std::size_t categories = start.categories.size();
+  const bool classes = p > parameters;
   core::check(observed.size() == p, "mle", "the observed statistics have the wrong size");
   for (std::size_t c = 0; c < categories; ++c) {
     core::check(observed[c] > 0, "mle",
                 "category '" + start.categories[c].name + "' has no element");
   }
+  for (std::size_t k = parameters; k < p; ++k)
+    core::check(observed[k] > 0, "mle",
+                "shape class " + std::to_string(k - parameters) + " has no element");
   MleResult r;
   r.observed = observed;
   r.theta = theta_of(start);
   r.status.assign(p, model::ParameterStatus::free);
   r.standard_errors.assign(p, std::numeric_limits<double>::quiet_NaN());
-  // Bands without an observed pair: γ = 0 (the likelihood increases without bound as γ → 0).
+  r.penalised.assign(p, false);
+  // Free: the class weights instead of the β where there are classes (β_c fixed: the classes'
+  // intensities β_c w_k carry the category's). Bands without an observed pair: γ = 0 (the
+  // likelihood increases without bound as γ → 0).
   std::vector<std::size_t> free;
   for (std::size_t k = 0; k < p; ++k) {
-    if (k >= categories && observed[k] <= 0) {
+    if (k < categories && classes) {
+      r.status[k] = model::ParameterStatus::fixed;
+    } else if (k >= categories && k < parameters && observed[k] <= 0) {
       r.theta[k] = -std::numeric_limits<double>::infinity();
       r.status[k] = model::ParameterStatus::boundary;
     } else {
       free.push_back(k);
     }
   }
-  // No interaction parameter: the Poisson MLE in closed form.
-  if (p == categories) {
+  // No interaction parameter: the Poisson MLE in closed form, β_c = n_c / |W|, w_k = n_k / n_c.
+  if (parameters == categories) {
     for (std::size_t c = 0; c < categories; ++c) {
       r.theta[c] = std::log(observed[c] / window.measure());
       r.standard_errors[c] = 1.0 / std::sqrt(observed[c]);
-      r.expected.push_back(observed[c]);
-      r.expected_error.push_back(0.0);
+      r.status[c] = model::ParameterStatus::free;
     }
+    for (std::size_t k = parameters; k < p; ++k) {
+      const std::size_t c = static_cast<std::size_t>(start.shape_classes[k - parameters].category);
+      r.theta[k] = std::log(observed[k] / observed[c]);
+      r.standard_errors[k] = std::sqrt(1.0 / observed[k] - 1.0 / observed[c]);
+    }
+    r.expected = observed;
+    r.expected_error.assign(p, 0.0);
     r.converged = true;
     return r;
   }
+  const Newton newton(observed, free, categories, parameters, options);
+  r.tolerance = convergence_tolerance(options.significance, free.size());
   model::ShapeProcessModel model = start;
-  const Eigen::Index n = static_cast<Eigen::Index>(free.size());
-  Eigen::MatrixXd information(n, n);
+  bool rough = true;
+  struct Iterate {
+    std::vector<double> theta, expected, expected_error;
+    double worst_z = std::numeric_limits<double>::infinity();
+  } best;
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
-    MleOptions round = options;
-    round.seed = options.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
-    const StatisticsMoments m = statistics_moments(model, window, round);
+    ChainsSetting setting = options.sampling;
+    setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
+    if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
+    const StatisticsMoments m = statistics_moments(model, window, setting);
     r.expected = m.mean;
     r.expected_error = m.standard_error;
-    Eigen::VectorXd gap(n);
-    double worst = 0.0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const std::size_t k = free[static_cast<std::size_t>(i)];
-      gap[i] = observed[k] - m.mean[k];
-      const double se = std::max(m.standard_error[k], 1e-9);
-      worst = std::max(worst, std::abs(gap[i]) / se);
-      for (Eigen::Index j = 0; j < n; ++j) {
-        information(i, j) = m.covariance[k * p + free[static_cast<std::size_t>(j)]];
+    const Gap g = newton.gap(m, r.theta);
+    if (options.progress) options.progress(r.iterations, g.worst_z);
+    if (g.worst_z < best.worst_z) best = {r.theta, m.mean, m.standard_error, g.worst_z};
+    if (g.worst_z <= r.tolerance) {
+      if (rough) {
+        rough = false;  // within tolerance at a quarter of the precision: check at full length
+        continue;
       }
-    }
-    if (options.progress) options.progress(r.iterations, worst);
-    const Eigen::LDLT<Eigen::MatrixXd> solver(information + 1e-9 * Eigen::MatrixXd::Identity(n, n));
-    if (worst <= options.tolerance) {
       r.converged = true;
-      const Eigen::MatrixXd inverse = solver.solve(Eigen::MatrixXd::Identity(n, n));
-      for (Eigen::Index i = 0; i < n; ++i) {
-        r.standard_errors[free[static_cast<std::size_t>(i)]] =
-            std::sqrt(std::max(0.0, inverse(i, i)));
-      }
+      newton.standard_errors(g, r.standard_errors);
       break;
     }
-    Eigen::VectorXd step = solver.solve(gap);
-    const double largest = step.cwiseAbs().maxCoeff();
-    if (!(largest <= options.max_step)) step *= options.max_step / largest;  // also NaN: no step
-    if (!step.allFinite()) step.setZero();
-    for (Eigen::Index i = 0; i < n; ++i) r.theta[free[static_cast<std::size_t>(i)]] += step[i];
+    const bool last =
+        r.iterations == options.max_iterations ||
+        std::chrono::duration<double>(Clock::now() - clock).count() > options.max_seconds;
+    if (last) break;  // θ stays where the reported expectations were estimated
+    r.theta = newton.reweighted_steps(m, g, r.theta);
   }
   r.iterations = std::min(r.iterations, options.max_iterations);
+  if (!r.converged) {  // the iterate closest to the exemplar, not the last one
+    r.theta = best.theta;
+    r.expected = best.expected;
+    r.expected_error = best.expected_error;
+  }
+  for (std::size_t k : free) r.penalised[k] = newton.pairs_moved(k, r.theta) >= kNotablyMoved;
+  r.seconds = std::chrono::duration<double>(Clock::now() - clock).count();
   return r;
 }
 
@@ -205,6 +309,27 @@ model::ShapeProcessModel with_estimates(model::ShapeProcessModel model, const Ml
       a.status[band] = mle.status[k];
       a.gamma_standard_errors[band] = a.gammas[band] * mle.standard_errors[k];
     }
+  }
+  // With shape classes: β_c ← β_c Σ w, w ← w / Σ w over the category's classes; the standard
+  // error of log β_c from the classes' (their covariances neglected).
+  const std::size_t parameters = static_cast<std::size_t>(interaction.parameter_count());
+  for (std::size_t c = 0; c < model.categories.size(); ++c) {
+    double total = 0.0, variance = 0.0;
+    for (const model::ShapeClass& k : model.shape_classes)
+      if (k.category == static_cast<int>(c)) total += k.weight;
+    if (total <= 0) continue;
+    for (std::size_t k = 0; k < model.shape_classes.size(); ++k) {
+      model::ShapeClass& shape_class = model.shape_classes[k];
+      if (shape_class.category != static_cast<int>(c)) continue;
+      const double share = shape_class.weight / total;
+      const double se = mle.standard_errors[parameters + k];
+      variance += share * share * se * se;
+      shape_class.weight = share;
+    }
+    model::CategoryParameters& category = model.categories[c];
+    category.beta *= total;
+    category.beta_status = mle.converged ? model::ParameterStatus::free : category.beta_status;
+    category.beta_standard_error = category.beta * std::sqrt(variance);
   }
   return model;
 }

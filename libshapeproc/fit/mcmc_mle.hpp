@@ -5,56 +5,58 @@
 // model reproduce the exemplar's counts by construction. Newton steps
 //     θ ← θ + Cov_θ[t]⁻¹ (t(z) − E_θ[t]),
 // with E_θ[t] and Cov_θ[t] estimated from chains of the project's sampler on the exemplar's
-// window, damped so that no component moves by more than `max_step`; the fit stops when every
-// free component of t(z) − E_θ[t] is within `tolerance` Monte Carlo standard errors.
+// window (monte_carlo_moments.hpp), damped so that no component moves by more than `max_step`.
+// Between simulations the Newton steps continue on the last sample reweighted to the new θ while
+// its effective size stays above half (Geyer & Thompson 1992), so a simulation serves several
+// steps. The first simulations are short (a quarter of the steps) until the gaps are within the
+// tolerance at their precision; the fit stops when no free component of t(z) − E_θ[t] differs
+// significantly from 0 in a full-length simulation (MleOptions::significance).
 // Bands without an observed pair stay at γ = 0 (status boundary); a model without interaction
 // parameters has the closed form β_c = n_c / |W|.
-//
-// This is the estimator's core; its use by `fit --estimator mle` and its validation on the
-// shipped exemplars are issue 17's remaining work.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include "libshapeproc/fit/monte_carlo_moments.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
 
 struct MleOptions {
-  int chains = 4;
-  int threads = 0;  // 0: one per core
-  std::uint64_t seed = 1;
-  long long burn_in = 20000;      // steps of each chain before observations count
-  long long steps = 100000;       // steps of each chain after the burn-in
-  long long observe_every = 100;  // steps between observations of t(x)
+  ChainsSetting sampling;  // the chains of each iteration
   int max_iterations = 30;
-  double tolerance = 2.0;  // |t(z) − E_θ[t]| in Monte Carlo standard errors, every component
-  double max_step = 1.0;   // largest change of one component of θ per iteration
+  // The fit has converged when no component of t(z) − E_θ[t] differs from 0 at this level,
+  // judged on its Monte Carlo standard error, two-sided and Bonferroni-corrected over the free
+  // components (5%: |z| ≤ 1.96 for one component, ≤ 3.2 for 33): a rule on the largest of
+  // many |z| that a fit exactly at the MLE passes with probability 1 − significance.
+  double significance = 0.05;
+  double max_step = 1.0;  // largest change of one component of θ per Newton step
+  // Standard deviation σ of the half-normal prior on attraction: log γ > 0 costs
+  // (log γ)² / (2σ²) in the log-likelihood, so that a band with a handful of pairs cannot fit
+  // strong attraction; 0 = no penalty. Inhibition (log γ < 0) is not penalised.
+  double attraction_prior_sd = 1.5;
+  double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
   // Called after each iteration with its number and the largest |z| of the gaps. May be empty.
   std::function<void(int iteration, double worst_z)> progress;
 };
 
-// Monte Carlo moments of t(X) under a model on a domain.
-struct StatisticsMoments {
-  std::vector<double> mean;
-  std::vector<double> standard_error;  // of the mean, from batch means over the chains
-  std::vector<double> covariance;      // row-major, parameters x parameters
-  int observations = 0;
-};
-
-StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
-                                     const geometry::Domain& domain, const MleOptions& options);
-
 struct MleResult {
-  std::vector<double> theta;            // by θ index; −∞ for bands on the boundary
+  // By θ index; −∞ for bands on the boundary. Without convergence: the iterate whose
+  // expectations came closest to the exemplar's statistics (smallest largest |z|).
+  std::vector<double> theta;
   std::vector<double> standard_errors;  // of θ, from the inverse Monte Carlo Fisher information
   std::vector<model::ParameterStatus> status;
   std::vector<double> observed;        // t(z)
   std::vector<double> expected;        // E_θ̂[t] at the last iteration
   std::vector<double> expected_error;  // its Monte Carlo standard error
+  double tolerance = 0.0;              // the largest |z| accepted (convergence_tolerance)
+  // θ indices where the attraction prior holds the band's expected pairs half a pair or more
+  // below the exemplar's count.
+  std::vector<bool> penalised;
+  double seconds = 0.0;
   int iterations = 0;
   bool converged = false;
 };
@@ -62,6 +64,10 @@ struct MleResult {
 // The MLE of `model`'s parameters (its thresholds and shapes fixed; its β and γ the start) for
 // the observed statistics t(z) on `window`. Throws core::ArgumentError when `observed` has the
 // wrong size or a category has no element.
+// The |z| up to which the largest of `components` gaps counts as Monte Carlo noise at level
+// `significance`: the two-sided normal quantile at significance / components.
+double convergence_tolerance(double significance, std::size_t components);
+
 MleResult maximise_likelihood(const model::ShapeProcessModel& model, const geometry::Domain& window,
                               const std::vector<double>& observed, const MleOptions& options);
 

@@ -229,6 +229,7 @@ std::string model_to_json(const ShapeProcessModel& model) {
   json shapes = json::array();
   for (const ModelShape& s : model.shapes) {
     json entry = {{"category", s.category}, {"geometry", shape_json(s.shape)}};
+    if (s.shape_class >= 0) entry["class"] = s.shape_class;
     if (!s.shape.name.empty()) entry["name"] = s.shape.name;
     shapes.push_back(entry);
   }
@@ -246,6 +247,12 @@ std::string model_to_json(const ShapeProcessModel& model) {
                    {"categories", categories},
                    {"interaction", interaction},
                    {"shapes", shapes}};
+  if (!model.shape_classes.empty()) {
+    json classes = json::array();
+    for (const model::ShapeClass& c : model.shape_classes)
+      classes.push_back({{"category", c.category}, {"weight", c.weight}, {"label", c.label}});
+    document["shape_classes"] = classes;
+  }
   if (!model.fit_json.empty()) document["fit"] = json::parse(model.fit_json);
   return document.dump(2) + "\n";
 }
@@ -395,10 +402,23 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     shape.shape =
         r.shape(r.field(shapes[s], where, "geometry"), where + ".geometry", model.dimension);
     if (shapes[s].contains("name")) shape.shape.name = r.text(shapes[s]["name"], where + ".name");
+    if (shapes[s].contains("class"))
+      shape.shape_class = r.integer(shapes[s]["class"], where + ".class");
     // Shapes are stored centred on their bounding box; hand-written ones are centred here.
     const geometry::Box3 box = geometry::bounding_box(shape.shape);
     if (!box.isEmpty()) geometry::translate(shape.shape, -box.center());
     model.shapes.push_back(std::move(shape));
+  }
+  if (document.contains("shape_classes")) {
+    const json& classes = r.array(document["shape_classes"], "shape_classes");
+    for (std::size_t k = 0; k < classes.size(); ++k) {
+      const std::string where = "shape_classes[" + std::to_string(k) + "]";
+      model::ShapeClass c;
+      c.category = r.integer(r.field(classes[k], where, "category"), where + ".category");
+      c.weight = r.number(r.field(classes[k], where, "weight"), where + ".weight");
+      if (classes[k].contains("label")) c.label = r.text(classes[k]["label"], where + ".label");
+      model.shape_classes.push_back(c);
+    }
   }
   if (document.contains("fit")) model.fit_json = document["fit"].dump();
   try {

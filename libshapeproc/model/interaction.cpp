@@ -44,6 +44,9 @@ Interaction::Interaction(const ShapeProcessModel& model)
         static_cast<int>(pairs_.size());
     pairs_.push_back(std::move(pair));
   }
+  classes_ = static_cast<int>(model.shape_classes.size());
+  if (classes_ > 0)
+    for (const ModelShape& shape : model.shapes) class_of_shape_.push_back(shape.shape_class);
 }
 
 int Interaction::band(int ca, int cb, int axis, double distance) const {

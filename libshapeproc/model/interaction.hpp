@@ -22,6 +22,15 @@ class Interaction {
 
   int category_count() const { return categories_; }
   int parameter_count() const { return parameters_; }
+  // The sufficient statistics t(x): one per θ parameter (elements per category, pairs per band),
+  // then the element count of each shape class (none when the model has no classes).
+  int shape_class_count() const { return static_cast<int>(class_of_shape_.empty() ? 0 : classes_); }
+  int statistic_count() const { return parameters_ + shape_class_count(); }
+  // Index in t(x) of the class count a shape adds to, or -1 when the model has no classes.
+  int class_statistic(int shape) const {
+    return class_of_shape_.empty() ? -1
+                                   : parameters_ + class_of_shape_[static_cast<std::size_t>(shape)];
+  }
   // Largest δ_K of any pair (0 when nothing interacts).
   double range() const { return range_; }
   bool interacts(int ca, int cb) const { return pair_of(ca, cb) >= 0; }
@@ -72,6 +81,8 @@ class Interaction {
 
   int categories_ = 0;
   int parameters_ = 0;
+  int classes_ = 0;
+  std::vector<int> class_of_shape_;  // by model shape; empty without shape classes
   double range_ = 0.0;
   std::vector<int> pair_index_;  // categories x categories -> index into pairs_ or -1
   std::vector<Pair> pairs_;

@@ -156,10 +156,32 @@ void validate(const ShapeProcessModel& model) {
     const std::string where = "shapes[" + std::to_string(s) + "]";
     if (shape.category < 0 || shape.category >= categories)
       fail(where + ".category", "out of range");
+    const int classes = static_cast<int>(model.shape_classes.size());
+    if (classes == 0 && shape.shape_class != -1)
+      fail(where + ".class", "names a class but the model has no shape classes");
+    if (classes > 0) {
+      if (shape.shape_class < 0 || shape.shape_class >= classes)
+        fail(where + ".class", "out of range");
+      else if (model.shape_classes[static_cast<std::size_t>(shape.shape_class)].category !=
+               shape.category)
+        fail(where + ".class", "belongs to another category");
+    }
     const int d = geometry::dimension(shape.shape);
     if (d != 0 && d != model.dimension)
       fail(where, "a " + std::to_string(d) + "D shape in a " + std::to_string(model.dimension) +
                       "D model");
+  }
+  if (!model.shape_classes.empty() && model.shapes.empty())
+    fail("shape_classes", "a point model has no shape classes");
+  for (std::size_t k = 0; k < model.shape_classes.size(); ++k) {
+    const ShapeClass& c = model.shape_classes[k];
+    const std::string where = "shape_classes[" + std::to_string(k) + "]";
+    if (c.category < 0 || c.category >= categories) fail(where + ".category", "out of range");
+    if (!(std::isfinite(c.weight) && c.weight > 0))
+      fail(where + ".weight", "must be finite and > 0, got " + number(c.weight));
+    bool any = false;
+    for (const ModelShape& s : model.shapes) any = any || s.shape_class == static_cast<int>(k);
+    if (!any) fail(where, "holds no shape");
   }
   if (!model.shapes.empty()) {
     for (int c = 0; c < categories; ++c) {

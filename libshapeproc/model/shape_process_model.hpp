@@ -60,6 +60,18 @@ struct MeasurementSettings {
 struct ModelShape {
   geometry::Shape shape;  // local coordinates, bounding-box centre at the origin
   int category = 0;
+  int shape_class = -1;  // index into ShapeProcessModel::shape_classes; -1 when there are none
+};
+
+// Shapes of one category that the model counts together: shapes identical up to translation, or
+// a group of them by size (fit/shape_classes.hpp). A class's intensity is β_c w, shared equally
+// by its shapes, so that the class counts are sufficient statistics and samples keep the
+// exemplar's mix of shapes. Fitted models have weights summing to 1 over a category's classes,
+// so that β_c stays the category's intensity (and `edit --beta` scales every class of it).
+struct ShapeClass {
+  int category = 0;
+  double weight = 1.0;  // > 0; the class's share of β_c
+  std::string label;    // how the class was formed ("identical", "size 2 of 4"), may be empty
 };
 
 struct ShapeProcessModel {
@@ -69,7 +81,10 @@ struct ShapeProcessModel {
   std::vector<CategoryParameters> categories;
   std::vector<PairInteraction> interactions;  // pairs not listed do not interact (Γ = 1)
   std::vector<ModelShape> shapes;             // empty for point patterns
-  std::string fit_json;                       // provenance of the fit, a JSON object (may be empty)
+  // Empty: every shape of a category is equally likely (one class per category). Otherwise every
+  // shape names its class.
+  std::vector<ShapeClass> shape_classes;
+  std::string fit_json;  // provenance of the fit, a JSON object (may be empty)
 
   // Largest δ_K over every pair and axis: beyond it no pair interacts.
   double interaction_range() const;

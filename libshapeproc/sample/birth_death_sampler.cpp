@@ -18,6 +18,39 @@ namespace {
 constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
 }  // namespace
 
+namespace {
+
+// Per category, the cumulative probabilities of its shapes under the model's shape classes
+// (empty lists without classes), and the sum of its classes' weights in `weight_sum`. Drawing a
+// birth's shape from them and using β_c Σ w in the acceptance ratio samples the density with
+// class intensities β_c w_k.
+std::vector<std::vector<double>> shape_probabilities(const model::ShapeProcessModel& model,
+                                                     const std::vector<std::vector<int>>& shapes_of,
+                                                     std::vector<double>& weight_sum) {
+  weight_sum.assign(shapes_of.size(), 1.0);
+  std::vector<std::vector<double>> cumulative(shapes_of.size());
+  if (model.shape_classes.empty()) return cumulative;
+  std::vector<int> class_size(model.shape_classes.size(), 0);
+  for (const model::ModelShape& s : model.shapes)
+    ++class_size[static_cast<std::size_t>(s.shape_class)];
+  for (std::size_t c = 0; c < shapes_of.size(); ++c) {
+    double total = 0.0;
+    for (int s : shapes_of[c]) {
+      const std::size_t k =
+          static_cast<std::size_t>(model.shapes[static_cast<std::size_t>(s)].shape_class);
+      total += model.shape_classes[k].weight / class_size[k];
+      cumulative[c].push_back(total);
+    }
+    for (double& p : cumulative[c]) p /= total;
+    weight_sum[c] = 0.0;
+    for (const model::ShapeClass& k : model.shape_classes)
+      if (k.category == static_cast<int>(c)) weight_sum[c] += k.weight;
+  }
+  return cumulative;
+}
+
+}  // namespace
+
 ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                                          geometry::Domain domain, SamplerOptions options)
     : model_(model), domain_(std::move(domain)), options_(options) {
@@ -53,7 +86,10 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
           static_cast<int>(s));
     }
   }
-  for (const auto& c : model_.categories) log_beta_.push_back(std::log(c.beta));
+  std::vector<double> weight_sum;
+  shape_cumulative_ = shape_probabilities(model_, shapes_of_, weight_sum);
+  for (std::size_t c = 0; c < model_.categories.size(); ++c)
+    log_beta_.push_back(std::log(model_.categories[c].beta * weight_sum[c]));
   log_measure_categories_ = std::log(domain_.measure()) + std::log(static_cast<double>(categories));
   shift_radius_ = options_.shift_radius > 0   ? options_.shift_radius
                   : interaction_->range() > 0 ? 0.5 * interaction_->range()
@@ -91,7 +127,14 @@ class ShapeProcessSampler::Chain {
       xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
     xi.category = static_cast<int>(random_.index(s_.shapes_of_.size()));
     const auto& shapes = s_.shapes_of_[static_cast<std::size_t>(xi.category)];
-    xi.shape = shapes[random_.index(shapes.size())];
+    const auto& cumulative = s_.shape_cumulative_[static_cast<std::size_t>(xi.category)];
+    if (cumulative.empty()) {
+      xi.shape = shapes[random_.index(shapes.size())];
+    } else {  // shapes in proportion to their class's weight (the birth ratio is unchanged)
+      const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), random_.uniform());
+      xi.shape =
+          shapes[std::min(shapes.size() - 1, static_cast<std::size_t>(at - cumulative.begin()))];
+    }
     const double log_lambda =
         s_.log_beta_[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
     const double log_ratio = log_lambda + s_.log_measure_categories_ - std::log(n + 1.0);

@@ -94,8 +94,11 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   std::unique_ptr<const model::Interaction> interaction_;
   std::unique_ptr<const geometry::PairMeasurer> measurer_;
   std::vector<std::vector<int>> shapes_of_;  // per category
-  std::vector<double> log_beta_;             // per category
-  double log_measure_categories_ = 0.0;      // log(|D| C)
+  // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
+  // weight shared equally by its shapes); empty: its shapes are equally likely.
+  std::vector<std::vector<double>> shape_cumulative_;
+  std::vector<double> log_beta_;         // per category
+  double log_measure_categories_ = 0.0;  // log(|D| C)
   double shift_radius_ = 0.0;
   double reach_ = 0.0;  // farthest apart two interacting reference positions can be
 };

@@ -15,7 +15,7 @@ Configuration::Configuration(const model::Interaction& interaction,
       measurer_(measurer),
       grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
       period_(domain.period()) {
-  statistics_.assign(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
+  statistics_.assign(static_cast<std::size_t>(interaction.statistic_count()), 0.0);
   shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
 }
 
@@ -84,12 +84,17 @@ void Configuration::add(const Element& e, double local, const std::vector<Link>&
   alive_.push_back(slot);
   grid_.insert(slot, e.position);
   statistics_[static_cast<std::size_t>(e.category)] += 1.0;
+  if (const int k = interaction_.class_statistic(e.shape); k >= 0)
+    statistics_[static_cast<std::size_t>(k)] += 1.0;
   link(slot, local, links);
 }
 
 void Configuration::remove(int slot) {
   grid_.remove(slot, elements_[static_cast<std::size_t>(slot)].position);
-  statistics_[static_cast<std::size_t>(elements_[static_cast<std::size_t>(slot)].category)] -= 1.0;
+  const Element& gone = elements_[static_cast<std::size_t>(slot)];
+  statistics_[static_cast<std::size_t>(gone.category)] -= 1.0;
+  if (const int k = interaction_.class_statistic(gone.shape); k >= 0)
+    statistics_[static_cast<std::size_t>(k)] -= 1.0;
   unlink(slot);
   const int rank = position_in_alive_[static_cast<std::size_t>(slot)];
   SHAPEPROC_ASSERT(rank >= 0, "only a live element is removed");

@@ -59,8 +59,9 @@ class Configuration {
 
   std::vector<Element> elements() const;
 
-  // The sufficient statistics t(x) of the configuration, by θ index: elements per category, then
-  // pairs per interaction parameter (each pair once). Kept up to date by add, remove and move.
+  // The sufficient statistics t(x) of the configuration (Interaction::statistic_count): by θ
+  // index elements per category, then pairs per interaction parameter (each pair once), then
+  // elements per shape class. Kept up to date by add, remove and move.
   const std::vector<double>& statistics() const { return statistics_; }
 
  private:

@@ -157,9 +157,9 @@ void FitFlags::add_to(CLI::App& command) {
 
 fit::MleOptions FitFlags::mle_options() const {
   fit::MleOptions o;
-  o.chains = mle_chains;
-  o.steps = mle_steps;
-  o.seed = mle_seed;
+  o.sampling.chains = mle_chains;
+  o.sampling.steps = mle_steps;
+  o.sampling.seed = mle_seed;
   return o;
 }
 

@@ -34,9 +34,9 @@ struct FitFlags {
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
   std::string estimator = "mpl";
-  int mle_chains = fit::MleOptions{}.chains;
-  long long mle_steps = fit::MleOptions{}.steps;
-  std::uint64_t mle_seed = fit::MleOptions{}.seed;
+  int mle_chains = fit::MleOptions{}.sampling.chains;
+  long long mle_steps = fit::MleOptions{}.sampling.steps;
+  std::uint64_t mle_seed = fit::MleOptions{}.sampling.seed;
 
   void add_to(CLI::App& command);
   fit::FitOptions options() const;  // throws core::UsageError

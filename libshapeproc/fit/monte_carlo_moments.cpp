@@ -1,0 +1,119 @@
+#include "libshapeproc/fit/monte_carlo_moments.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "libshapeproc/core/check.hpp"
+#include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "libshapeproc/synthesis/run_chains.hpp"
+
+namespace shapeproc::fit {
+
+namespace {
+
+constexpr int kBatchesPerChain = 5;
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+Eigen::Map<const RowMatrix> sample_matrix(const StatisticsMoments& m) {
+  return {m.samples.data(), m.observations, m.parameters};
+}
+
+// Weighted mean and covariance of the rows of `t` (weights summing to 1).
+void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::VectorXd& weights,
+                      StatisticsMoments& m) {
+  const Eigen::VectorXd mean = t.transpose() * weights;
+  const RowMatrix centred = t.rowwise() - mean.transpose();
+  const double correction = 1.0 / std::max(1e-12, 1.0 - weights.squaredNorm());  // unbiased
+  const Eigen::MatrixXd covariance =
+      correction * (centred.transpose() * weights.asDiagonal() * centred);
+  m.mean.assign(mean.data(), mean.data() + mean.size());
+  m.covariance.assign(covariance.data(), covariance.data() + covariance.size());  // symmetric
+}
+
+// Standard errors of the mean from batch means: each chain's kept observations in
+// kBatchesPerChain consecutive batches.
+std::vector<double> batch_standard_errors(const std::vector<std::vector<double>>& batch_means,
+                                          std::size_t p) {
+  const double batches = static_cast<double>(batch_means.size());
+  std::vector<double> se(p, 0.0);
+  for (std::size_t k = 0; k < p; ++k) {
+    double bm = 0.0, bv = 0.0;
+    for (const auto& b : batch_means) bm += b[k] / batches;
+    for (const auto& b : batch_means) bv += (b[k] - bm) * (b[k] - bm) / std::max(1.0, batches - 1);
+    se[k] = std::sqrt(bv / batches);
+  }
+  return se;
+}
+
+}  // namespace
+
+StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
+                                     const geometry::Domain& domain, const ChainsSetting& setting) {
+  core::check(
+      setting.chains >= 1 && setting.steps > 0 && setting.observe_every > 0 && setting.burn_in >= 0,
+      "mle", "chains, steps and the observation interval must be positive");
+  sample::SamplerOptions sampler_options;
+  sampler_options.iterations = setting.burn_in + setting.steps;
+  sampler_options.observe_every = setting.observe_every;
+  const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
+  synthesis::ChainOptions chains;
+  chains.chains = setting.chains;
+  chains.threads = setting.threads;
+  chains.seed = setting.seed;
+  const std::vector<synthesis::SynthesisResult> results = synthesis::run_chains(sampler, chains);
+
+  StatisticsMoments m;
+  const std::size_t p = static_cast<std::size_t>(model::Interaction(model).statistic_count());
+  m.parameters = static_cast<int>(p);
+  std::vector<std::vector<double>> batch_means;
+  const std::size_t skip = static_cast<std::size_t>(setting.burn_in / setting.observe_every);
+  for (const synthesis::SynthesisResult& result : results) {
+    const std::size_t kept =
+        result.observations.size() > skip ? result.observations.size() - skip : 0;
+    const std::size_t per_batch = std::max<std::size_t>(1, kept / kBatchesPerChain);
+    std::vector<double> batch(p, 0.0);
+    std::size_t in_batch = 0;
+    for (std::size_t i = skip; i < result.observations.size(); ++i) {
+      const std::vector<double>& t = result.observations[i];
+      m.samples.insert(m.samples.end(), t.begin(), t.end());
+      ++m.observations;
+      for (std::size_t k = 0; k < p; ++k) batch[k] += t[k];
+      if (++in_batch == per_batch) {
+        for (double& b : batch) b /= static_cast<double>(per_batch);
+        batch_means.push_back(batch);
+        batch.assign(p, 0.0);
+        in_batch = 0;
+      }
+    }
+  }
+  core::check(m.observations >= 2, "mle",
+              "too few observations: raise the steps or lower the observation interval");
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(m.observations, 1.0 / m.observations);
+  weighted_moments(sample_matrix(m), uniform, m);
+  m.standard_error = batch_standard_errors(batch_means, p);
+  return m;
+}
+
+StatisticsMoments reweighted(const StatisticsMoments& sample, const std::vector<double>& delta,
+                             double& effective_share) {
+  core::check(delta.size() == static_cast<std::size_t>(sample.parameters), "mle",
+              "the parameter change has the wrong size");
+  const Eigen::Map<const RowMatrix> t = sample_matrix(sample);
+  const Eigen::Map<const Eigen::VectorXd> d(delta.data(), sample.parameters);
+  Eigen::VectorXd log_w = t * d;
+  log_w.array() -= log_w.maxCoeff();
+  Eigen::VectorXd w = log_w.array().exp();
+  w /= w.sum();
+  effective_share = 1.0 / (w.squaredNorm() * sample.observations);
+  StatisticsMoments m;
+  m.parameters = sample.parameters;
+  m.observations = sample.observations;
+  m.standard_error = sample.standard_error;
+  weighted_moments(t, w, m);
+  return m;
+}
+
+}  // namespace shapeproc::fit

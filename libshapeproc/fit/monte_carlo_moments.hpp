@@ -1,0 +1,44 @@
+// Monte Carlo moments of the sufficient statistics t(X) of a shape-process model: chains of the
+// project's sampler on a domain, their observations of t after the burn-in, means with batch-mean
+// standard errors, and importance reweighting of the same observations to a nearby θ
+// (Geyer & Thompson 1992): for θ' = θ + δ the weights w_j ∝ exp(δ · t_j) turn the sample at θ
+// into estimates at θ', valid while the effective sample size stays a large share of the sample.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::fit {
+
+struct ChainsSetting {
+  int chains = 4;
+  int threads = 0;  // 0: one per core
+  std::uint64_t seed = 1;
+  long long burn_in = 20000;      // steps of each chain before observations count
+  long long steps = 50000;        // steps of each chain after the burn-in
+  long long observe_every = 100;  // steps between observations of t(x)
+};
+
+// Observations of t(X) and their moments.
+struct StatisticsMoments {
+  int parameters = 0;
+  std::vector<double> samples;         // row-major, observations x parameters
+  std::vector<double> mean;            // by θ index
+  std::vector<double> standard_error;  // of the mean, from batch means over the chains
+  std::vector<double> covariance;      // row-major, parameters x parameters
+  int observations = 0;
+};
+
+StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
+                                     const geometry::Domain& domain, const ChainsSetting& setting);
+
+// The sample's mean and covariance reweighted to θ + δ (δ by θ index, zero where unchanged), and
+// the effective sample size as a share of the observations (1 for δ = 0). Standard errors are not
+// reweighted: they stay the sample's.
+StatisticsMoments reweighted(const StatisticsMoments& sample, const std::vector<double>& delta,
+                             double& effective_share);
+
+}  // namespace shapeproc::fit
