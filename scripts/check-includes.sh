@@ -16,6 +16,7 @@ declare -A allowed=(
   [sample]="core geometry model synthesis"
   [metrics]="core geometry"
   [report]="core geometry model synthesis render io metrics"
+  [evaluation]="core geometry model synthesis sample fit metrics"
 )
 status=0
 for dir in libshapeproc/*/; do

@@ -113,6 +113,8 @@ void assign_shape_classes(model::ShapeProcessModel& model, const geometry::Scene
   std::vector<int> uses(model.shapes.size(), 0);
   for (const geometry::Element& e : exemplar.elements) ++uses[static_cast<std::size_t>(e.shape)];
 
+  // One quantum for every shape (a scale-relative one would equate similar shapes).
+  ShapeKey key(1e-6 * std::max(1.0, exemplar.window.sizes().norm()));
   std::vector<model::ShapeClass> classes;
   std::vector<int> class_of(model.shapes.size(), -1);
   bool any_split = false;
@@ -125,7 +127,7 @@ void assign_shape_classes(model::ShapeProcessModel& model, const geometry::Scene
       if (model.shapes[s].category != category || uses[s] == 0) continue;
       const geometry::Shape& shape = model.shapes[s].shape;
       const auto [area, diagonal] = size_of(shape, dimension);
-      Identical& g = by_key[ShapeKey(1e-6 * std::max(1.0, diagonal)).of(shape)];
+      Identical& g = by_key[key.of(shape)];
       g.shapes.push_back(static_cast<int>(s));
       g.elements += uses[s];
       g.area = area;
@@ -137,9 +139,14 @@ void assign_shape_classes(model::ShapeProcessModel& model, const geometry::Scene
     // 2. Too many for the elements: size groups.
     bool supported = true;
     for (const Identical& g : groups) supported = supported && g.elements >= kMinElementsPerClass;
-    const int count = supported ? static_cast<int>(groups.size())
-                                : std::clamp(elements / kMinElementsPerClass, 1, kMaxSizeGroups);
-    const std::vector<std::vector<const Identical*>> cut = size_groups(groups, count, elements);
+    const int count = std::clamp(elements / kMinElementsPerClass, 1, kMaxSizeGroups);
+    std::vector<std::vector<const Identical*>> cut;
+    if (supported) {
+      std::sort(groups.begin(), groups.end(), smaller);
+      for (const Identical& g : groups) cut.push_back({&g});
+    } else {
+      cut = size_groups(groups, count, elements);
+    }
     const int first = static_cast<int>(classes.size());
     for (std::size_t k = 0; k < cut.size(); ++k) {
       int in_class = 0;

@@ -1,7 +1,7 @@
 // Shape classes of a fitted model (model::ShapeClass): the shapes of a category that its counts
 // hold together, so that samples keep the exemplar's mix of shapes.
 //   1. Shapes identical up to translation form a class (their geometry in local coordinates
-//      equal to a millionth of their extent).
+//      equal to a millionth of the exemplar window's diagonal).
 //   2. Where the category has more classes than its elements support (a class under
 //      kMinElementsPerClass elements), the identical-shape classes are grouped by size instead:
 //      ordered by bounding-box area (volume in 3D), then diagonal, and cut into

@@ -194,4 +194,19 @@ void validate(const ShapeProcessModel& model) {
   }
 }
 
+std::vector<std::string> statistic_names(const ShapeProcessModel& model) {
+  std::vector<std::string> names;
+  for (const CategoryParameters& c : model.categories) names.push_back("elements " + c.name);
+  for (std::size_t p = 0; p < model.interactions.size(); ++p) {
+    const PairInteraction& pair = model.interactions[p];
+    for (std::size_t i = 0; i < pair.axes.size(); ++i)
+      for (std::size_t k = 0; k < pair.axes[i].gammas.size(); ++k)
+        names.push_back("pairs " + std::to_string(p) + ", axis " + std::to_string(i) + ", band " +
+                        std::to_string(k + 1));
+  }
+  for (std::size_t k = 0; k < model.shape_classes.size(); ++k)
+    names.push_back("class " + std::to_string(k) + " (" + model.shape_classes[k].label + ")");
+  return names;
+}
+
 }  // namespace shapeproc::model

@@ -105,4 +105,9 @@ void validate(const ShapeProcessModel& model);
 
 const char* to_string(ParameterStatus status);
 
+// Names of the sufficient statistics t(x) in θ order (model/interaction.hpp): "elements NAME" per
+// category, "pairs P, axis I, band K" per band (pairs in the model's order), "class K (LABEL)" per
+// shape class.
+std::vector<std::string> statistic_names(const ShapeProcessModel& model);
+
 }  // namespace shapeproc::model

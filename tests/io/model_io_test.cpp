@@ -58,6 +58,15 @@ TEST(ModelFile, FitWriteReadRoundTrip) {
   EXPECT_EQ(geometry::primitive_count(back.shapes[3].shape),
             geometry::primitive_count(exemplar.shapes[3]));
   EXPECT_EQ(model_to_json(back), model_to_json(read_model(dir.file("m.json"))));
+  // Its crescents are of many sizes: size classes, kept by the file.
+  ASSERT_GE(fit.model.shape_classes.size(), 2u);
+  ASSERT_EQ(back.shape_classes.size(), fit.model.shape_classes.size());
+  for (std::size_t k = 0; k < back.shape_classes.size(); ++k) {
+    EXPECT_EQ(back.shape_classes[k].weight, fit.model.shape_classes[k].weight);
+    EXPECT_EQ(back.shape_classes[k].label, fit.model.shape_classes[k].label);
+  }
+  for (std::size_t s = 0; s < back.shapes.size(); ++s)
+    EXPECT_EQ(back.shapes[s].shape_class, fit.model.shapes[s].shape_class);
   // The plot is an SVG with one polar sector per axis half and band.
   const std::string svg = render::interaction_plot_svg(back);
   EXPECT_NE(svg.find("<svg"), std::string::npos);

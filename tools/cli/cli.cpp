@@ -79,6 +79,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add_info_command(app, action);
   add_convert_command(app, action, arguments);
   add_measure_command(app, action, arguments);
+  add_fidelity_command(app, action, arguments);
   add_fit_command(app, action, arguments);
   add_show_command(app, action);
   add_sample_command(app, action, arguments);

@@ -23,5 +23,6 @@ void add_edit_command(CLI::App& app, Action& action, const std::vector<std::stri
 void add_stats_command(CLI::App& app, Action& action);
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_fidelity_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 
 }  // namespace shapeproc::cli

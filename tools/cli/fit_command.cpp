@@ -140,9 +140,8 @@ void FitFlags::add_to(CLI::App& command) {
       ->capture_default_str();
   command
       .add_option("--estimator", estimator,
-                  "mpl (maximum pseudo-likelihood) or mle (then maximum likelihood by MCMC from "
-                  "the MPL fit; "
-                  "edge none or periodic; see docs/fit.md)")
+                  "mle (maximum likelihood by MCMC, started from the MPL fit; edge none or "
+                  "periodic) or mpl (maximum pseudo-likelihood alone, fast); see docs/fit.md")
       ->check(CLI::IsMember({"mpl", "mle"}))
       ->capture_default_str();
   command.add_option("--mle-chains", mle_chains, "MLE: chains per iteration")
@@ -204,7 +203,7 @@ nlohmann::json FitFlags::to_json() const {
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   auto args = std::make_shared<FitArguments>();
   CLI::App* command = app.add_subcommand(
-      "fit", "Fit the shape-process model to an exemplar (maximum log pseudo-likelihood)");
+      "fit", "Fit the shape-process model to an exemplar (maximum likelihood by MCMC)");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "model file (.json)")->required();
   args->fit.add_to(*command);

@@ -33,7 +33,7 @@ struct FitFlags {
   bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
-  std::string estimator = "mpl";
+  std::string estimator = "mle";
   int mle_chains = fit::MleOptions{}.sampling.chains;
   long long mle_steps = fit::MleOptions{}.sampling.steps;
   std::uint64_t mle_seed = fit::MleOptions{}.sampling.seed;

@@ -6,6 +6,8 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -41,6 +43,36 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
   return text;
 }
 
+// The maximum-likelihood fit's goodness of fit, as spatstat prints a fit: per statistic the
+// exemplar's value, the model's expectation ± its Monte Carlo standard error, and z.
+void print_goodness_of_fit(const model::ShapeProcessModel& model, const nlohmann::json& e,
+                           std::ostream& out) {
+  const std::vector<std::string> names = model::statistic_names(model);
+  const auto observed = e["observed"].get<std::vector<double>>();
+  const auto expected = e["expected"].get<std::vector<double>>();
+  const auto error = e["expected_standard_error"].get<std::vector<double>>();
+  const auto z = e["z"].get<std::vector<double>>();
+  std::vector<int> penalised;
+  if (e.contains("penalised")) penalised = e["penalised"].get<std::vector<int>>();
+  out << "\nmaximum likelihood (MCMC): "
+      << (e.value("converged", false) ? "converged" : "did not converge") << " in "
+      << e.value("iterations", 0) << " iteration(s), " << g(e.value("seconds", 0.0), 3)
+      << " s; largest |z| accepted " << g(e.value("tolerance", 0.0), 3) << "\n";
+  out << "  " << std::left << std::setw(34) << "statistic" << std::right << std::setw(10)
+      << "exemplar" << std::setw(22) << "model (mean ± se)" << std::setw(8) << "z" << '\n';
+  for (std::size_t k = 0; k < observed.size() && k < names.size() && k < expected.size(); ++k) {
+    if (observed[k] == 0 && expected[k] == 0) continue;  // bands held at γ = 0
+    const bool moved =
+        std::find(penalised.begin(), penalised.end(), static_cast<int>(k)) != penalised.end();
+    out << "  " << std::left << std::setw(34) << names[k] << std::right << std::setw(10)
+        << g(observed[k]) << std::setw(22) << (g(expected[k]) + " ± " + g(error[k], 2))
+        << std::setw(8) << g(z[k], 2) << (moved ? "  (attraction prior)" : "") << '\n';
+  }
+  if (!penalised.empty())
+    out << "  (attraction prior: the half-normal prior on log γ > 0 holds the band's expected "
+           "pairs half a pair or more below the exemplar's; docs/fit.md)\n";
+}
+
 }  // namespace
 
 void print_model_summary(const model::ShapeProcessModel& model, std::ostream& out) {
@@ -64,6 +96,18 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
     if (std::isfinite(c.beta_standard_error)) out << " ± " << g(c.beta_standard_error, 2);
     if (c.beta_status == model::ParameterStatus::unbounded) out << " (unbounded)";
     out << '\n';
+  }
+  if (!model.shape_classes.empty()) {
+    out << "\nshape classes (share of the category's intensity):\n";
+    for (std::size_t k = 0; k < model.shape_classes.size(); ++k) {
+      const model::ShapeClass& c = model.shape_classes[k];
+      int shapes = 0;
+      for (const model::ModelShape& s : model.shapes)
+        shapes += s.shape_class == static_cast<int>(k);
+      out << "  " << k << "  " << std::left << std::setw(16)
+          << model.categories[static_cast<std::size_t>(c.category)].name << std::right << " "
+          << std::setw(8) << g(c.weight, 3) << "  " << c.label << ", " << shapes << " shape(s)\n";
+    }
   }
   if (model.interactions.empty()) out << "\nno interaction: a Poisson process\n";
   for (std::size_t index = 0; index < model.interactions.size(); ++index) {
@@ -89,6 +133,7 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
       out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8)
           << '\n';
     }
+    if (fit.contains("estimator")) print_goodness_of_fit(model, fit["estimator"], out);
     if (fit.contains("quadrature")) {
       out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, "
           << fit["quadrature"].value("points", 0) << " points; edge " << fit.value("edge", "none")

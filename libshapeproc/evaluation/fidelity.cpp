@@ -1,0 +1,122 @@
+#include "libshapeproc/evaluation/fidelity.hpp"
+
+#include <algorithm>
+#include <boost/math/special_functions/gamma.hpp>
+#include <cmath>
+#include <limits>
+
+#include "libshapeproc/core/check.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/monte_carlo_moments.hpp"
+#include "libshapeproc/metrics/scene_statistics.hpp"
+#include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+
+namespace shapeproc::evaluation {
+
+namespace {
+
+constexpr int kCollisionOffsets = 256;  // g(r) is not used here: few Monte Carlo offsets
+
+// 1. The model's statistics on the exemplar's own window against the exemplar's.
+void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
+                      geometry::Boundary boundary, const FidelityOptions& options,
+                      FidelityReport& report) {
+  const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
+  fit::ChainsSetting setting;
+  setting.chains = options.chains;
+  setting.threads = options.threads;
+  setting.seed = options.seed;
+  setting.burn_in = options.burn_in;
+  setting.steps = options.steps;
+  setting.observe_every = std::max<long long>(1, options.steps / 100);
+  const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
+  const std::vector<double> observed = fit::observed_statistics(exemplar, model);
+  const std::vector<std::string> names = model::statistic_names(model);
+  const model::Interaction interaction(model);
+  for (std::size_t k = 0; k < observed.size(); ++k) {
+    StatisticCheck c;
+    c.name = k < names.size() ? names[k] : "statistic " + std::to_string(k);
+    c.exemplar = observed[k];
+    c.mean = m.mean[k];
+    c.standard_error = m.standard_error[k];
+    c.count =
+        k < model.categories.size() || k >= static_cast<std::size_t>(interaction.parameter_count());
+    const double gap = c.mean - c.exemplar;
+    c.z = gap == 0               ? 0.0
+          : c.standard_error > 0 ? gap / c.standard_error
+                                 : std::copysign(std::numeric_limits<double>::infinity(), gap);
+    double& worst = c.count ? report.worst_count_z : report.worst_pair_z;
+    worst = std::max(worst, std::abs(c.z));
+    report.own_window.push_back(c);
+  }
+}
+
+int colliding_pairs(const geometry::Scene& scene, geometry::Boundary boundary) {
+  if (scene.elements.size() < 2) return 0;
+  metrics::StatisticsOptions o;
+  o.measurement.periodic = boundary == geometry::Boundary::torus;
+  o.offset_samples = kCollisionOffsets;
+  return static_cast<int>(
+      metrics::compute_statistics(scene, o, core::Random(1)).collisions.pairs.size());
+}
+
+// 2. A larger output: density, collisions, shape-class mix.
+void check_output(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
+                  geometry::Boundary boundary, const FidelityOptions& options,
+                  FidelityReport& report) {
+  std::vector<double> sides;
+  for (int axis = 0; axis < exemplar.dimension; ++axis)
+    sides.push_back(options.scale * exemplar.window.sizes()[axis]);
+  const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
+  core::Random random(options.seed);
+  const sample::SampleResult output =
+      sample::sample_shape_process(model, domain, sample::SamplerOptions{}, random);
+  report.output_elements = static_cast<int>(output.scene.elements.size());
+  const double exemplar_measure = exemplar.window.sizes().head(exemplar.dimension).prod();
+  report.density_ratio =
+      (report.output_elements / domain.measure()) / (report.exemplar_elements / exemplar_measure);
+  report.exemplar_collisions = colliding_pairs(exemplar, boundary);
+  report.output_collisions = colliding_pairs(output.scene, geometry::Boundary::torus);
+
+  report.class_p_value = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t classes = model.shape_classes.size();
+  if (classes < 2 || report.output_elements == 0) return;
+  std::vector<double> in_exemplar(classes, 0.0), in_output(classes, 0.0);
+  for (const geometry::Element& e : exemplar.elements)
+    in_exemplar[static_cast<std::size_t>(
+        model.shapes[static_cast<std::size_t>(e.shape)].shape_class)] += 1;
+  for (const geometry::Element& e : output.scene.elements)
+    in_output[static_cast<std::size_t>(
+        model.shapes[static_cast<std::size_t>(e.shape)].shape_class)] += 1;
+  for (std::size_t k = 0; k < classes; ++k) {
+    const double expected =
+        report.output_elements * in_exemplar[k] / static_cast<double>(report.exemplar_elements);
+    if (expected > 0) report.class_chi_square += std::pow(in_output[k] - expected, 2) / expected;
+  }
+  report.class_degrees = static_cast<int>(classes) - 1;
+  report.class_p_value = chi_square_upper_tail(report.class_chi_square, report.class_degrees);
+}
+
+}  // namespace
+
+double chi_square_upper_tail(double x, int degrees) {
+  core::check(degrees >= 1, "chi_square_upper_tail", "degrees of freedom must be >= 1");
+  if (!(x > 0)) return 1.0;
+  return boost::math::gamma_q(0.5 * degrees, 0.5 * x);
+}
+
+FidelityReport check_fidelity(const geometry::Scene& exemplar,
+                              const model::ShapeProcessModel& model, geometry::Boundary boundary,
+                              const FidelityOptions& options) {
+  core::check(options.chains >= 2, "fidelity", "at least two chains are needed");
+  core::check_positive("fidelity", "the output scale", options.scale);
+  FidelityReport report;
+  report.exemplar_elements = static_cast<int>(exemplar.elements.size());
+  core::check(report.exemplar_elements > 0, "fidelity", "the exemplar has no element");
+  check_own_window(exemplar, model, boundary, options, report);
+  check_output(exemplar, model, boundary, options, report);
+  return report;
+}
+
+}  // namespace shapeproc::evaluation

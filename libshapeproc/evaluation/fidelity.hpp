@@ -1,0 +1,57 @@
+// Does a fitted model reproduce its exemplar? The checks of issue 17, for one exemplar:
+//   1. On the exemplar's own window and boundary, `chains` chains of the model: the mean of every
+//      sufficient statistic (elements per category, pairs per band, elements per shape class)
+//      against the exemplar's, in standard errors of that mean (batch means over the chains).
+//   2. One output of `scale` times each side on a torus, sampled to stationarity: its density
+//      against the exemplar's, its colliding pairs (shape distance 0), and a chi-square test of
+//      its shape-class counts against the exemplar's class shares.
+// scripts/fidelity.sh runs it over a folder (`shapeproc fidelity`).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::evaluation {
+
+struct FidelityOptions {
+  int chains = 50;
+  int threads = 0;  // 0: one per core
+  std::uint64_t seed = 1;
+  long long burn_in = 20000;  // steps of each own-window chain before it is observed
+  long long steps = 20000;    // steps of each own-window chain after the burn-in
+  double scale = 2.0;         // the output's sides, in exemplar sides
+};
+
+struct StatisticCheck {
+  std::string name;
+  double exemplar = 0.0, mean = 0.0, standard_error = 0.0;
+  double z = 0.0;      // (mean − exemplar) / standard error (0 when both agree exactly)
+  bool count = false;  // an element count (category or class), not a pair count
+};
+
+struct FidelityReport {
+  std::vector<StatisticCheck> own_window;
+  double worst_count_z = 0.0, worst_pair_z = 0.0;  // largest |z| of each kind
+  int exemplar_elements = 0, output_elements = 0;
+  double density_ratio = 0.0;                          // output density / exemplar density
+  int exemplar_collisions = 0, output_collisions = 0;  // colliding pairs
+  // Chi-square test of the output's class counts against the exemplar's shares (NaN p-value
+  // without shape classes).
+  double class_chi_square = 0.0, class_p_value = 0.0;
+  int class_degrees = 0;
+};
+
+// `boundary`: the exemplar's window as the fit used it (torus for the periodic edge treatment).
+FidelityReport check_fidelity(const geometry::Scene& exemplar,
+                              const model::ShapeProcessModel& model, geometry::Boundary boundary,
+                              const FidelityOptions& options);
+
+// Upper tail P(χ²_k ≥ x).
+double chi_square_upper_tail(double x, int degrees);
+
+}  // namespace shapeproc::evaluation

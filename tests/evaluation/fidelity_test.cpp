@@ -1,0 +1,50 @@
+#include "libshapeproc/evaluation/fidelity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libshapeproc/core/random.hpp"
+
+namespace shapeproc::evaluation {
+namespace {
+
+// Exact values: with 2 degrees of freedom the upper tail is exp(−x/2); with 1, erfc(√(x/2)).
+TEST(Fidelity, ChiSquareUpperTail) {
+  EXPECT_NEAR(chi_square_upper_tail(3.0, 2), std::exp(-1.5), 1e-14);
+  EXPECT_NEAR(chi_square_upper_tail(3.84, 1), std::erfc(std::sqrt(3.84 / 2)), 1e-14);
+  EXPECT_EQ(chi_square_upper_tail(0.0, 4), 1.0);
+}
+
+// A Poisson exemplar checked against its own closed-form fit: every count within 4 standard
+// errors over the chains, the output's density within 4 Poisson standard deviations of the
+// exemplar's, and no collisions among points.
+TEST(Fidelity, APoissonModelReproducesItsExemplar) {
+  geometry::Scene exemplar;
+  exemplar.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
+  exemplar.categories.push_back({"points"});
+  exemplar.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(7);
+  for (int i = 0; i < 60; ++i)
+    exemplar.elements.push_back(
+        {0, 0, geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0)});
+  model::ShapeProcessModel model;
+  model.categories.push_back({"points", 60.0 / 10000.0});
+  model.measurement.directions = 1;
+  FidelityOptions options;
+  options.chains = 8;
+  options.burn_in = 2000;
+  options.steps = 20000;
+  const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open, options);
+  ASSERT_EQ(r.own_window.size(), 1u);
+  EXPECT_EQ(r.own_window[0].exemplar, 60.0);
+  EXPECT_LT(r.worst_count_z, 4.0);
+  // The output has 4 exemplars' area: 240 expected, sd √240.
+  EXPECT_NEAR(r.output_elements, 240.0, 4 * std::sqrt(240.0));
+  EXPECT_NEAR(r.density_ratio, r.output_elements / 240.0, 1e-12);
+  EXPECT_EQ(r.output_collisions, 0);
+  EXPECT_TRUE(std::isnan(r.class_p_value));
+}
+
+}  // namespace
+}  // namespace shapeproc::evaluation
