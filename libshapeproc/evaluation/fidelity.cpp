@@ -20,8 +20,8 @@ constexpr int kCollisionOffsets = 256;  // g(r) is not used here: few Monte Carl
 
 // 1. The model's statistics on the exemplar's own window against the exemplar's.
 void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
-                      geometry::Boundary boundary, const FidelityOptions& options,
-                      FidelityReport& report) {
+                      geometry::Boundary boundary, geometry::EdgeTreatment edge,
+                      const FidelityOptions& options, FidelityReport& report) {
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
   fit::ChainsSetting setting;
   setting.chains = options.chains;
@@ -30,6 +30,11 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
   setting.burn_in = options.burn_in;
   setting.steps = options.steps;
   setting.observe_every = std::max<long long>(1, options.steps / 100);
+  if (edge == geometry::EdgeTreatment::border) {
+    const fit::BorderCondition border = fit::border_condition(exemplar, model);
+    setting.fixed = border.fixed;
+    setting.free_region = border.region;
+  }
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);
@@ -108,13 +113,13 @@ double chi_square_upper_tail(double x, int degrees) {
 
 FidelityReport check_fidelity(const geometry::Scene& exemplar,
                               const model::ShapeProcessModel& model, geometry::Boundary boundary,
-                              const FidelityOptions& options) {
+                              geometry::EdgeTreatment edge, const FidelityOptions& options) {
   core::check(options.chains >= 2, "fidelity", "at least two chains are needed");
   core::check_positive("fidelity", "the output scale", options.scale);
   FidelityReport report;
   report.exemplar_elements = static_cast<int>(exemplar.elements.size());
   core::check(report.exemplar_elements > 0, "fidelity", "the exemplar has no element");
-  check_own_window(exemplar, model, boundary, options, report);
+  check_own_window(exemplar, model, boundary, edge, options, report);
   check_output(exemplar, model, boundary, options, report);
   return report;
 }

@@ -1,5 +1,6 @@
 // Does a fitted model reproduce its exemplar? The checks of issue 17, for one exemplar:
-//   1. On the exemplar's own window and boundary, `chains` chains of the model: the mean of every
+//   1. On the exemplar's own window and edge treatment, `chains` chains of the model: the mean of
+//   every
 //      sufficient statistic (elements per category, pairs per band, elements per shape class)
 //      against the exemplar's, in standard errors of that mean (batch means over the chains).
 //   2. One output of `scale` times each side on a torus, sampled to stationarity: its density
@@ -46,10 +47,11 @@ struct FidelityReport {
   int class_degrees = 0;
 };
 
-// `boundary`: the exemplar's window as the fit used it (torus for the periodic edge treatment).
+// `boundary` and `edge`: the exemplar's window as the fit used it (a torus for the periodic edge
+// treatment; with the border treatment the chains hold the border band's elements fixed).
 FidelityReport check_fidelity(const geometry::Scene& exemplar,
                               const model::ShapeProcessModel& model, geometry::Boundary boundary,
-                              const FidelityOptions& options);
+                              geometry::EdgeTreatment edge, const FidelityOptions& options);
 
 // Upper tail P(χ²_k ≥ x).
 double chi_square_upper_tail(double x, int degrees);

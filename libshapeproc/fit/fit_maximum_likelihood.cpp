@@ -6,6 +6,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
@@ -35,19 +36,34 @@ std::vector<double> observed_statistics(const geometry::Scene& exemplar,
   return t;
 }
 
+BorderCondition border_condition(const geometry::Scene& exemplar,
+                                 const model::ShapeProcessModel& model) {
+  BorderCondition b;
+  const FitRegion region =
+      fit_region(exemplar, geometry::EdgeTreatment::border, model::Interaction(model).range());
+  b.region = region.box;
+  for (const geometry::Element& e : exemplar.elements)
+    if (!region.contains(e.position)) b.fixed.push_back(e);
+  return b;
+}
+
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options) {
-  core::check(fit_options.edge != geometry::EdgeTreatment::border, "fit",
-              "the maximum-likelihood fit supports no border correction yet: use no edge treatment "
-              "or a periodic one");
   const geometry::Domain window(exemplar.window, exemplar.dimension, fit_options.boundary);
   model::ShapeProcessModel start = mple.model;
   const std::vector<double> observed = observed_statistics(exemplar, start);
+  MleOptions chains = options;
+  double measure = window.measure();
+  if (fit_options.edge == geometry::EdgeTreatment::border) {
+    const BorderCondition border = border_condition(exemplar, start);
+    chains.sampling.fixed = border.fixed;
+    chains.sampling.free_region = border.region;
+    measure = border.region.sizes().head(exemplar.dimension).prod();
+  }
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
-    if (category.beta_status != model::ParameterStatus::free)
-      category.beta = observed[c] / window.measure();
+    if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
   }
   for (model::PairInteraction& pair : start.interactions) {
     for (model::AxisParameters& axis : pair.axes) {
@@ -55,7 +71,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
         gamma = std::exp(std::clamp(std::log(gamma), -kStartBound, kStartBound));
     }
   }
-  const MleResult mle = maximise_likelihood(start, window, observed, options);
+  const MleResult mle = maximise_likelihood(start, window, observed, chains);
   FitResult result = std::move(mple);
   const std::string fit_json = result.model.fit_json;
   result.model = with_estimates(start, mle);

@@ -1,7 +1,8 @@
 // The maximum-likelihood fit of the shape process (mcmc_mle.hpp), started from the maximum
 // pseudo-likelihood fit: the thresholds, shapes and categories of `mple` are kept, β and γ are
 // re-estimated so that the model's expected counts match the exemplar's, on the exemplar's own
-// window (open for the edge treatment none, a torus for periodic).
+// window (open for the edge treatment none, a torus for periodic, the inner window given the
+// elements of its border band for border).
 #pragma once
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
@@ -15,7 +16,19 @@ namespace shapeproc::fit {
 std::vector<double> observed_statistics(const geometry::Scene& exemplar,
                                         const model::ShapeProcessModel& model);
 
-// Throws core::ArgumentError for the border edge treatment (not supported by the MLE yet).
+// The border correction of the maximum-likelihood fit: the exemplar's elements outside the
+// window eroded by the interaction range, held fixed, and that eroded window, where the chains
+// sample (the likelihood of the inner elements given the outer ones, as the pseudo-likelihood's
+// border treatment).
+struct BorderCondition {
+  std::vector<geometry::Element> fixed;
+  geometry::Box3 region;
+};
+BorderCondition border_condition(const geometry::Scene& exemplar,
+                                 const model::ShapeProcessModel& model);
+
+// The MLE on the exemplar's window: open for the edge treatment none, a torus for periodic, the
+// border condition for border.
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options);

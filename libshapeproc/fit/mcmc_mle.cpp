@@ -230,8 +230,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       free.push_back(k);
     }
   }
-  // No interaction parameter: the Poisson MLE in closed form, β_c = n_c / |W|, w_k = n_k / n_c.
-  if (parameters == categories) {
+  // No interaction parameter: the Poisson MLE in closed form, β_c = n_c / |W|, w_k = n_k / n_c
+  // (without border correction: with it the fixed elements would have to be set apart).
+  if (parameters == categories && options.sampling.fixed.empty()) {
     for (std::size_t c = 0; c < categories; ++c) {
       r.theta[c] = std::log(observed[c] / window.measure());
       r.standard_errors[c] = 1.0 / std::sqrt(observed[c]);

@@ -58,6 +58,8 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sample::SamplerOptions sampler_options;
   sampler_options.iterations = setting.burn_in + setting.steps;
   sampler_options.observe_every = setting.observe_every;
+  sampler_options.fixed = setting.fixed;
+  sampler_options.free_region = setting.free_region;
   const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
   synthesis::ChainOptions chains;
   chains.chains = setting.chains;

@@ -20,6 +20,10 @@ struct ChainsSetting {
   long long burn_in = 20000;      // steps of each chain before observations count
   long long steps = 50000;        // steps of each chain after the burn-in
   long long observe_every = 100;  // steps between observations of t(x)
+  // Border correction: elements held fixed and the region the chains sample
+  // (sample::SamplerOptions); empty: none.
+  std::vector<geometry::Element> fixed;
+  geometry::Box3 free_region;
 };
 
 // Observations of t(X) and their moments.

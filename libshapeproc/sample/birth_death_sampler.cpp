@@ -90,7 +90,23 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   shape_cumulative_ = shape_probabilities(model_, shapes_of_, weight_sum);
   for (std::size_t c = 0; c < model_.categories.size(); ++c)
     log_beta_.push_back(std::log(model_.categories[c].beta * weight_sum[c]));
-  log_measure_categories_ = std::log(domain_.measure()) + std::log(static_cast<double>(categories));
+  free_region_ = options_.free_region.isEmpty() ? domain_.box() : options_.free_region;
+  double free_measure = domain_.measure();
+  if (!options_.free_region.isEmpty()) {
+    core::check(!domain_.periodic() && !domain_.has_local_factor(), "sample",
+                "a free region (border correction) needs a plain open domain");
+    core::check(domain_.box().contains(free_region_), "sample",
+                "the free region must lie inside the domain");
+    free_measure = free_region_.sizes().head(dimension).prod();
+    core::check_positive("sample", "the free region's measure", free_measure);
+  }
+  for (const geometry::Element& e : options_.fixed) {
+    core::check(e.category >= 0 && e.category < categories && e.shape >= 0 &&
+                    e.shape < static_cast<int>(shape_space_.shapes.size()),
+                "sample", "a fixed element has a category or shape the model does not have");
+    core::check(domain_.contains(e.position), "sample", "a fixed element lies outside the domain");
+  }
+  log_measure_categories_ = std::log(free_measure) + std::log(static_cast<double>(categories));
   shift_radius_ = options_.shift_radius > 0   ? options_.shift_radius
                   : interaction_->range() > 0 ? 0.5 * interaction_->range()
                                               : 0.05 * domain_.sizes().head(dimension).minCoeff();
@@ -104,7 +120,16 @@ class ShapeProcessSampler::Chain {
   Chain(const ShapeProcessSampler& sampler, core::Random& random)
       : s_(sampler),
         random_(random),
-        state_(*sampler.interaction_, *sampler.measurer_, sampler.domain_, sampler.reach_) {}
+        state_(*sampler.interaction_, *sampler.measurer_, sampler.domain_, sampler.reach_) {
+    for (const Element& e : s_.options_.fixed) {
+      const double term = log_lambda_over_beta(e, -1);
+      if (!std::isfinite(term))
+        throw core::ArgumentError("sample", "the fixed elements violate the model's hard core");
+      state_.add(e, local_term_, links_);
+      log_density_ += s_.log_beta_[static_cast<std::size_t>(e.category)] + term;
+    }
+    fixed_ = state_.size();
+  }
 
   // One step: with probability p_s a shift, otherwise a birth or a death with equal probability.
   void step() {
@@ -120,9 +145,9 @@ class ShapeProcessSampler::Chain {
 
   void propose_birth() {
     ++moves_.births_proposed;
-    const int n = state_.size();
+    const int n = state_.size() - fixed_;
     Element xi;
-    const geometry::Box3& box = s_.domain_.box();
+    const geometry::Box3& box = s_.free_region_;
     for (int axis = 0; axis < s_.model_.dimension; ++axis)
       xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
     xi.category = static_cast<int>(random_.index(s_.shapes_of_.size()));
@@ -149,7 +174,7 @@ class ShapeProcessSampler::Chain {
     ++moves_.deaths_proposed;
     const int slot = uniform_slot();
     if (slot < 0) return;
-    const int n = state_.size();
+    const int n = state_.size() - fixed_;
     const Element& x = state_.at(slot);
     const double log_lambda =
         s_.log_beta_[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
@@ -169,7 +194,8 @@ class ShapeProcessSampler::Chain {
     Element moved = state_.at(slot);
     moved.position += offset_in_ball();
     moved.position = s_.domain_.wrap(moved.position);
-    const bool inside = s_.domain_.periodic() || s_.domain_.contains(moved.position);
+    const bool inside = s_.domain_.periodic() ||
+                        (s_.domain_.contains(moved.position) && in_free_region(moved.position));
     const double new_term = inside ? log_lambda_over_beta(moved, slot) : kMinusInfinity;
     if (!std::isfinite(new_term)) return;
     const double old_term = state_.log_lambda_over_beta(slot);
@@ -187,10 +213,20 @@ class ShapeProcessSampler::Chain {
   std::vector<Element> elements() const { return state_.elements(); }
 
  private:
-  // A uniformly chosen element's slot; -1 (and no draw) when the configuration is empty.
+  // A uniformly chosen element's slot, fixed ones aside (they hold the first ranks: removals
+  // swap the last rank into the gap); -1 (and no draw) when there is none.
   int uniform_slot() {
-    const int n = state_.size();
-    return n == 0 ? -1 : state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(n)));
+    const int n = state_.size() - fixed_;
+    return n == 0 ? -1
+                  : state_.slot_of_rank(static_cast<std::size_t>(fixed_) +
+                                        random_.index(static_cast<std::uint64_t>(n)));
+  }
+
+  bool in_free_region(const Vec3& p) const {
+    for (int axis = 0; axis < s_.model_.dimension; ++axis)
+      if (p[axis] < s_.free_region_.min()[axis] || p[axis] > s_.free_region_.max()[axis])
+        return false;
+    return true;
   }
 
   // Uniform in the ball of radius ρ, by rejection from its bounding cube.
@@ -238,6 +274,7 @@ class ShapeProcessSampler::Chain {
   std::vector<Link> links_;   // of the last proposal
   double local_term_ = 0.0;   // of the last proposal
   double log_density_ = 0.0;  // unnormalised, tracked incrementally
+  int fixed_ = 0;             // fixed elements (border correction), at ranks 0 … fixed_ − 1
   MoveCounts moves_;
 };
 

@@ -44,6 +44,12 @@ struct SamplerOptions {
   // Record the sufficient statistics t(x) every so many steps (0: never), for Monte Carlo
   // estimates of E_θ[t] and Cov_θ[t] (maximum-likelihood fits).
   long long observe_every = 0;
+  // Border correction (math note "Edge treatment"): elements present from the start that are
+  // never removed or moved, and the region where births and shifts place elements' reference
+  // positions (empty: the whole domain). The chain then samples the elements of the region given
+  // the fixed ones; its statistics t(x) count both, the fixed part being constant.
+  std::vector<geometry::Element> fixed;
+  geometry::Box3 free_region;
 };
 
 // How often each move was proposed and accepted.
@@ -98,7 +104,8 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   // weight shared equally by its shapes); empty: its shapes are equally likely.
   std::vector<std::vector<double>> shape_cumulative_;
   std::vector<double> log_beta_;         // per category
-  double log_measure_categories_ = 0.0;  // log(|D| C)
+  double log_measure_categories_ = 0.0;  // log(|R| C), R the free region (the domain by default)
+  geometry::Box3 free_region_;           // where births and shifts place elements
   double shift_radius_ = 0.0;
   double reach_ = 0.0;  // farthest apart two interacting reference positions can be
 };

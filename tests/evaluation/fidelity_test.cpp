@@ -35,7 +35,8 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
   options.chains = 8;
   options.burn_in = 2000;
   options.steps = 20000;
-  const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open, options);
+  const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open,
+                                          geometry::EdgeTreatment::none, options);
   ASSERT_EQ(r.own_window.size(), 1u);
   EXPECT_EQ(r.own_window[0].exemplar, 60.0);
   EXPECT_LT(r.worst_count_z, 4.0);

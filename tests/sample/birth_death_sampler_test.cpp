@@ -50,6 +50,49 @@ TEST(BirthDeath, PoissonCountsFollowPoisson) {
   EXPECT_NEAR(variance / mean, 1.0, 4 * std::sqrt(2.0 / (runs - 1)));
 }
 
+// Border correction: fixed elements stay where they are, free ones are born only in the free
+// region and keep the hard core against the fixed ones. Free points (category 0) do not interact
+// with each other, only with the fixed kind (category 1, β ≈ 0: never born), so their count is
+// Poisson with mean β (|R| − the disc the fixed point in R excludes) (300 chains, 4 standard
+// errors).
+TEST(BirthDeath, FixedElementsStayAndBirthsKeepToTheFreeRegion) {
+  model::ShapeProcessModel m = poisson_points(0.02);  // two categories: half the births each
+  m.categories.push_back({"fixed", 1e-300});
+  model::PairInteraction pair;
+  pair.first = 0;
+  pair.second = 1;
+  model::AxisParameters axis;
+  axis.thresholds = {3.0, 3.0};  // hard core below 3, no band
+  axis.gammas = {1.0};
+  pair.axes = {axis};
+  m.interactions = {pair};
+  const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::open);
+  SamplerOptions options;
+  options.iterations = 4000;
+  options.free_region = geometry::Box3(geometry::Vec3(10, 10, 0), geometry::Vec3(50, 50, 0));
+  options.fixed = {{0, 1, geometry::Vec3(5, 5, 0)}, {0, 1, geometry::Vec3(30, 30, 0)}};
+  const int runs = 300;
+  double mean = 0;
+  for (int seed = 1; seed <= runs; ++seed) {
+    const SampleResult r = sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed));
+    int fixed_seen = 0;
+    for (const geometry::Element& e : r.scene.elements) {
+      const bool fixed = (e.position - geometry::Vec3(5, 5, 0)).norm() == 0 ||
+                         (e.position - geometry::Vec3(30, 30, 0)).norm() == 0;
+      fixed_seen += fixed;
+      if (!fixed) {
+        ASSERT_TRUE(options.free_region.contains(e.position)) << e.position.transpose();
+        ASSERT_GE((e.position - geometry::Vec3(30, 30, 0)).norm(), 3.0);
+      }
+    }
+    ASSERT_EQ(fixed_seen, 2);
+    mean += static_cast<double>(r.scene.elements.size() - 2) / runs;
+  }
+  // β |R| = 32, less the disc of radius 3 the fixed element at (30, 30) excludes: 32 − 0.565.
+  const double expected = 0.02 * (1600 - 9 * 3.14159265358979);
+  EXPECT_NEAR(mean, expected, 4 * std::sqrt(expected / runs));
+}
+
 const char* kSquares = R"({
   "format": "shapeproc-model", "version": 1, "dimension": 2,
   "categories": [ { "name": "squares", "beta": 0.2 } ],

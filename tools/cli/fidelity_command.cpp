@@ -67,8 +67,10 @@ int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& 
   const geometry::Boundary boundary =
       args.fit.edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
   args.verbosity.stage("checking the model against the exemplar");
-  const evaluation::FidelityReport report =
-      evaluation::check_fidelity(exemplar, model, boundary, args.options);
+  const evaluation::FidelityReport report = evaluation::check_fidelity(
+      exemplar, model, boundary,
+      args.fit.edge == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none,
+      args.options);
   if (args.row)
     print_row(std::filesystem::path(args.input).filename().string(), report, model, out);
   else
