@@ -78,7 +78,7 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
   const sample::SampleResult output =
       sample::sample_shape_process(model, domain, sample::SamplerOptions{}, random);
   report.output_elements = static_cast<int>(output.scene.elements.size());
-  const double exemplar_measure = exemplar.window.sizes().head(exemplar.dimension).prod();
+  const double exemplar_measure = geometry::measure(exemplar.window, exemplar.dimension);
   report.density_ratio =
       (report.output_elements / domain.measure()) / (report.exemplar_elements / exemplar_measure);
   report.exemplar_collisions = colliding_pairs(exemplar, boundary);

@@ -59,7 +59,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     const BorderCondition border = border_condition(exemplar, start);
     chains.sampling.fixed = border.fixed;
     chains.sampling.free_region = border.region;
-    measure = border.region.sizes().head(exemplar.dimension).prod();
+    measure = geometry::measure(border.region, exemplar.dimension);
   }
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];

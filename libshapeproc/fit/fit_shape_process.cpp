@@ -75,7 +75,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   stage("optimisation");
   // Maximum pseudo-likelihood, from β at the data's density and γ = 1.
   clock = std::chrono::steady_clock::now();
-  const double measure = region.box.sizes().head(exemplar.dimension).prod();
+  const double measure = geometry::measure(region.box, exemplar.dimension);
   std::vector<double> start(static_cast<std::size_t>(design.parameter_count), 0.0);
   for (std::size_t c = 0; c < model.categories.size(); ++c)
     start[c] = std::log(statistics.per_category[c] / measure);

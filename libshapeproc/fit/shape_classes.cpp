@@ -135,7 +135,7 @@ void assign_shape_classes(model::ShapeProcessModel& model, const geometry::Scene
       elements += uses[s];
     }
     std::vector<Identical> groups;
-    for (auto& [key, g] : by_key) groups.push_back(std::move(g));
+    for (auto& entry : by_key) groups.push_back(std::move(entry.second));
     // 2. Too many for the elements: size groups.
     bool supported = true;
     for (const Identical& g : groups) supported = supported && g.elements >= kMinElementsPerClass;

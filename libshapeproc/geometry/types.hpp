@@ -20,4 +20,10 @@ inline Box3 lift(const Box2& box) {
   return Box3(Vec3(box.min().x(), box.min().y(), 0.0), Vec3(box.max().x(), box.max().y(), 0.0));
 }
 
+// Area (dimension 2: x and y sides) or volume (dimension 3) of a box.
+inline double measure(const Box3& box, int dimension) {
+  const Vec3 sides = box.sizes();
+  return dimension == 2 ? sides.x() * sides.y() : sides.x() * sides.y() * sides.z();
+}
+
 }  // namespace shapeproc::geometry

@@ -97,7 +97,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                 "a free region (border correction) needs a plain open domain");
     core::check(domain_.box().contains(free_region_), "sample",
                 "the free region must lie inside the domain");
-    free_measure = free_region_.sizes().head(dimension).prod();
+    free_measure = geometry::measure(free_region_, dimension);
     core::check_positive("sample", "the free region's measure", free_measure);
   }
   for (const geometry::Element& e : options_.fixed) {

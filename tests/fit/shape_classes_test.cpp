@@ -36,7 +36,8 @@ struct Fixture {
     model.categories.push_back({"default", 1.0});
     for (std::size_t i = 0; i < sides.size(); ++i) {
       scene.shapes.push_back(square(sides[i]));
-      scene.elements.push_back({static_cast<int>(i), 0, geometry::Vec3(10.0 * i, 5, 0)});
+      scene.elements.push_back(
+          {static_cast<int>(i), 0, geometry::Vec3(10.0 * static_cast<double>(i), 5, 0)});
       model.shapes.push_back({scene.shapes.back(), 0});
     }
   }
