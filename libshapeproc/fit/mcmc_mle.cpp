@@ -273,7 +273,20 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         continue;
       }
       r.converged = true;
-      newton.standard_errors(g, r.standard_errors);
+      // The estimate: the maximum of the likelihood as the final sample approximates it
+      // (Geyer & Thompson), where its reweighting stays valid; otherwise the converged θ.
+      const std::vector<double> polished = newton.reweighted_steps(m, g, r.theta);
+      std::vector<double> delta(p, 0.0);
+      for (std::size_t k : free) delta[k] = polished[k] - r.theta[k];
+      double share = 1.0;
+      const StatisticsMoments at = reweighted(m, delta, share);
+      if (share >= kMinEffectiveShare) {
+        r.theta = polished;
+        r.expected = at.mean;
+        newton.standard_errors(newton.gap(at, r.theta), r.standard_errors);
+      } else {
+        newton.standard_errors(g, r.standard_errors);
+      }
       break;
     }
     const bool last =

@@ -10,7 +10,9 @@
 // its effective size stays above half (Geyer & Thompson 1992), so a simulation serves several
 // steps. The first simulations are short (a quarter of the steps) until the gaps are within the
 // tolerance at their precision; the fit stops when no free component of t(z) − E_θ[t] differs
-// significantly from 0 in a full-length simulation (MleOptions::significance).
+// significantly from 0 in a full-length simulation (MleOptions::significance). The estimate is
+// then the maximum of the likelihood that this last sample approximates by reweighting (its
+// expectations reweighted to it), unless the reweighting leaves too small an effective sample.
 // Bands without an observed pair stay at γ = 0 (status boundary); a model without interaction
 // parameters has the closed form β_c = n_c / |W|.
 #pragma once
