@@ -5,7 +5,9 @@
 #   bash scripts/fidelity.sh data/svg
 #   bash scripts/fidelity.sh tiles/ --split-subpaths --edge periodic
 # Columns: elements of the exemplar; largest |z| of the element counts (categories and shape
-# classes) and of the pair counts, 50 chains on the exemplar's own window; density of an output
+# classes) and of the pair counts, 50 chains on the exemplar's own window, in standard errors that
+# add the fit's own Monte Carlo error (bands the attraction prior holds down are left out and
+# counted as "held"); density of an output
 # of 2 x 2 exemplars (torus) against the exemplar's; colliding pairs in the exemplar / the output;
 # p-value of the chi-square test of the output's shape classes (their number in brackets).
 set -uo pipefail

@@ -4,6 +4,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -17,6 +18,29 @@ namespace shapeproc::evaluation {
 namespace {
 
 constexpr int kCollisionOffsets = 256;  // g(r) is not used here: few Monte Carlo offsets
+
+// What the maximum-likelihood fit recorded (fit.estimator): the Monte Carlo standard errors of
+// its expectations, by which its estimate is itself uncertain, and the bands its attraction
+// prior holds below the exemplar's count. Zeros and none for other models.
+struct FitPrecision {
+  std::vector<double> expected_error;
+  std::vector<bool> penalised;
+};
+
+FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t statistics) {
+  FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<bool>(statistics, false)};
+  if (model.fit_json.empty()) return f;
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
+  if (!fit.contains("estimator")) return f;
+  const nlohmann::json& e = fit["estimator"];
+  if (e.contains("expected_standard_error") && e["expected_standard_error"].size() == statistics)
+    f.expected_error = e["expected_standard_error"].get<std::vector<double>>();
+  if (e.contains("penalised"))
+    for (int k : e["penalised"].get<std::vector<int>>())
+      if (k >= 0 && static_cast<std::size_t>(k) < statistics)
+        f.penalised[static_cast<std::size_t>(k)] = true;
+  return f;
+}
 
 // 1. The model's statistics on the exemplar's own window against the exemplar's.
 void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
@@ -39,12 +63,14 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);
   const model::Interaction interaction(model);
+  const FitPrecision fit = fit_precision(model, observed.size());
   for (std::size_t k = 0; k < observed.size(); ++k) {
     StatisticCheck c;
     c.name = k < names.size() ? names[k] : "statistic " + std::to_string(k);
     c.exemplar = observed[k];
     c.mean = m.mean[k];
-    c.standard_error = m.standard_error[k];
+    c.standard_error = std::hypot(m.standard_error[k], fit.expected_error[k]);
+    c.penalised = fit.penalised[k];
     c.count =
         k < model.categories.size() || k >= static_cast<std::size_t>(interaction.parameter_count());
     const double gap = c.mean - c.exemplar;
@@ -52,7 +78,10 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
           : c.standard_error > 0 ? gap / c.standard_error
                                  : std::copysign(std::numeric_limits<double>::infinity(), gap);
     double& worst = c.count ? report.worst_count_z : report.worst_pair_z;
-    worst = std::max(worst, std::abs(c.z));
+    if (c.penalised)
+      ++report.penalised;
+    else
+      worst = std::max(worst, std::abs(c.z));
     report.own_window.push_back(c);
   }
 }

@@ -30,14 +30,20 @@ struct FidelityOptions {
 
 struct StatisticCheck {
   std::string name;
-  double exemplar = 0.0, mean = 0.0, standard_error = 0.0;
-  double z = 0.0;      // (mean − exemplar) / standard error (0 when both agree exactly)
-  bool count = false;  // an element count (category or class), not a pair count
+  double exemplar = 0.0, mean = 0.0;
+  // Of the gap between the chains' mean and the exemplar's value: the chains' batch-means error
+  // and, for a maximum-likelihood fit, the Monte Carlo error of the fit's own expectations (its
+  // estimate is only as precise as its last sample), added in quadrature.
+  double standard_error = 0.0;
+  bool penalised = false;  // a band the fit's attraction prior holds down (left out of the worst)
+  double z = 0.0;          // (mean − exemplar) / standard error (0 when both agree exactly)
+  bool count = false;      // an element count (category or class), not a pair count
 };
 
 struct FidelityReport {
   std::vector<StatisticCheck> own_window;
   double worst_count_z = 0.0, worst_pair_z = 0.0;  // largest |z| of each kind
+  int penalised = 0;                               // bands the attraction prior holds down
   int exemplar_elements = 0, output_elements = 0;
   double density_ratio = 0.0;                          // output density / exemplar density
   int exemplar_collisions = 0, output_collisions = 0;  // colliding pairs

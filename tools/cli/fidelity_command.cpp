@@ -32,7 +32,8 @@ std::string g(double v, int digits = 3) { return core::format_general(v, digits)
 void print_row(const std::string& name, const evaluation::FidelityReport& r,
                const model::ShapeProcessModel& model, std::ostream& out) {
   out << "| " << name << " | " << r.exemplar_elements << " | " << g(r.worst_count_z) << " | "
-      << g(r.worst_pair_z) << " | " << g(r.density_ratio) << " | " << r.exemplar_collisions << " / "
+      << g(r.worst_pair_z) << (r.penalised > 0 ? " (" + std::to_string(r.penalised) + " held)" : "")
+      << " | " << g(r.density_ratio) << " | " << r.exemplar_collisions << " / "
       << r.output_collisions << " | "
       << (std::isnan(r.class_p_value)
               ? std::string("-")
@@ -46,7 +47,11 @@ void print_report(const evaluation::FidelityReport& r, const evaluation::Fidelit
   for (const evaluation::StatisticCheck& c : r.own_window) {
     out << "  " << std::left << std::setw(34) << c.name << std::right << std::setw(8)
         << g(c.exemplar, 4) << std::setw(20) << (g(c.mean, 4) + " ± " + g(c.standard_error, 2))
-        << std::setw(8) << g(c.z, 2) << (std::abs(c.z) > 3 ? "  (beyond 3 se)" : "") << '\n';
+        << std::setw(8) << g(c.z, 2)
+        << (c.penalised         ? "  (attraction prior)"
+            : std::abs(c.z) > 3 ? "  (beyond 3 se)"
+                                : "")
+        << '\n';
   }
   out << "largest |z|: counts " << g(r.worst_count_z) << ", pairs " << g(r.worst_pair_z) << '\n';
   out << "output " << g(o.scale) << " x each side (torus): " << r.output_elements
