@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 
 #include "libshapeproc/core/check.hpp"
@@ -11,49 +10,54 @@ namespace shapeproc::fit {
 
 namespace {
 
-// A shape's geometry in local coordinates, each number rounded to `quantum`: equal keys for
-// shapes identical up to translation.
-class ShapeKey {
- public:
-  explicit ShapeKey(double quantum) : quantum_(quantum) {}
+// A shape's geometry in local coordinates: its structure (fill, closure, segment kinds, mesh
+// triangles) as text and its coordinates in order. Shapes identical up to translation have the
+// same structure and coordinates equal to a tolerance (compared, not rounded: rounding would
+// part equal values that straddle a step).
+struct Signature {
+  std::string structure;
+  std::vector<double> coordinates;
 
-  std::string of(const geometry::Shape& shape) {
-    key_.clear();
+  explicit Signature(const geometry::Shape& shape) {
     if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
       for (const geometry::Drawable2& d : planar->parts) {
-        key_ += d.filled() ? 'F' : 'S';
+        structure += d.filled() ? 'F' : 'S';
         for (const geometry::Path2& path : d.paths) {
-          key_ += path.closed ? 'C' : 'O';
-          for (const geometry::Segment2& s : path.segments) {
-            add(s.start);
-            if (s.cubic) {
-              add(s.control1);
-              add(s.control2);
+          structure += path.closed ? 'C' : 'O';
+          for (const geometry::Segment2& segment : path.segments) {
+            structure += segment.cubic ? 'c' : 'l';
+            add(segment.start);
+            if (segment.cubic) {
+              add(segment.control1);
+              add(segment.control2);
             }
-            add(s.end);
+            add(segment.end);
           }
         }
       }
     } else if (const auto* mesh = std::get_if<geometry::MeshShape>(&shape.geometry)) {
       for (const geometry::Vec3& v : mesh->mesh.vertices) add(v);
       for (const auto& t : mesh->mesh.triangles)
-        key_ += std::to_string(t[0]) + ',' + std::to_string(t[1]) + ',' + std::to_string(t[2]);
+        structure +=
+            std::to_string(t[0]) + ',' + std::to_string(t[1]) + ',' + std::to_string(t[2]) + ';';
     } else {
-      key_ = "point";
+      structure = "point";
     }
-    return key_;
+  }
+
+  bool same(const Signature& other, double tolerance) const {
+    if (structure != other.structure || coordinates.size() != other.coordinates.size())
+      return false;
+    for (std::size_t i = 0; i < coordinates.size(); ++i)
+      if (std::abs(coordinates[i] - other.coordinates[i]) > tolerance) return false;
+    return true;
   }
 
  private:
   template <class V>
   void add(const V& v) {
-    for (Eigen::Index i = 0; i < v.size(); ++i)
-      key_ += std::to_string(std::llround(v[i] / quantum_)) + ',';
-    key_ += ';';
+    for (Eigen::Index i = 0; i < v.size(); ++i) coordinates.push_back(v[i]);
   }
-
-  double quantum_;
-  std::string key_;
 };
 
 // Shapes identical up to translation, as used by one category's elements.
@@ -113,29 +117,32 @@ void assign_shape_classes(model::ShapeProcessModel& model, const geometry::Scene
   std::vector<int> uses(model.shapes.size(), 0);
   for (const geometry::Element& e : exemplar.elements) ++uses[static_cast<std::size_t>(e.shape)];
 
-  // One quantum for every shape (a scale-relative one would equate similar shapes).
-  ShapeKey key(1e-6 * std::max(1.0, exemplar.window.sizes().norm()));
+  // One tolerance for every shape (a scale-relative one would equate similar shapes).
+  const double tolerance = kIdenticalTolerance * std::max(1.0, exemplar.window.sizes().norm());
   std::vector<model::ShapeClass> classes;
   std::vector<int> class_of(model.shapes.size(), -1);
   bool any_split = false;
   for (std::size_t c = 0; c < model.categories.size(); ++c) {
     const int category = static_cast<int>(c);
-    // 1. Identical shapes.
-    std::map<std::string, Identical> by_key;
+    // 1. Identical shapes: each shape joins the first group whose first shape it equals.
+    std::vector<Identical> groups;
+    std::vector<Signature> representatives;
     int elements = 0;
     for (std::size_t s = 0; s < model.shapes.size(); ++s) {
       if (model.shapes[s].category != category || uses[s] == 0) continue;
       const geometry::Shape& shape = model.shapes[s].shape;
-      const auto [area, diagonal] = size_of(shape, dimension);
-      Identical& g = by_key[key.of(shape)];
-      g.shapes.push_back(static_cast<int>(s));
-      g.elements += uses[s];
-      g.area = area;
-      g.diagonal = diagonal;
+      Signature signature(shape);
+      std::size_t g = 0;
+      while (g < groups.size() && !representatives[g].same(signature, tolerance)) ++g;
+      if (g == groups.size()) {
+        const auto [area, diagonal] = size_of(shape, dimension);
+        groups.push_back({{}, 0, area, diagonal});
+        representatives.push_back(std::move(signature));
+      }
+      groups[g].shapes.push_back(static_cast<int>(s));
+      groups[g].elements += uses[s];
       elements += uses[s];
     }
-    std::vector<Identical> groups;
-    for (auto& entry : by_key) groups.push_back(std::move(entry.second));
     // 2. Too many for the elements: size groups.
     bool supported = true;
     for (const Identical& g : groups) supported = supported && g.elements >= kMinElementsPerClass;

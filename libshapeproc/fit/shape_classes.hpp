@@ -1,7 +1,7 @@
 // Shape classes of a fitted model (model::ShapeClass): the shapes of a category that its counts
 // hold together, so that samples keep the exemplar's mix of shapes.
 //   1. Shapes identical up to translation form a class (their geometry in local coordinates
-//      equal to a millionth of the exemplar window's diagonal).
+//      equal within kIdenticalTolerance of the exemplar window's diagonal).
 //   2. Where the category has more classes than its elements support (a class under
 //      kMinElementsPerClass elements), the identical-shape classes are grouped by size instead:
 //      ordered by bounding-box area (volume in 3D), then diagonal, and cut into
@@ -20,6 +20,7 @@ namespace shapeproc::fit {
 
 inline constexpr int kMinElementsPerClass = 5;
 inline constexpr int kMaxSizeGroups = 8;
+inline constexpr double kIdenticalTolerance = 1e-5;  // of the window's diagonal
 
 // Sets model.shape_classes and every shape's class. `model.shapes` must be the exemplar's shapes,
 // in order (as model_skeleton makes them); a point model is left without classes.
