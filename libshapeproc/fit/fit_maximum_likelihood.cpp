@@ -81,9 +81,30 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
         " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +
         core::format_number(options.max_seconds) +
         " s): some expected counts still differ from the exemplar's by more than " +
-        core::format_number(mle.tolerance) + " Monte Carlo standard errors");
+        core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
   }
   nlohmann::json record = nlohmann::json::parse(fit_json);
+  std::vector<int> unreachable;  // θ indices the chains never varied (a jammed exemplar)
+  for (std::size_t k = 0; k < mle.status.size(); ++k) {
+    if (mle.status[k] != model::ParameterStatus::unreachable) continue;
+    unreachable.push_back(static_cast<int>(k));
+  }
+  if (!unreachable.empty()) {
+    const std::vector<std::string> names = model::statistic_names(start);
+    std::string list;
+    for (int k : unreachable) {
+      const std::size_t i = static_cast<std::size_t>(k);
+      list += (list.empty() ? "" : "; ") + names[i] + ": " +
+              core::format_general(mle.expected[i], 3) + " against " +
+              core::format_general(observed[i], 3);
+    }
+    result.notes.push_back(
+        "the chains did not vary these statistics in 4 successive simulations while their "
+        "parameters were pushed towards the exemplar's counts (a jammed exemplar), so their "
+        "parameters stay at the pseudo-likelihood's start, marked unreachable (the chains' mean "
+        "at the returned estimate against the exemplar's count): " +
+        list);
+  }
   std::vector<int> penalised;  // θ indices where the attraction prior holds log γ down
   for (std::size_t k = 0; k < mle.penalised.size(); ++k)
     if (mle.penalised[k]) penalised.push_back(static_cast<int>(k));
@@ -103,6 +124,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                          {"seed", options.sampling.seed},
                          {"attraction_prior_sd", options.attraction_prior_sd},
                          {"penalised", penalised},
+                         {"unreachable", unreachable},
                          {"observed", observed},
                          {"expected", mle.expected},
                          {"expected_standard_error", mle.expected_error},

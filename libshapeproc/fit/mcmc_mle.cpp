@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/model/interaction.hpp"
@@ -57,6 +58,7 @@ constexpr double kMinEffectiveShare = 0.5;  // reweighting stops below this effe
 constexpr long long kRoughDivisor = 4;      // first simulations: a quarter of the steps
 constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a pair or more
 constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
+constexpr int kUnreachableAfter = 4;        // simulations without variance: unreachable
 
 using Clock = std::chrono::steady_clock;
 
@@ -248,8 +250,11 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     r.converged = true;
     return r;
   }
-  const Newton newton(observed, free, categories, parameters, options);
+  std::optional<Newton> newton;
+  newton.emplace(observed, free, categories, parameters, options);
   r.tolerance = convergence_tolerance(options.significance, free.size());
+  const std::vector<double> start_theta = r.theta;
+  std::vector<int> unvaried(p, 0);  // consecutive simulations in which t_k never varied
   model::ShapeProcessModel model = start;
   bool rough = true;
   struct Iterate {
@@ -264,7 +269,31 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     const StatisticsMoments m = statistics_moments(model, window, setting);
     r.expected = m.mean;
     r.expected_error = m.standard_error;
-    const Gap g = newton.gap(m, r.theta);
+    // Statistics the chains never vary, simulation after simulation, while their parameter is
+    // pushed towards the exemplar's count: unreachable (a jammed exemplar). They leave the free
+    // set at their start value.
+    bool dropped = false;
+    for (std::size_t k : free) {
+      const bool never = m.covariance[k * p + k] <= kNoInformation && observed[k] != m.mean[k];
+      unvaried[k] = never ? unvaried[k] + 1 : 0;
+      if (unvaried[k] >= kUnreachableAfter) {
+        r.status[k] = model::ParameterStatus::unreachable;
+        r.theta[k] = start_theta[k];
+        dropped = true;
+      }
+    }
+    if (dropped) {
+      free.erase(std::remove_if(free.begin(), free.end(),
+                                [&](std::size_t k) {
+                                  return r.status[k] == model::ParameterStatus::unreachable;
+                                }),
+                 free.end());
+      newton.emplace(observed, free, categories, parameters, options);
+      r.tolerance = convergence_tolerance(options.significance, free.size());
+      if (free.empty()) break;
+      continue;  // simulate again without them
+    }
+    const Gap g = newton->gap(m, r.theta);
     if (options.progress) options.progress(r.iterations, g.worst_z);
     if (g.worst_z < best.worst_z) best = {r.theta, m.mean, m.standard_error, g.worst_z};
     if (g.worst_z <= r.tolerance) {
@@ -275,7 +304,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       r.converged = true;
       // The estimate: the maximum of the likelihood as the final sample approximates it
       // (Geyer & Thompson), where its reweighting stays valid; otherwise the converged θ.
-      const std::vector<double> polished = newton.reweighted_steps(m, g, r.theta);
+      const std::vector<double> polished = newton->reweighted_steps(m, g, r.theta);
       std::vector<double> delta(p, 0.0);
       for (std::size_t k : free) delta[k] = polished[k] - r.theta[k];
       double share = 1.0;
@@ -283,9 +312,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       if (share >= kMinEffectiveShare) {
         r.theta = polished;
         r.expected = at.mean;
-        newton.standard_errors(newton.gap(at, r.theta), r.standard_errors);
+        newton->standard_errors(newton->gap(at, r.theta), r.standard_errors);
       } else {
-        newton.standard_errors(g, r.standard_errors);
+        newton->standard_errors(g, r.standard_errors);
       }
       break;
     }
@@ -293,7 +322,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         r.iterations == options.max_iterations ||
         std::chrono::duration<double>(Clock::now() - clock).count() > options.max_seconds;
     if (last) break;  // θ stays where the reported expectations were estimated
-    r.theta = newton.reweighted_steps(m, g, r.theta);
+    r.theta = newton->reweighted_steps(m, g, r.theta);
   }
   r.iterations = std::min(r.iterations, options.max_iterations);
   if (!r.converged) {  // the iterate closest to the exemplar, not the last one
@@ -301,7 +330,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     r.expected = best.expected;
     r.expected_error = best.expected_error;
   }
-  for (std::size_t k : free) r.penalised[k] = newton.pairs_moved(k, r.theta) >= kNotablyMoved;
+  for (std::size_t k : free) r.penalised[k] = newton->pairs_moved(k, r.theta) >= kNotablyMoved;
   r.seconds = std::chrono::duration<double>(Clock::now() - clock).count();
   return r;
 }

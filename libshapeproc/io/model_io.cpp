@@ -189,9 +189,11 @@ ParameterStatus status_from(const std::string& s, const Reader& reader, const st
   if (s == "boundary") return ParameterStatus::boundary;
   if (s == "unidentifiable") return ParameterStatus::unidentifiable;
   if (s == "unbounded") return ParameterStatus::unbounded;
+  if (s == "unreachable") return ParameterStatus::unreachable;
   if (s == "fixed") return ParameterStatus::fixed;
-  reader.fail(where,
-              "expected free, boundary, unidentifiable, unbounded or fixed, got '" + s + "'");
+  reader.fail(
+      where,
+      "expected free, boundary, unidentifiable, unbounded, unreachable or fixed, got '" + s + "'");
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ const char* to_string(ParameterStatus status) {
       return "unidentifiable";
     case ParameterStatus::unbounded:
       return "unbounded";
+    case ParameterStatus::unreachable:
+      return "unreachable";
     case ParameterStatus::fixed:
       return "fixed";
   }

@@ -24,6 +24,8 @@ enum class ParameterStatus {
   unbounded,       // the pseudo-likelihood grows without limit (the exemplar separates the
                    // statistics); the estimate sits at the search bound |log γ| = 30
   fixed,           // set by hand (a loaded model without fit information)
+  unreachable,     // maximum likelihood: the chains never vary the statistic however far the
+                   // parameter is pushed (a jammed exemplar); left at its start value
 };
 
 struct CategoryParameters {

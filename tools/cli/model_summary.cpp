@@ -33,6 +33,8 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
       return "1 (no information)";
     case model::ParameterStatus::unbounded:
       return g(a.gammas[k], 3) + " (unbounded)";
+    case model::ParameterStatus::unreachable:
+      return g(a.gammas[k], 3) + " (unreachable)";
     default:
       break;
   }
@@ -54,6 +56,8 @@ void print_goodness_of_fit(const model::ShapeProcessModel& model, const nlohmann
   const auto z = e["z"].get<std::vector<double>>();
   std::vector<int> penalised;
   if (e.contains("penalised")) penalised = e["penalised"].get<std::vector<int>>();
+  std::vector<int> unreached;
+  if (e.contains("unreachable")) unreached = e["unreachable"].get<std::vector<int>>();
   out << "\nmaximum likelihood (MCMC): "
       << (e.value("converged", false) ? "converged" : "did not converge") << " in "
       << e.value("iterations", 0) << " iteration(s), " << g(e.value("seconds", 0.0), 3)
@@ -64,9 +68,15 @@ void print_goodness_of_fit(const model::ShapeProcessModel& model, const nlohmann
     if (observed[k] == 0 && expected[k] == 0) continue;  // bands held at γ = 0
     const bool moved =
         std::find(penalised.begin(), penalised.end(), static_cast<int>(k)) != penalised.end();
+    const bool unreachable =
+        std::find(unreached.begin(), unreached.end(), static_cast<int>(k)) != unreached.end();
     out << "  " << std::left << std::setw(34) << names[k] << std::right << std::setw(10)
         << g(observed[k]) << std::setw(22) << (g(expected[k]) + " ± " + g(error[k], 2))
-        << std::setw(8) << g(z[k], 2) << (moved ? "  (attraction prior)" : "") << '\n';
+        << std::setw(8) << g(z[k], 2)
+        << (unreachable ? "  (unreachable)"
+            : moved     ? "  (attraction prior)"
+                        : "")
+        << '\n';
   }
   if (!penalised.empty())
     out << "  (attraction prior: the half-normal prior on log γ > 0 holds the band's expected "
