@@ -9,9 +9,14 @@ namespace shapeproc::fit {
 using geometry::Element;
 using model::Interaction;
 
+namespace {
+constexpr double kBorderTolerance = 1e-9;  // of the window's longest side
+}  // namespace
+
 FitRegion fit_region(const geometry::Scene& exemplar, geometry::EdgeTreatment edge, double range) {
   FitRegion region{exemplar.window, exemplar.dimension};
   if (edge != geometry::EdgeTreatment::border) return region;
+  region.tolerance = kBorderTolerance * exemplar.window.sizes().head(exemplar.dimension).maxCoeff();
   for (int axis = 0; axis < exemplar.dimension; ++axis) {
     region.box.min()[axis] += range;
     region.box.max()[axis] -= range;

@@ -13,12 +13,18 @@
 namespace shapeproc::fit {
 
 // The window of the sums: W, or W eroded by the interaction range R for the border correction.
+// The region whose elements and quadrature points count. For the border treatment, an element at
+// the border distance up to rounding counts as inside: positions within `tolerance` (1e-9 of the
+// window's longest side) outside the eroded box are kept, so that 1 − 0.9 < 0.1 in floating
+// point does not drop a point drawn exactly at the border distance (docs/fit.md).
 struct FitRegion {
   geometry::Box3 box;
   int dimension = 2;
+  double tolerance = 0.0;
   bool contains(const geometry::Vec3& p) const {
     for (int axis = 0; axis < dimension; ++axis)
-      if (p[axis] < box.min()[axis] || p[axis] > box.max()[axis]) return false;
+      if (p[axis] < box.min()[axis] - tolerance || p[axis] > box.max()[axis] + tolerance)
+        return false;
     return true;
   }
 };

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -311,6 +312,20 @@ TEST(FitExistence, PackedExemplarsFollowTheDataShareAndSettle) {
       for (auto status : axis.status) EXPECT_NE(status, model::ParameterStatus::unbounded);
   EXPECT_EQ(usual.model.categories[0].beta_status, model::ParameterStatus::free);
   EXPECT_GT(usual.model.categories[0].beta_standard_error, 0.0);
+}
+
+// The border rule is robust to rounding: on the unit window with range 0.1, a point at x = 0.9 is
+// at the border distance although 1 − 0.9 < 0.1 in floating point, and counts as inside, as does
+// one at 0.1; a point a millionth closer to the edge does not.
+TEST(FitRegion, PointsAtTheBorderDistanceCountUpToRounding) {
+  Scene scene = points({Vec3(0.5, 0.5, 0)}, {0}, geometry::Box3(Vec3(0, 0, 0), Vec3(1, 1, 0)));
+  const FitRegion region = fit_region(scene, geometry::EdgeTreatment::border, 0.1);
+  ASSERT_LT(1.0 - 0.9, 0.1);
+  EXPECT_TRUE(region.contains(Vec3(0.9, 0.5, 0)));
+  EXPECT_TRUE(region.contains(Vec3(0.1, 0.9, 0)));
+  EXPECT_FALSE(region.contains(Vec3(0.9 + 1e-6, 0.5, 0)));
+  EXPECT_FALSE(region.contains(Vec3(0.5, 0.1 - 1e-6, 0)));
+  EXPECT_TRUE(fit_region(scene, geometry::EdgeTreatment::none, 0.1).contains(Vec3(0.95, 0.5, 0)));
 }
 
 }  // namespace
