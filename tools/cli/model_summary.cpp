@@ -140,8 +140,10 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   if (!model.fit_json.empty()) {
     const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
     if (fit.contains("log_pseudo_likelihood") && fit["log_pseudo_likelihood"].is_number()) {
-      out << "\nlog pseudo-likelihood: " << g(fit["log_pseudo_likelihood"].get<double>(), 8)
-          << '\n';
+      out << "\nlog pseudo-likelihood"
+          << (fit.contains("estimator") ? " (of the MPL fit the maximum likelihood started from)"
+                                        : "")
+          << ": " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
     }
     if (fit.contains("estimator")) print_goodness_of_fit(model, fit["estimator"], out);
     if (fit.contains("quadrature")) {
