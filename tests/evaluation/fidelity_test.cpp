@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/random.hpp"
+#include "tests/point_model.hpp"
 
 namespace shapeproc::evaluation {
 namespace {
@@ -28,9 +29,7 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
   for (int i = 0; i < 60; ++i)
     exemplar.elements.push_back(
         {0, 0, geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0)});
-  model::ShapeProcessModel model;
-  model.categories.push_back({"points", 60.0 / 10000.0});
-  model.measurement.directions = 1;
+  const model::ShapeProcessModel model = testing::point_model(60.0 / 10000.0);
   FidelityOptions options;
   options.chains = 8;
   options.burn_in = 2000;

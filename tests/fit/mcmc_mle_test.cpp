@@ -6,25 +6,22 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "tests/point_model.hpp"
 
 namespace shapeproc::fit {
 namespace {
 
-model::ShapeProcessModel points(double beta) {
-  model::ShapeProcessModel m;
-  m.categories.push_back({"points", beta});
-  m.measurement.directions = 1;
-  return m;
-}
-
 TEST(MaximumLikelihood, PoissonIsClosedForm) {
   const geometry::Domain window = geometry::Domain::from_sizes({100, 50}, geometry::Boundary::open);
-  const MleResult mle = maximise_likelihood(points(1.0), window, {37.0}, MleOptions{});
+  const MleResult mle =
+      maximise_likelihood(testing::point_model(1.0), window, {37.0}, MleOptions{});
   ASSERT_TRUE(mle.converged);
   EXPECT_DOUBLE_EQ(std::exp(mle.theta[0]), 37.0 / 5000.0);
-  EXPECT_DOUBLE_EQ(with_estimates(points(1.0), mle).categories[0].beta, 37.0 / 5000.0);
-  EXPECT_THROW(maximise_likelihood(points(1.0), window, {0.0}, MleOptions{}), core::ArgumentError);
-  EXPECT_THROW(maximise_likelihood(points(1.0), window, {1.0, 2.0}, MleOptions{}),
+  EXPECT_DOUBLE_EQ(with_estimates(testing::point_model(1.0), mle).categories[0].beta,
+                   37.0 / 5000.0);
+  EXPECT_THROW(maximise_likelihood(testing::point_model(1.0), window, {0.0}, MleOptions{}),
+               core::ArgumentError);
+  EXPECT_THROW(maximise_likelihood(testing::point_model(1.0), window, {1.0, 2.0}, MleOptions{}),
                core::ArgumentError);
 }
 
@@ -32,7 +29,7 @@ TEST(MaximumLikelihood, PoissonIsClosedForm) {
 // statistics, started at γ = 1, lands within 3 standard errors of the truth, and the fitted
 // model's expected statistics match the observed ones.
 TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
-  model::ShapeProcessModel truth = points(0.03);
+  model::ShapeProcessModel truth = testing::point_model(0.03);
   model::PairInteraction pair;
   model::AxisParameters axis;
   axis.thresholds = {0.0, 3.0, 6.0};
@@ -76,7 +73,7 @@ TEST(MaximumLikelihood, ReweightingMovesAPoissonMeanByExpDelta) {
   setting.burn_in = 2000;
   setting.steps = 60000;
   setting.observe_every = 50;
-  const StatisticsMoments sample = statistics_moments(points(0.5), window, setting);
+  const StatisticsMoments sample = statistics_moments(testing::point_model(0.5), window, setting);
   EXPECT_NEAR(sample.mean[0], 50.0, 4 * sample.standard_error[0]);
   double share = 0.0;
   const StatisticsMoments same = reweighted(sample, {0.0}, share);

@@ -9,6 +9,7 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "tests/point_model.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -22,16 +23,9 @@ SampleResult sample_with_seed(const model::ShapeProcessModel& m, const geometry:
   return sample_shape_process(m, domain, options, random);
 }
 
-model::ShapeProcessModel poisson_points(double beta) {
-  model::ShapeProcessModel m;
-  m.categories.push_back({"points", beta});
-  m.measurement.directions = 1;
-  return m;
-}
-
 TEST(BirthDeath, PoissonCountsFollowPoisson) {
   // γ = 1 everywhere: the number of elements is Poisson(β|D|) = Poisson(20).
-  const model::ShapeProcessModel m = poisson_points(0.01);
+  const model::ShapeProcessModel m = testing::point_model(0.01);
   const geometry::Domain domain = geometry::Domain::from_sizes({50, 40}, geometry::Boundary::torus);
   const int runs = 300;
   std::vector<double> counts;
@@ -56,7 +50,7 @@ TEST(BirthDeath, PoissonCountsFollowPoisson) {
 // Poisson with mean β (|R| − the disc the fixed point in R excludes) (300 chains, 4 standard
 // errors).
 TEST(BirthDeath, FixedElementsStayAndBirthsKeepToTheFreeRegion) {
-  model::ShapeProcessModel m = poisson_points(0.02);  // two categories: half the births each
+  model::ShapeProcessModel m = testing::point_model(0.02);  // two categories: half the births each
   m.categories.push_back({"fixed", 1e-300});
   model::PairInteraction pair;
   pair.first = 0;
@@ -143,7 +137,7 @@ TEST(BirthDeath, SameSeedSameOutput) {
 // with A = 1 − |torus disc of radius 0.6| (computed here on a fine grid). The sampler's final
 // counts over many seeds follow it (chi-square, 2 degrees of freedom).
 TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
-  model::ShapeProcessModel m = poisson_points(10.0);
+  model::ShapeProcessModel m = testing::point_model(10.0);
   model::PairInteraction pair;
   model::AxisParameters axis;
   axis.thresholds = {0.6};
@@ -217,7 +211,7 @@ TEST(BirthDeath, ElementsLieInsideAShapedDomain) {
 
 TEST(BirthDeath, IntensityMapScalesTheDensity) {
   // Left half 0.25, right half 0.75: of a Poisson pattern's points, 3/4 fall on the right.
-  const model::ShapeProcessModel m = poisson_points(0.05);
+  const model::ShapeProcessModel m = testing::point_model(0.05);
   geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
   domain.set_intensity(std::make_shared<const geometry::Raster>(
       raster(2, 1, [](int x, int) { return x == 0 ? 0.25f : 0.75f; })));
@@ -238,7 +232,7 @@ TEST(BirthDeath, IntensityMapScalesTheDensity) {
 // strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus, refitted with its
 // own thresholds: every parameter within 3 standard errors of the truth.
 TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
-  model::ShapeProcessModel truth = poisson_points(0.02);
+  model::ShapeProcessModel truth = testing::point_model(0.02);
   truth.measurement.directions = 4;
   truth.measurement.direction = geometry::DirectionKind::centroid;
   model::PairInteraction pair;
