@@ -47,13 +47,7 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
                       geometry::Boundary boundary, geometry::EdgeTreatment edge,
                       const FidelityOptions& options, FidelityReport& report) {
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
-  fit::ChainsSetting setting;
-  setting.chains = options.chains;
-  setting.threads = options.threads;
-  setting.seed = options.seed;
-  setting.burn_in = options.burn_in;
-  setting.steps = options.steps;
-  setting.observe_every = std::max<long long>(1, options.steps / 100);
+  fit::ChainsSetting setting = options.sampling;
   if (edge == geometry::EdgeTreatment::border) {
     const fit::BorderCondition border = fit::border_condition(exemplar, model);
     setting.fixed = border.fixed;
@@ -103,7 +97,7 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
   for (int axis = 0; axis < exemplar.dimension; ++axis)
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
-  core::Random random(options.seed);
+  core::Random random(options.sampling.seed);
   const sample::SampleResult output =
       sample::sample_shape_process(model, domain, sample::SamplerOptions{}, random);
   report.output_elements = static_cast<int>(output.scene.elements.size());
@@ -143,7 +137,7 @@ double chi_square_upper_tail(double x, int degrees) {
 FidelityReport check_fidelity(const geometry::Scene& exemplar,
                               const model::ShapeProcessModel& model, geometry::Boundary boundary,
                               geometry::EdgeTreatment edge, const FidelityOptions& options) {
-  core::check(options.chains >= 2, "fidelity", "at least two chains are needed");
+  core::check(options.sampling.chains >= 2, "fidelity", "at least two chains are needed");
   core::check_positive("fidelity", "the output scale", options.scale);
   FidelityReport report;
   report.exemplar_elements = static_cast<int>(exemplar.elements.size());

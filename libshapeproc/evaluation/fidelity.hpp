@@ -9,23 +9,31 @@
 // scripts/fidelity.sh runs it over a folder (`shapeproc fidelity`).
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "libshapeproc/fit/monte_carlo_moments.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::evaluation {
 
+// The own-window chains by default: 50 of 20,000 steps of burn-in and 20,000 observed every 200.
+inline fit::ChainsSetting fidelity_chains() {
+  fit::ChainsSetting s;
+  s.chains = 50;
+  s.burn_in = 20000;
+  s.steps = 20000;
+  s.observe_every = 200;
+  return s;
+}
+
 struct FidelityOptions {
-  int chains = 50;
-  int threads = 0;  // 0: one per core
-  std::uint64_t seed = 1;
-  long long burn_in = 20000;  // steps of each own-window chain before it is observed
-  long long steps = 20000;    // steps of each own-window chain after the burn-in
-  double scale = 2.0;         // the output's sides, in exemplar sides
+  // The own-window chains (check_fidelity sets their fixed elements and free region from the
+  // edge treatment).
+  fit::ChainsSetting sampling = fidelity_chains();
+  double scale = 2.0;  // the output's sides, in exemplar sides
 };
 
 struct StatisticCheck {

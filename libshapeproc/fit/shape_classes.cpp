@@ -70,8 +70,7 @@ struct Identical {
 std::pair<double, double> size_of(const geometry::Shape& shape, int dimension) {
   const geometry::Box3 box = geometry::bounding_box(shape);
   if (box.isEmpty()) return {0.0, 0.0};
-  const geometry::Vec3 sizes = box.sizes();
-  return {sizes.head(dimension).prod(), sizes.norm()};
+  return {geometry::measure(box, dimension), box.sizes().norm()};
 }
 
 bool smaller(const Identical& a, const Identical& b) {

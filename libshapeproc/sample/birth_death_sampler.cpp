@@ -195,7 +195,8 @@ class ShapeProcessSampler::Chain {
     moved.position += offset_in_ball();
     moved.position = s_.domain_.wrap(moved.position);
     const bool inside = s_.domain_.periodic() ||
-                        (s_.domain_.contains(moved.position) && in_free_region(moved.position));
+                        (s_.domain_.contains(moved.position) &&
+                         (s_.options_.free_region.isEmpty() || in_free_region(moved.position)));
     const double new_term = inside ? log_lambda_over_beta(moved, slot) : kMinusInfinity;
     if (!std::isfinite(new_term)) return;
     const double old_term = state_.log_lambda_over_beta(slot);

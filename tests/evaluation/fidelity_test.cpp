@@ -31,9 +31,8 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
         {0, 0, geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0)});
   const model::ShapeProcessModel model = testing::point_model(60.0 / 10000.0);
   FidelityOptions options;
-  options.chains = 8;
-  options.burn_in = 2000;
-  options.steps = 20000;
+  options.sampling.chains = 8;
+  options.sampling.burn_in = 2000;
   const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open,
                                           geometry::EdgeTreatment::none, options);
   ASSERT_EQ(r.own_window.size(), 1u);

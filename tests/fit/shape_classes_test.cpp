@@ -43,6 +43,13 @@ struct Fixture {
   }
 };
 
+// `first` squares of side `a`, then `second` of side `b`.
+std::vector<double> two_sizes(int first, double a, int second, double b) {
+  std::vector<double> sides(static_cast<std::size_t>(first), a);
+  sides.insert(sides.end(), static_cast<std::size_t>(second), b);
+  return sides;
+}
+
 TEST(ShapeClasses, OneShapeEverywhereNeedsNoClass) {
   Fixture f(std::vector<double>(12, 3.0));
   assign_shape_classes(f.model, f.scene);
@@ -51,9 +58,7 @@ TEST(ShapeClasses, OneShapeEverywhereNeedsNoClass) {
 }
 
 TEST(ShapeClasses, IdenticalShapesFormClassesWithTheirShares) {
-  std::vector<double> sides(6, 2.0);
-  sides.insert(sides.end(), 9, 5.0);
-  Fixture f(sides);
+  Fixture f(two_sizes(6, 2.0, 9, 5.0));
   assign_shape_classes(f.model, f.scene);
   ASSERT_EQ(f.model.shape_classes.size(), 2u);
   EXPECT_EQ(f.model.shape_classes[0].label, "identical shapes");
@@ -81,9 +86,7 @@ TEST(ShapeClasses, TooManyShapesAreGroupedBySize) {
 // a sample are Poisson with means β |W| w_k, here 0.25 and 0.75 of 200 (within 4 standard
 // deviations), and its t(x) carries them after the category count.
 TEST(ShapeClasses, SamplesKeepTheClassShares) {
-  std::vector<double> sides(6, 2.0);
-  sides.insert(sides.end(), 6, 4.0);
-  Fixture f(sides);
+  Fixture f(two_sizes(6, 2.0, 6, 4.0));
   assign_shape_classes(f.model, f.scene);
   ASSERT_EQ(f.model.shape_classes.size(), 2u);
   f.model.shape_classes[0].weight = 0.25;
@@ -104,9 +107,7 @@ TEST(ShapeClasses, SamplesKeepTheClassShares) {
 
 // Without interaction the MLE is closed: β = n / |W| and each class's weight its share n_k / n.
 TEST(ShapeClasses, PoissonMaximumLikelihoodIsTheShares) {
-  std::vector<double> sides(6, 2.0);
-  sides.insert(sides.end(), 9, 5.0);
-  Fixture f(sides);
+  Fixture f(two_sizes(6, 2.0, 9, 5.0));
   assign_shape_classes(f.model, f.scene);
   const geometry::Domain window =
       geometry::Domain::from_sizes({100, 100}, geometry::Boundary::open);
@@ -119,7 +120,7 @@ TEST(ShapeClasses, PoissonMaximumLikelihoodIsTheShares) {
 }
 
 TEST(ShapeClasses, ValidationNamesTheField) {
-  Fixture f({2, 2, 2, 2, 2, 4, 4, 4, 4, 4});
+  Fixture f(two_sizes(5, 2.0, 5, 4.0));
   assign_shape_classes(f.model, f.scene);
   ASSERT_EQ(f.model.shape_classes.size(), 2u);
   f.model.shape_classes[1].weight = -1;

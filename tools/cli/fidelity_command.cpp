@@ -43,7 +43,7 @@ void print_row(const std::string& name, const evaluation::FidelityReport& r,
 
 void print_report(const evaluation::FidelityReport& r, const evaluation::FidelityOptions& o,
                   std::ostream& out) {
-  out << "own window, " << o.chains << " chains: statistic, exemplar, mean ± se, z\n";
+  out << "own window, " << o.sampling.chains << " chains: statistic, exemplar, mean ± se, z\n";
   for (const evaluation::StatisticCheck& c : r.own_window) {
     out << "  " << std::left << std::setw(34) << c.name << std::right << std::setw(8)
         << g(c.exemplar, 4) << std::setw(20) << (g(c.mean, 4) + " ± " + g(c.standard_error, 2))
@@ -94,10 +94,11 @@ void add_fidelity_command(CLI::App& app, Action& action,
       "collisions, shape mix)");
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("--model", args->model, "a model fitted to EXEMPLAR (default: fit it now)");
-  command->add_option("--chains", args->options.chains, "chains on the exemplar's own window")
+  command
+      ->add_option("--chains", args->options.sampling.chains, "chains on the exemplar's own window")
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
-  command->add_option("--seed", args->options.seed, "random seed")->capture_default_str();
+  command->add_option("--seed", args->options.sampling.seed, "random seed")->capture_default_str();
   command->add_option("--scale", args->options.scale, "the output's sides, in exemplar sides")
       ->check(positive_number())
       ->capture_default_str();
