@@ -6,13 +6,13 @@
 // along every such boundary.
 //
 // 2D: every neighbour whose boundaries may cross the cell gets local models from samples at the
-// cell's centre and corners: the distance as d + g·p + ½κ(t·p)² (a distance field grows linearly
-// along its gradient, so one curvature κ across it suffices), the direction as turning about a
-// pole (exact for directions between centres: sector boundaries are then rays). The cell is cut
-// along each modelled boundary (a level set as a few area-balanced chords, a sector boundary as
-// a line), nearest neighbours first, into convex pieces; each piece takes the bands of its side
-// and pieces in a hard core are dropped. Corner samples are shared between the cells that meet
-// at a corner (CornerCache).
+// cell's centre and corners: the distance as the distance field of a circle (level_set_chords.hpp),
+// the direction as turning about a pole (exact for directions between centres: sector boundaries
+// are then rays). The cell is cut along each modelled boundary (a level set as a few
+// area-balanced chords, a sector boundary as a line), nearest neighbours first, into convex
+// pieces; each piece takes the bands of its side and pieces in a hard core are dropped. A level
+// set curving more tightly than the chords can follow splits the cell into quarters (up to three
+// times). Corner samples are shared between the cells that meet at a corner (CornerCache).
 //
 // 3D: the cell (taken as the ball of the same measure) is cut at the estimated distance
 // |d(u) − δ| of each boundary, and several crossings combine as independent cuts.

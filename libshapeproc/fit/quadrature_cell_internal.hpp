@@ -9,10 +9,12 @@
 
 namespace shapeproc::fit {
 
+// `too_curved`: whether a level set crossing the cell curves with a radius below the cell's
+// half-diagonal (a closed curve within a few cells, which chords cannot follow).
 std::vector<CellPart> integrate_cell_plane(const CellContext& context,
                                            const geometry::Element& dummy,
                                            const geometry::Vec3& size, bool* uniform,
-                                           CornerCache* cache);
+                                           bool* too_curved, CornerCache* cache);
 
 std::vector<CellPart> integrate_cell_ball(const CellContext& context,
                                           const geometry::Element& dummy,

@@ -12,6 +12,7 @@
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/cell_cuts.hpp"
+#include "libshapeproc/fit/level_set_chords.hpp"
 #include "libshapeproc/fit/quadrature_cell_internal.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 
@@ -67,11 +68,12 @@ class PlaneCell {
     sides_.clear();
   }
 
-  std::vector<CellPart> integrate(bool* uniform) {
+  std::vector<CellPart> integrate(bool* uniform, bool* too_curved) {
     for (const Candidate& candidate : nearest_candidates()) {
       if (!model_neighbour(candidate)) break;
     }
     if (uniform) *uniform = true;
+    if (too_curved) *too_curved = too_curved_;
     if (forbidden_) return {};
     const std::vector<Piece>& pieces = cut_into_pieces(uniform);
     return parts_of(pieces);
@@ -337,30 +339,30 @@ class PlaneCell {
     return found;
   }
 
-  // Level sets of the distance at the thresholds that cross the cell, from its slope and
-  // curvature across the cell: d(p) ≈ d + g·p + ½κ (t·p)² with t across g, since along a
-  // gradient line a distance grows linearly. Slope by least squares through the centre from the
-  // corners off contact (at contact the field is flat), then κ from what is left.
+  // Level sets of the distance at the thresholds that cross the cell (level_set_chords.hpp): the
+  // gradient by least squares through the centre from the corners off contact, then the circle
+  // field through them from there.
   void add_distance_cuts(const NeighbourView& v, std::uint64_t axes) {
     const auto crossing =
         thresholds_within(dummy_.category, v.other->category, axes, v.d - corner_, v.d + corner_);
     if (crossing.empty()) return;
     const double d = v.d;
+    // The corners off contact (at contact the field is flat).
     std::array<double, 4> at;
     std::array<Point2, 4> q;
+    int off = 0;
     double sxx = 0.0, sxy = 0.0, syy = 0.0, bx = 0.0, by = 0.0;
-    int off_contact = 0;
     for (std::size_t i = 0; i < 4; ++i) {
-      at[i] = corner_distance(v, i);
-      q[i] = {kCorners[i].x * hx_, kCorners[i].y * hy_};
-      if (at[i] <= 0.0) continue;
-      const double qx = q[i].x, qy = q[i].y;
+      const double distance = corner_distance(v, i);
+      if (distance <= 0.0) continue;
+      const double qx = kCorners[i].x * hx_, qy = kCorners[i].y * hy_;
+      q[static_cast<std::size_t>(off)] = {qx, qy};
+      at[static_cast<std::size_t>(off++)] = distance;
       sxx += qx * qx;
       sxy += qx * qy;
       syy += qy * qy;
-      bx += qx * (at[i] - d);
-      by += qy * (at[i] - d);
-      ++off_contact;
+      bx += qx * (distance - d);
+      by += qy * (distance - d);
     }
     const double det = sxx * syy - sxy * sxy;
     const double corner4 = (corner_ * corner_) * (corner_ * corner_);
@@ -368,38 +370,17 @@ class PlaneCell {
     const double gy = det > 1e-12 * corner4 ? (sxx * by - sxy * bx) / det : 0.0;
     const double slope = std::hypot(gx, gy);
     if (!(slope > 1e-9)) return;
-    const double nx = gx / slope, ny = gy / slope;  // ξ along the gradient, η across
-    const double tx = -ny, ty = nx;
-    double fit = 0.0, weight = 0.0;
-    for (std::size_t i = 0; i < 4; ++i) {
-      if (at[i] <= 0.0) continue;
-      const double across = tx * q[i].x + ty * q[i].y;
-      const double w = 0.5 * across * across;
-      fit += w * (at[i] - d - gx * q[i].x - gy * q[i].y);
-      weight += w * w;
-    }
-    const bool curved = off_contact >= 3 && weight > 1e-3 * corner4;
     // A curvature radius below the cell's half-diagonal is taken as that radius.
-    const double bend =
-        std::clamp(curved ? 0.5 * fit / weight / slope : 0.0, -1.0 / corner_, 1.0 / corner_);
-    // The level set ξ = level − bend·η² as chords across the cell, each moved towards the
-    // parabola by 2/3 of its sagitta so that the areas balance; the convex side is the
-    // intersection of the chords' half-planes.
-    const double sagitta = std::abs(bend) * corner_ * corner_;
-    const int chords = sagitta < 0.05 * side_ ? 1 : sagitta < 0.5 * side_ ? 2 : 4;
+    const CircleField linear{gx / slope, gy / slope, slope, 0.0};
+    const CircleField field =
+        off >= 3 ? fitted_circle_field(q.data(), at.data(), off, d, linear, 1.0 / corner_) : linear;
     for (const auto& [b, threshold_axes] : crossing) {
-      const double level = (b - d) / slope;
-      PlaneCut cut{false, b, bend >= 0, -1, threshold_axes, static_cast<int>(sides_.size()),
-                   chords};
-      const double sign = cut.inside_below ? 1.0 : -1.0;
-      for (int i = 0; i < chords; ++i) {
-        const double e0 = -corner_ + 2 * corner_ * i / chords, e1 = e0 + 2 * corner_ / chords;
-        const double lift = (2.0 / 3.0) * bend * 0.25 * (e1 - e0) * (e1 - e0);
-        const double f0 = level - bend * e0 * e0 + lift, f1 = level - bend * e1 * e1 + lift;
-        const double s = (f1 - f0) / (e1 - e0);
-        // ξ − s·η ≤ f0 − s·e0 below the chord; ≥ on the other side.
-        sides_.push_back({sign * (nx - s * tx), sign * (ny - s * ty), sign * (f0 - s * e0)});
-      }
+      const LevelSet set =
+          level_set_at(field.nx, field.ny, field.slope, field.curvature, d, b, 1.0 / corner_);
+      PlaneCut cut{
+          false, b, set.curvature >= 0, -1, threshold_axes, static_cast<int>(sides_.size()), 0};
+      cut.side_count = append_level_chords(set, hx_, hy_, sides_);
+      too_curved_ |= std::abs(set.curvature) * corner_ >= 1.0 - 1e-9;  // clamped
       cuts_.push_back(cut);
     }
   }
@@ -518,14 +499,15 @@ class PlaneCell {
   bool on_lattice_ = false;
   model::InteractionCounts base_;  // neighbours with one effect on the whole cell
   bool forbidden_ = false;
+  bool too_curved_ = false;  // a level set curves more than the chords can follow
 };
 
 }  // namespace
 
 std::vector<CellPart> integrate_cell_plane(const CellContext& context,
                                            const geometry::Element& dummy, const Vec3& size,
-                                           bool* uniform, CornerCache* cache) {
-  return PlaneCell(context, dummy, size, cache).integrate(uniform);
+                                           bool* uniform, bool* too_curved, CornerCache* cache) {
+  return PlaneCell(context, dummy, size, cache).integrate(uniform, too_curved);
 }
 
 }  // namespace shapeproc::fit

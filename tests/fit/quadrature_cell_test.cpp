@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
@@ -143,6 +144,51 @@ TEST(CellPieces, SharedCornersChangeNothing) {
     }
   }
   EXPECT_GT(cache.size(), 0u);
+}
+
+// The disc a Strauss range r draws about one point, as the cells of a 48-cell grid cut it, at 16
+// positions of the point within a cell: its area against πr². The chords balanced over the
+// cell's diagonal instead of its width, and a parabola for the circle, shrank a disc of
+// r = 0.1 by 0.14% on average (0.19% at worst) and erred 1% at r = 0.03.
+TEST(CellPieces, DiscOfAStraussRangeHasItsArea) {
+  for (const double r : {0.1, 0.03}) {
+    geometry::Scene scene;
+    scene.window = geometry::Box3(Vec3(0, 0, 0), Vec3(1, 1, 0));
+    scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+    scene.categories.push_back({"a"});
+    for (const double at : {0.3, 0.6}) {
+      geometry::Element e;
+      e.position = Vec3(at, at, 0);
+      scene.elements.push_back(e);
+    }
+    FitOptions options;
+    options.measurement.directions = 1;
+    options.thresholds = {0.0, r};
+    const model::ShapeProcessModel model = fit_shape_process(scene, options).model;
+    scene.elements.resize(1);
+    double mean = 0.0, worst = 0.0;
+    for (int phase = 0; phase < 16; ++phase) {
+      const double h = 1.0 / 48;
+      scene.elements[0].position =
+          Vec3(0.5 + (phase % 4 + 0.1) * h / 4, 0.5 + (phase / 4 + 0.3) * h / 4, 0);
+      const CellGrid grid_of(scene, model, 48);
+      double inside = 0.0;
+      for (int row = 0; row < grid_of.rows; ++row) {
+        for (int column = 0; column < grid_of.columns; ++column) {
+          for (const CellPart& part :
+               integrate_cell(grid_of.context(), grid_of.dummy(column, row, 0), grid_of.cell)) {
+            if (!part.counts.empty()) inside += part.fraction * h * h;
+          }
+        }
+      }
+      const double error = inside / (core::kPi * r * r) - 1;
+      mean += error / 16;
+      worst = std::max(worst, std::abs(error));
+    }
+    // Measured: r = 0.1 +0.001% on average, 0.005% at worst; r = 0.03 +0.05%, 0.28%.
+    EXPECT_LT(std::abs(mean), r > 0.05 ? 2e-4 : 1e-3) << r;
+    EXPECT_LT(worst, r > 0.05 ? 5e-4 : 5e-3) << r;
+  }
 }
 
 TEST(CornerCache, MeasuresEachKeyOnceUntilCleared) {
