@@ -59,6 +59,9 @@ constexpr long long kRoughDivisor = 4;      // first simulations: a quarter of t
 constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a pair or more
 constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
 constexpr int kUnreachableAfter = 4;        // simulations without variance: unreachable
+constexpr std::size_t kAveraged = 8;        // estimates averaged in the final phase
+constexpr int kStalledAfter = 2;            // rough simulations without progress end that phase…
+constexpr double kNearTolerance = 2;        // …when the gap is within this many tolerances
 
 using Clock = std::chrono::steady_clock;
 
@@ -257,6 +260,21 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   std::vector<int> unvaried(p, 0);  // consecutive simulations in which t_k never varied
   model::ShapeProcessModel model = start;
   bool rough = true;
+  int stalled = 0;  // simulations since the gap last shrank
+  // Final phase: each simulation gives one estimate of the MLE (the maximum of its reweighted
+  // likelihood), whose Monte Carlo error is as large as the gap's; the next simulation runs at
+  // the mean of the last kAveraged estimates, so that the error of θ shrinks below the test's.
+  std::vector<std::vector<double>> estimates;
+  const auto mean_of_estimates = [&] {
+    const std::size_t first = estimates.size() > kAveraged ? estimates.size() - kAveraged : 0;
+    std::vector<double> mean = estimates.back();
+    for (std::size_t k : free) {
+      double sum = 0.0;
+      for (std::size_t e = first; e < estimates.size(); ++e) sum += estimates[e][k];
+      mean[k] = sum / static_cast<double>(estimates.size() - first);
+    }
+    return mean;
+  };
   struct Iterate {
     std::vector<double> theta, expected, expected_error;
     double worst_z = std::numeric_limits<double>::infinity();
@@ -295,7 +313,15 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     }
     const Gap g = newton->gap(m, r.theta);
     if (options.progress) options.progress(r.iterations, g.worst_z);
-    if (g.worst_z < best.worst_z) best = {r.theta, m.mean, m.standard_error, g.worst_z};
+    const bool improved = g.worst_z < best.worst_z;
+    if (improved) best = {r.theta, m.mean, m.standard_error, g.worst_z};
+    // The rough phase ends at the tolerance, or where the gap stops shrinking near it (its noise
+    // floor); far from it (a sampler that cannot mix), the simulations stay short.
+    stalled = improved ? 0 : stalled + 1;
+    if (rough && g.worst_z > r.tolerance && g.worst_z < kNearTolerance * r.tolerance &&
+        stalled >= kStalledAfter) {
+      rough = false;
+    }
     if (g.worst_z <= r.tolerance) {
       if (rough) {
         rough = false;  // within tolerance at a quarter of the precision: check at full length
@@ -303,8 +329,10 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       }
       r.converged = true;
       // The estimate: the maximum of the likelihood as the final sample approximates it
-      // (Geyer & Thompson), where its reweighting stays valid; otherwise the converged θ.
-      const std::vector<double> polished = newton->reweighted_steps(m, g, r.theta);
+      // (Geyer & Thompson), averaged with the final phase's earlier estimates, where the
+      // sample's reweighting stays valid; otherwise the converged θ.
+      estimates.push_back(newton->reweighted_steps(m, g, r.theta));
+      const std::vector<double> polished = mean_of_estimates();
       std::vector<double> delta(p, 0.0);
       for (std::size_t k : free) delta[k] = polished[k] - r.theta[k];
       double share = 1.0;
@@ -322,7 +350,12 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         r.iterations == options.max_iterations ||
         std::chrono::duration<double>(Clock::now() - clock).count() > options.max_seconds;
     if (last) break;  // θ stays where the reported expectations were estimated
-    r.theta = newton->reweighted_steps(m, g, r.theta);
+    if (rough) {
+      r.theta = newton->reweighted_steps(m, g, r.theta);
+    } else {
+      estimates.push_back(newton->reweighted_steps(m, g, r.theta));
+      r.theta = mean_of_estimates();
+    }
   }
   r.iterations = std::min(r.iterations, options.max_iterations);
   if (!r.converged) {  // the iterate closest to the exemplar, not the last one

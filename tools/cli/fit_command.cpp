@@ -140,8 +140,8 @@ void FitFlags::add_to(CLI::App& command) {
       ->capture_default_str();
   command
       .add_option("--estimator", estimator,
-                  "mle (maximum likelihood by MCMC, started from the MPL fit; edge none or "
-                  "periodic) or mpl (maximum pseudo-likelihood alone, fast); see docs/fit.md")
+                  "mle (maximum likelihood by MCMC, started from the MPL fit; every edge "
+                  "treatment) or mpl (maximum pseudo-likelihood alone, fast); see docs/fit.md")
       ->check(CLI::IsMember({"mpl", "mle"}))
       ->capture_default_str();
   command.add_option("--mle-chains", mle_chains, "MLE: chains per iteration")
