@@ -28,6 +28,7 @@ struct Scene {
   std::vector<Category> categories;
   std::vector<Shape> shapes;  // local coordinates, bounding-box centre at the origin
   std::vector<Element> elements;
+  std::vector<std::string> notes;  // what the reader decided or met, one sentence each
 
   // Area (2D) or volume (3D) of the window.
   double window_measure() const;

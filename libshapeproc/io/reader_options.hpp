@@ -22,6 +22,12 @@ struct CategoryRule {
 
 // What a non-layer SVG `<g>` is: one element (Inkscape's habit) or a container like a layer.
 enum class GroupMode { element, container };
+// What an SVG element is (`--elements`): a connected piece of visible ink (geometry/
+// visual_elements.hpp), a non-layer group (drawables outside groups stand alone), each drawable,
+// or each disjoint subpath of a drawable. `automatic`: groups when the file has a non-layer group
+// with drawables (a group wrapping everything only carries style) or was written by this project
+// (its outputs write one drawable or group per element), otherwise visual.
+enum class ElementRule { automatic, visual, groups, paths, subpaths };
 // How a mesh file is split into elements: connected components, or OBJ `o`/`g` groups.
 enum class MeshSplit { components, groups };
 
@@ -35,7 +41,12 @@ struct WindowOption {
 };
 
 struct ReaderOptions {
-  bool split_subpaths = false;
+  ElementRule elements = ElementRule::automatic;
+  bool split_subpaths = false;   // the older spelling of elements = subpaths
+  bool nested_separate = false;  // visual: a piece inside another's hole is its own element
+  // The file is one period of a seamless repeat: pieces the border cuts join their counterparts
+  // across it (SVG), and the window is the tile.
+  bool tile = false;
   GroupMode groups = GroupMode::element;
   CategoryRule category_by;
   MeshSplit mesh_split = MeshSplit::components;

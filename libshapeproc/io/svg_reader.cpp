@@ -11,6 +11,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/geometry/subpath_components.hpp"
+#include "libshapeproc/geometry/visual_elements.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/text.hpp"
 
@@ -184,10 +185,15 @@ class SvgReader {
     return local_name(node) == "rect" && std::string_view(node.attribute("id").value()) == "window";
   }
   void set_window_from_root(pugi::xml_node root);
+  // Whether a non-layer group holds drawables (then elements are groups unless asked otherwise).
+  bool has_element_groups(pugi::xml_node node) const;
+  // The elements regrouped as connected pieces of ink (visual), or joined across the tile.
+  void regroup_as_seen();
 
   std::string_view text_;
   std::string file_;
   const ReaderOptions& options_;
+  ElementRule rule_ = ElementRule::groups;  // options_.elements, decided for this file
   pugi::xml_document document_;
   std::unordered_map<std::string, pugi::xml_node> ids_;
   std::vector<CssRule> css_;
@@ -315,13 +321,65 @@ Scene SvgReader::read() {
 
   const std::optional<State> root_state = enter(root, State());
   scene_.dimension = 2;
+  rule_ = options_.split_subpaths ? ElementRule::subpaths : options_.elements;
+  if (rule_ == ElementRule::automatic) {
+    // The project's own outputs name their elements: each drawable or group is one.
+    const bool written_here =
+        root.find_child_by_attribute("id", "shapeproc") || root.find_node([](pugi::xml_node n) {
+          return static_cast<bool>(n.attribute("data-category"));
+        });
+    rule_ = written_here || has_element_groups(root) ? ElementRule::groups : ElementRule::visual;
+  }
   if (root_state) walk_container(root, *root_state);
   set_window_from_root(root);
   if (scene_.elements.empty()) {
     throw core::InputError(file_, 0,
                            "no elements found (nothing drawable outside <defs> and hidden parts)");
   }
+  if (rule_ == ElementRule::visual || options_.tile) regroup_as_seen();
   return std::move(scene_);
+}
+
+bool SvgReader::has_element_groups(pugi::xml_node node) const {
+  if (options_.groups == GroupMode::container) return false;
+  std::vector<pugi::xml_node> drawn;  // children that draw: drawables, groups, nested svg
+  for (pugi::xml_node child : node.children()) {
+    if (child.type() != pugi::node_element) continue;
+    const std::string name = local_name(child);
+    if (kNeverDrawn.count(name) || name.find(':') != std::string::npos || is_window(child))
+      continue;
+    if (kGroups.count(name) || name == "svg" || kDrawables.count(name) || name == "use")
+      drawn.push_back(child);
+  }
+  // A group holding everything is a wrapper that carries style (fill, transform), not an element.
+  if (drawn.size() == 1 && kGroups.count(local_name(drawn.front())))
+    return has_element_groups(drawn.front());
+  for (pugi::xml_node child : drawn) {
+    const std::string name = local_name(child);
+    if (kGroups.count(name) && !is_layer(child)) return true;
+    if ((kGroups.count(name) || name == "svg") && has_element_groups(child)) return true;
+  }
+  return false;
+}
+
+void SvgReader::regroup_as_seen() {
+  geometry::VisualOptions visual;
+  visual.nested_separate = options_.nested_separate;
+  visual.tile = options_.tile;
+  visual.keep_elements = rule_ != ElementRule::visual;
+  geometry::VisualElements regrouped = geometry::visual_elements(scene_, visual);
+  if (regrouped.scene.elements.empty()) {
+    throw core::InputError(file_, 0, "no ink inside the tile");
+  }
+  regrouped.scene.notes = std::move(regrouped.notes);
+  const std::size_t subpaths = regrouped.subpaths, elements = regrouped.scene.elements.size();
+  if (rule_ == ElementRule::visual && subpaths >= 8 && elements * 8 <= subpaths) {
+    regrouped.scene.notes.push_back(
+        std::to_string(subpaths) + " subpaths formed " + std::to_string(elements) +
+        " elements as seen: if the drawing's elements are smaller, try --nested separate or "
+        "--elements subpaths");
+  }
+  scene_ = std::move(regrouped.scene);
 }
 
 void SvgReader::set_window_from_root(pugi::xml_node root) {
@@ -382,7 +440,8 @@ void SvgReader::walk_container(pugi::xml_node node, const State& state) {
       continue;
     }
     if (kGroups.count(name)) {
-      if (is_layer(child) || options_.groups == GroupMode::container) {
+      if (is_layer(child) || options_.groups == GroupMode::container ||
+          rule_ == ElementRule::visual || rule_ == ElementRule::paths) {
         State inside = *child_state;
         if (is_layer(child)) {
           const pugi::xml_attribute label = attribute_by_local_name(child, "label");
@@ -406,7 +465,7 @@ void SvgReader::make_element(pugi::xml_node node, const State& state) {
   if (parts.empty()) return;
   const int category = scene_.category_index(category_of(node, state, parts));
   const std::string id = node.attribute("id").value();
-  if (options_.split_subpaths && kDrawables.count(local_name(node))) {
+  if (rule_ == ElementRule::subpaths && kDrawables.count(local_name(node))) {
     for (const Drawable2& part : parts) {
       for (Drawable2& piece : geometry::split_disjoint_subpaths(part)) {
         geometry::Shape shape{geometry::PlanarShape{{std::move(piece)}}, id};

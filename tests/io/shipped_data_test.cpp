@@ -9,7 +9,7 @@ namespace {
 
 struct Shipped {
   const char* file;
-  const char* options;  // "split" or "fill" or ""
+  const char* options;  // "split", "fill", "layer", "window", "separate", "tile" or ""
   std::size_t elements;
   std::size_t categories;
 };
@@ -24,6 +24,8 @@ TEST_P(ShippedData, ElementAndCategoryCounts) {
   if (o == "fill") options.category_by = CategoryRule::parse("fill");
   if (o == "layer") options.category_by = CategoryRule::parse("layer");
   if (o == "window") options.window = WindowOption::parse("0,100,0,100");
+  if (o == "separate") options.nested_separate = true;
+  if (o == "tile") options.tile = true;
   const geometry::Scene scene = read_scene(testing::data_path(s.file), options);
   EXPECT_EQ(scene.elements.size(), s.elements);
   EXPECT_EQ(scene.categories.size(), s.categories);
@@ -40,7 +42,10 @@ INSTANTIATE_TEST_SUITE_P(
         Shipped{"svg/dots-random.svg", "", 30, 1}, Shipped{"svg/dashes-rows.svg", "", 29, 1},
         Shipped{"svg/crescents-grid.svg", "", 25, 1}, Shipped{"svg/two-kinds.svg", "fill", 34, 2},
         Shipped{"svg/two-kinds.svg", "layer", 34, 2}, Shipped{"svg/rings.svg", "split", 19, 1},
-        Shipped{"svg/rings.svg", "", 1, 1},
+        Shipped{"svg/rings.svg", "", 14, 1},  // as seen: five dots sit in rings' holes
+        Shipped{"svg/rings.svg", "separate", 19, 1},
+        Shipped{"third-party/hero-patterns/bubbles.svg", "tile", 17, 1},
+        Shipped{"third-party/hero-patterns/tic-tac-toe.svg", "", 4, 1},
         Shipped{"third-party/hero-patterns/bubbles.svg", "split", 17, 1},
         Shipped{"third-party/hero-patterns/tic-tac-toe.svg", "split", 4, 1},
         Shipped{"points/clusters.csv", "window", 39, 2}, Shipped{"mesh/pebbles.obj", "", 12, 1}));

@@ -18,7 +18,15 @@ const char* kOpen =
     R"(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" )"
     R"(xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" viewBox="0 0 100 100">)";
 
-Scene read(const std::string& body, const ReaderOptions& options = {}) {
+// Groups or lone drawables as elements unless a test asks otherwise: these scenes place shapes
+// on top of each other, which visual reading would join.
+ReaderOptions groups_rule() {
+  ReaderOptions options;
+  options.elements = ElementRule::groups;
+  return options;
+}
+
+Scene read(const std::string& body, const ReaderOptions& options = groups_rule()) {
   return parse_svg(std::string(kOpen) + body + "</svg>", "test.svg", options);
 }
 
@@ -143,7 +151,7 @@ TEST(SvgStructure, InkscapeGroupingRules) {
   const Scene scene = read(body);
   ASSERT_EQ(scene.elements.size(), 3u);  // circle, the group (one element), lone rect
   EXPECT_EQ(planar(scene, 1).parts.size(), 2u);
-  ReaderOptions containers;
+  ReaderOptions containers = groups_rule();
   containers.groups = GroupMode::container;
   EXPECT_EQ(read(body, containers).elements.size(), 4u);
 }
@@ -152,7 +160,7 @@ TEST(SvgStructure, SplitSubpathsMakesPiecesOfAPath) {
   const std::string body =
       R"(<path fill-rule="evenodd" d="M0 0h20v20h-20z M5 5h10v10h-10z M8 8h4v4h-4z M40 0h5v5h-5z"/>)";
   EXPECT_EQ(read(body).elements.size(), 1u);
-  ReaderOptions split;
+  ReaderOptions split = groups_rule();
   split.split_subpaths = true;
   const Scene scene = read(body, split);
   ASSERT_EQ(scene.elements.size(), 3u);  // square with hole, dot in the hole, far square
@@ -206,7 +214,7 @@ TEST(SvgCategories, EveryRule) {
       R"(<rect class="b" data-kind="y" fill="#ff0000" stroke="blue" width="1" height="1"/></g>)"
       R"(<g inkscape:groupmode="layer" inkscape:label="back" data-kind="z"><rect class="a" fill="#00f" width="1" height="1"/></g>)";
   auto names = [&](const std::string& rule) {
-    ReaderOptions options;
+    ReaderOptions options = groups_rule();
     options.category_by = CategoryRule::parse(rule);
     const Scene scene = read(body, options);
     std::vector<std::string> result;

@@ -15,6 +15,14 @@
 namespace shapeproc::metrics {
 namespace {
 
+// These scenes stand for placements that may overlap: each drawable is one element (visual
+// reading would join overlapping ones).
+io::ReaderOptions each_drawable() {
+  io::ReaderOptions options;
+  options.elements = io::ElementRule::paths;
+  return options;
+}
+
 using geometry::Vec3;
 
 geometry::Scene point_scene(const std::vector<Vec3>& points, double width, double height) {
@@ -75,7 +83,7 @@ TEST(Collisions, TwoOverlappingSquaresAndOneApart) {
   const std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">
     <rect x="10" y="10" width="20" height="20"/><rect x="25" y="25" width="20" height="20"/>
     <rect x="70" y="70" width="20" height="20"/></svg>)";
-  const geometry::Scene scene = io::parse_svg(svg, "squares.svg", {});
+  const geometry::Scene scene = io::parse_svg(svg, "squares.svg", each_drawable());
   const SceneStatistics s = compute_statistics(scene, StatisticsOptions{}, core::Random(1));
   ASSERT_EQ(s.collisions.pairs.size(), 1u);
   EXPECT_EQ(s.collisions.elements, 2);
@@ -89,7 +97,7 @@ TEST(Collisions, NestedAndTouchingShapesCollideSeparateOnesDoNot) {
     <rect x="10" y="10" width="40" height="40"/><rect x="20" y="20" width="10" height="10"/>
     <rect x="60" y="10" width="10" height="10"/><rect x="70" y="10" width="10" height="10"/>
     <rect x="60" y="60" width="10" height="10"/><rect x="71" y="60" width="10" height="10"/></svg>)";
-  const SceneStatistics s = compute_statistics(io::parse_svg(svg, "nested.svg", {}),
+  const SceneStatistics s = compute_statistics(io::parse_svg(svg, "nested.svg", each_drawable()),
                                                StatisticsOptions{}, core::Random(1));
   EXPECT_EQ(s.collisions.pairs.size(), 2u);  // nested, touching; the last two are 1 apart
   EXPECT_EQ(s.collisions.elements, 4);
@@ -169,7 +177,7 @@ TEST(SceneStatistics, PairCorrelationOfIndependentPlacementsIsOne) {
         << "\" width=\"8\" height=\"4\"/>";
   }
   svg << "</svg>";
-  const geometry::Scene squares = io::parse_svg(svg.str(), "squares.svg", {});
+  const geometry::Scene squares = io::parse_svg(svg.str(), "squares.svg", each_drawable());
   StatisticsOptions so = torus(10.0);
   so.correlation_bins = 5;
   const SceneStatistics q = compute_statistics(squares, so, core::Random(1));

@@ -8,8 +8,23 @@
 namespace shapeproc::cli {
 
 void ReaderFlags::add_to(CLI::App& command) {
+  command
+      .add_option("--elements", elements,
+                  "SVG: what an element is: visual (a connected piece of ink), groups, paths or "
+                  "subpaths; auto: groups when the file has non-layer groups, else visual")
+      ->check(CLI::IsMember({"auto", "visual", "groups", "paths", "subpaths"}))
+      ->capture_default_str();
+  command
+      .add_option("--nested", nested,
+                  "SVG visual elements: a piece inside another's hole joins it or stays separate")
+      ->check(CLI::IsMember({"join", "separate"}))
+      ->capture_default_str();
+  command.add_flag("--tile", tile,
+                   "SVG: the file is one period of a seamless repeat: pieces the border cuts "
+                   "join across it, and fits use periodic edges");
   command.add_flag("--split-subpaths", split_subpaths,
-                   "SVG: each disjoint subpath of a path is its own element (holes stay)");
+                   "SVG: each disjoint subpath of a path is its own element (holes stay); the "
+                   "same as --elements subpaths");
   command.add_option("--groups", groups, "SVG: a non-layer <g> is one element or a container")
       ->check(CLI::IsMember({"element", "container"}))
       ->capture_default_str();
@@ -24,6 +39,13 @@ void ReaderFlags::add_to(CLI::App& command) {
 
 io::ReaderOptions ReaderFlags::options() const {
   io::ReaderOptions options;
+  options.elements = elements == "visual"     ? io::ElementRule::visual
+                     : elements == "groups"   ? io::ElementRule::groups
+                     : elements == "paths"    ? io::ElementRule::paths
+                     : elements == "subpaths" ? io::ElementRule::subpaths
+                                              : io::ElementRule::automatic;
+  options.nested_separate = nested == "separate";
+  options.tile = tile;
   options.split_subpaths = split_subpaths;
   options.groups = groups == "container" ? io::GroupMode::container : io::GroupMode::element;
   options.category_by = io::CategoryRule::parse(category_by);
@@ -33,9 +55,9 @@ io::ReaderOptions ReaderFlags::options() const {
 }
 
 nlohmann::json ReaderFlags::to_json() const {
-  nlohmann::json j = {{"split_subpaths", split_subpaths},
-                      {"groups", groups},
-                      {"category_by", category_by},
+  nlohmann::json j = {{"elements", elements}, {"nested", nested},
+                      {"tile", tile},         {"split_subpaths", split_subpaths},
+                      {"groups", groups},     {"category_by", category_by},
                       {"split", split}};
   if (!window.empty()) j["window"] = window;
   return j;

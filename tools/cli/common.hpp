@@ -14,6 +14,9 @@ namespace shapeproc::cli {
 
 // Reader options as typed on the command line, turned into io::ReaderOptions after parsing.
 struct ReaderFlags {
+  std::string elements = "auto";
+  std::string nested = "join";
+  bool tile = false;
   bool split_subpaths = false;
   std::string groups = "element";
   std::string category_by = "none";

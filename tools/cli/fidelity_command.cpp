@@ -69,12 +69,13 @@ int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& 
       args.model.empty()
           ? fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity).model
           : io::read_model(args.model);
+  const std::string edge = args.fit.edge_for(args.reader);
   const geometry::Boundary boundary =
-      args.fit.edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
+      edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
   args.verbosity.stage("checking the model against the exemplar");
   const evaluation::FidelityReport report = evaluation::check_fidelity(
       exemplar, model, boundary,
-      args.fit.edge == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none,
+      edge == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none,
       args.options);
   if (args.row)
     print_row(std::filesystem::path(args.input).filename().string(), report, model, out);

@@ -59,7 +59,7 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
                             const VerbosityFlags& verbosity) {
-  fit::FitOptions options = flags.options();
+  fit::FitOptions options = flags.options(reader);
   verbosity.stage("reading " + input);
   const geometry::Scene exemplar = io::read_scene(input, reader.options());
   // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
@@ -97,6 +97,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   provenance["arguments"] = arguments;
   provenance["reader"] = reader.to_json();
   provenance["options"] = flags.to_json();
+  provenance["options"]["edge"] = flags.edge_for(reader);
   provenance["options"]["directions"] = result.model.measurement.directions;
   result.model.fit_json = provenance.dump();
   return result;
@@ -110,8 +111,11 @@ void FitFlags::add_to(CLI::App& command) {
   auto* t = command.add_option("--thresholds", thresholds,
                                "thresholds d0,d1,... for every pair and axis");
   q->excludes(t);
-  command.add_option("--edge", edge, "edge treatment: none, periodic or border")
-      ->check(CLI::IsMember({"none", "periodic", "border"}))
+  command
+      .add_option("--edge", edge,
+                  "edge treatment: none, periodic or border; auto: periodic for a --tile, else "
+                  "none")
+      ->check(CLI::IsMember({"auto", "none", "periodic", "border"}))
       ->capture_default_str();
   add_measurement_kind_options(command, distance, direction);
   command
@@ -162,8 +166,14 @@ fit::MleOptions FitFlags::mle_options() const {
   return o;
 }
 
-fit::FitOptions FitFlags::options() const {
+std::string FitFlags::edge_for(const ReaderFlags& reader) const {
+  if (edge != "auto") return edge;
+  return reader.tile ? "periodic" : "none";
+}
+
+fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   fit::FitOptions o;
+  const std::string edge = edge_for(reader);
   o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");

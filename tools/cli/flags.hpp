@@ -24,7 +24,7 @@ struct FitFlags {
   int directions = 0;
   std::string quantiles = "0,0.1,0.2";
   std::string thresholds;
-  std::string edge = "none";
+  std::string edge = "auto";  // none, periodic or border; auto: periodic for a --tile, else none
   std::string distance = "shape";
   std::string direction = "gravitation";
   int quadrature = 0;
@@ -39,7 +39,9 @@ struct FitFlags {
   std::uint64_t mle_seed = fit::MleOptions{}.sampling.seed;
 
   void add_to(CLI::App& command);
-  fit::FitOptions options() const;  // throws core::UsageError
+  // The edge treatment, with auto resolved for the reader's flags.
+  std::string edge_for(const ReaderFlags& reader) const;
+  fit::FitOptions options(const ReaderFlags& reader) const;  // throws core::UsageError
   fit::MleOptions mle_options() const;
   nlohmann::json to_json() const;
 };

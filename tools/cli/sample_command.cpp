@@ -261,7 +261,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
       args->sample.check(args->output);
-      args->fit.options();  // its own checks, before reading or fitting anything
+      args->fit.options(args->reader);  // its own checks, before reading or fitting anything
       args->reader.options();
       const fit::FitResult fitted =
           fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity);

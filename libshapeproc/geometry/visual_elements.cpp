@@ -1,0 +1,335 @@
+#include "libshapeproc/geometry/visual_elements.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <optional>
+
+namespace shapeproc::geometry {
+
+namespace {
+
+// One subpath of the scene, flattened, in scene coordinates.
+struct Subpath {
+  std::size_t drawable = 0;  // into Grouping::drawables_
+  std::vector<Vec2> polyline;
+  bool closed = false;
+  Box2 box;
+  double area = 0.0;  // of the closed polygon
+  Path2 path;         // as drawn (clipped to the tile: the clipped polygon)
+};
+
+// One drawable of the scene, in scene coordinates: its style and the subpaths it holds.
+struct Drawn {
+  Drawable2 drawable;  // paths moved out into Subpath::path
+  std::size_t element = 0;
+  int category = 0;
+  std::string name;
+  Box2 box;
+  std::vector<std::size_t> subpaths;
+};
+
+constexpr double kBorderSnap = 1e-3;
+
+// Another subpath joined to this one, its copy moved by `shift` (a whole number of periods).
+struct Link {
+  std::size_t to;
+  Vec2 shift;
+};
+
+// Sutherland–Hodgman: the polygon clipped to the box (the box is convex, so the result is right
+// for any polygon; where the polygon leaves and re-enters, the result runs along the box's side).
+std::vector<Vec2> clip_to_box(std::vector<Vec2> polygon, const Box2& box) {
+  for (int side = 0; side < 4 && !polygon.empty(); ++side) {
+    const int axis = side / 2;
+    const bool upper = side % 2 == 1;
+    const double limit = upper ? box.max()[axis] : box.min()[axis];
+    const auto inside = [&](const Vec2& p) { return upper ? p[axis] <= limit : p[axis] >= limit; };
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2& a = polygon[i];
+      const Vec2& b = polygon[(i + 1) % polygon.size()];
+      if (inside(a)) out.push_back(a);
+      if (inside(a) != inside(b)) {
+        const double t = (limit - a[axis]) / (b[axis] - a[axis]);
+        Vec2 crossing = a + t * (b - a);
+        crossing[axis] = limit;
+        out.push_back(crossing);
+      }
+    }
+    polygon = std::move(out);
+  }
+  return polygon;
+}
+
+Path2 closed_polyline_path(const std::vector<Vec2>& polygon) {
+  Path2 path;
+  path.closed = true;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    path.segments.push_back(Segment2::line(polygon[i], polygon[(i + 1) % polygon.size()]));
+  return path;
+}
+
+class Grouping {
+ public:
+  Grouping(const Scene& scene, const VisualOptions& options) : scene_(scene), options_(options) {
+    const Vec3 sizes = scene.window.sizes();
+    period_ = Vec2(sizes.x(), sizes.y());
+    window_ = Box2(Vec2(scene.window.min().x(), scene.window.min().y()),
+                   Vec2(scene.window.max().x(), scene.window.max().y()));
+    shifts_.push_back(Vec2::Zero());
+    if (options.tile) {
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          if (dx != 0 || dy != 0) shifts_.push_back(Vec2(dx * period_.x(), dy * period_.y()));
+    }
+  }
+
+  VisualElements run() {
+    collect_subpaths();
+    links_.assign(subpaths_.size(), {});
+    if (options_.keep_elements) join_within_elements();
+    join_crossing_outlines();
+    join_contained();
+    return assemble();
+  }
+
+ private:
+  // Every subpath of every element, flattened in scene coordinates (clipped to the tile).
+  void collect_subpaths() {
+    for (std::size_t e = 0; e < scene_.elements.size(); ++e) {
+      const Shape placed = scene_.placed_shape(e);
+      const auto* planar = std::get_if<PlanarShape>(&placed.geometry);
+      if (!planar) continue;
+      for (const Drawable2& drawable : planar->parts) {
+        Drawn drawn{Drawable2{{}, drawable.fill_rule, drawable.style},
+                    e,
+                    scene_.elements[e].category,
+                    placed.name,
+                    Box2(),
+                    {}};
+        const bool filled = drawable.filled();
+        for (const Path2& path : drawable.paths) {
+          if (path.segments.empty()) continue;
+          Subpath s;
+          s.drawable = drawables_.size();
+          const Box2 box = bounding_box(path);
+          s.polyline = flatten(path, std::max(box.diagonal().norm() * 1e-3, 1e-9));
+          s.closed = path.closed || filled;
+          s.path = path;
+          if (options_.tile && s.closed) {
+            snap_to_border(s.polyline);
+            s.polyline = clip_to_box(std::move(s.polyline), window_);
+            if (s.polyline.size() < 3) continue;
+            s.path = closed_polyline_path(s.polyline);
+          }
+          if (s.polyline.empty()) continue;
+          for (const Vec2& p : s.polyline) s.box.extend(p);
+          if (s.closed) s.area = std::abs(signed_area(s.polyline));
+          if (options_.tile && s.closed && s.area <= 1e-12 * period_.x() * period_.y()) {
+            continue;  // only touches the tile
+          }
+          drawn.box.extend(s.box);
+          drawn.subpaths.push_back(subpaths_.size());
+          subpaths_.push_back(std::move(s));
+        }
+        if (!drawn.subpaths.empty()) drawables_.push_back(std::move(drawn));
+      }
+    }
+  }
+
+  // Vertices within kBorderSnap of the tile's smaller side from its border are moved onto it:
+  // drawings stop a rounding short of the border (leaf: 0.024 of 40 units), and their pieces
+  // must still meet their counterparts across it.
+  void snap_to_border(std::vector<Vec2>& polyline) const {
+    const double reach = kBorderSnap * std::min(period_.x(), period_.y());
+    for (Vec2& p : polyline) {
+      for (int axis = 0; axis < 2; ++axis) {
+        if (std::abs(p[axis] - window_.min()[axis]) < reach) p[axis] = window_.min()[axis];
+        if (std::abs(p[axis] - window_.max()[axis]) < reach) p[axis] = window_.max()[axis];
+      }
+    }
+  }
+
+  // Pieces of different categories stay apart: the user said they are different kinds.
+  void link(std::size_t a, std::size_t b, const Vec2& shift) {
+    if (drawables_[subpaths_[a].drawable].category != drawables_[subpaths_[b].drawable].category)
+      return;
+    links_[a].push_back({b, shift});
+    links_[b].push_back({a, -shift});
+  }
+
+  void join_within_elements() {
+    std::vector<std::optional<std::size_t>> first(scene_.elements.size());
+    for (std::size_t i = 0; i < subpaths_.size(); ++i) {
+      auto& f = first[drawables_[subpaths_[i].drawable].element];
+      if (f) {
+        link(*f, i, Vec2::Zero());
+      } else {
+        f = i;
+      }
+    }
+  }
+
+  static Box2 moved(Box2 box, const Vec2& shift) {
+    box.translate(shift);
+    return box;
+  }
+
+  // Outlines that cross or run together, also with the copies one period away.
+  void join_crossing_outlines() {
+    std::vector<Vec2> moved_polyline;
+    for (std::size_t i = 0; i < subpaths_.size(); ++i) {
+      for (std::size_t j = i; j < subpaths_.size(); ++j) {
+        for (const Vec2& shift : shifts_) {
+          if (j == i && shift.isZero()) continue;
+          const Subpath &a = subpaths_[i], &b = subpaths_[j];
+          if (!a.box.intersects(moved(b.box, shift))) continue;
+          moved_polyline = b.polyline;
+          for (Vec2& p : moved_polyline) p += shift;
+          if (polylines_overlap(a.polyline, a.closed, moved_polyline, b.closed)) link(i, j, shift);
+        }
+      }
+    }
+  }
+
+  // A point of the subpath's outline away from its vertices (the midpoint of its longest side):
+  // pieces touching at a vertex must not count as one inside the other.
+  static Vec2 probe(const Subpath& s) {
+    const std::size_t n = s.polyline.size();
+    if (n < 2) return s.polyline.front();
+    std::size_t longest = 0;
+    double length = -1.0;
+    for (std::size_t k = 0; k + (s.closed ? 0 : 1) < n; ++k) {
+      const double l = (s.polyline[(k + 1) % n] - s.polyline[k]).squaredNorm();
+      if (l > length) {
+        length = l;
+        longest = k;
+      }
+    }
+    return 0.5 * (s.polyline[longest] + s.polyline[(longest + 1) % n]);
+  }
+
+  // A subpath inside a drawable's closed subpaths: inside its fill (ink over ink, or a hole of
+  // its own drawable) it joins the innermost of them; inside a hole (within the outer contour but
+  // not filled) likewise, unless nested pieces stay separate.
+  void join_contained() {
+    for (std::size_t i = 0; i < subpaths_.size(); ++i) {
+      const Vec2 p = probe(subpaths_[i]);
+      for (const Drawn& d : drawables_) {
+        for (const Vec2& shift : shifts_) {
+          const Vec2 q = p - shift;
+          if (!d.box.contains(q)) continue;
+          int depth = 0, winding = 0;
+          std::size_t innermost = subpaths_.size();
+          for (std::size_t k : d.subpaths) {
+            const Subpath& container = subpaths_[k];
+            if (k == i || !container.closed || container.area <= subpaths_[i].area) continue;
+            if (!container.box.contains(q)) continue;
+            const int w = winding_number(container.polyline, q);
+            if (w == 0) continue;
+            ++depth;
+            winding += w;
+            if (innermost == subpaths_.size() || container.area < subpaths_[innermost].area)
+              innermost = k;
+          }
+          if (depth == 0) continue;
+          const bool in_fill =
+              d.drawable.filled() &&
+              (d.drawable.fill_rule == FillRule::evenodd ? depth % 2 == 1 : winding != 0);
+          if (in_fill || !options_.nested_separate) link(i, innermost, shift);
+        }
+      }
+    }
+  }
+
+  // Components of the links, each subpath at the offset its links give it; one element each.
+  VisualElements assemble() {
+    VisualElements result;
+    result.scene.dimension = 2;
+    result.scene.window = scene_.window;
+    result.scene.units = scene_.units;
+    result.scene.categories = scene_.categories;
+    result.subpaths = subpaths_.size();
+    std::vector<bool> seen(subpaths_.size(), false);
+    std::vector<Vec2> offset(subpaths_.size(), Vec2::Zero());
+    bool wraps = false;
+    for (std::size_t start = 0; start < subpaths_.size(); ++start) {
+      if (seen[start]) continue;
+      std::vector<std::size_t> members;
+      std::deque<std::size_t> queue{start};
+      seen[start] = true;
+      while (!queue.empty()) {
+        const std::size_t i = queue.front();
+        queue.pop_front();
+        members.push_back(i);
+        for (const Link& l : links_[i]) {
+          const Vec2 at = offset[i] + l.shift;
+          if (!seen[l.to]) {
+            seen[l.to] = true;
+            offset[l.to] = at;
+            queue.push_back(l.to);
+          } else if ((offset[l.to] - at).norm() > 1e-9 * period_.norm()) {
+            wraps = true;  // the piece meets itself a period away: a motif, not an element
+          }
+        }
+      }
+      std::sort(members.begin(), members.end());
+      add_element(result.scene, members, offset);
+    }
+    if (wraps) {
+      result.notes.push_back(
+          "a piece of ink wraps around the tile (it meets its own copy a period away): it is a "
+          "continuous motif, kept as one element");
+    }
+    return result;
+  }
+
+  void add_element(Scene& out, const std::vector<std::size_t>& members,
+                   const std::vector<Vec2>& offset) const {
+    PlanarShape shape;
+    std::vector<std::size_t> part_of(drawables_.size(), std::numeric_limits<std::size_t>::max());
+    for (std::size_t i : members) {
+      const Subpath& s = subpaths_[i];
+      std::size_t& part = part_of[s.drawable];
+      if (part == std::numeric_limits<std::size_t>::max()) {
+        part = shape.parts.size();
+        shape.parts.push_back(drawables_[s.drawable].drawable);
+      }
+      Path2 path = s.path;
+      translate(path, offset[i]);
+      shape.parts[part].paths.push_back(std::move(path));
+    }
+    const Drawn& first = drawables_[subpaths_[members.front()].drawable];
+    const std::size_t index =
+        geometry::add_element(out, Shape{std::move(shape), first.name}, first.category);
+    if (!options_.tile) return;
+    // The reference position back in the tile.
+    Vec3& position = out.elements[index].position;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double low = window_.min()[axis];
+      position[axis] =
+          low +
+          std::fmod(std::fmod(position[axis] - low, period_[axis]) + period_[axis], period_[axis]);
+      if (position[axis] >= window_.max()[axis]) position[axis] = low;
+    }
+  }
+
+  const Scene& scene_;
+  const VisualOptions& options_;
+  Vec2 period_;
+  Box2 window_;
+  std::vector<Vec2> shifts_;
+  std::vector<Drawn> drawables_;
+  std::vector<Subpath> subpaths_;
+  std::vector<std::vector<Link>> links_;
+};
+
+}  // namespace
+
+VisualElements visual_elements(const Scene& scene, const VisualOptions& options) {
+  return Grouping(scene, options).run();
+}
+
+}  // namespace shapeproc::geometry

@@ -1,0 +1,119 @@
+// Elements as seen (geometry/visual_elements.hpp through the SVG reader): each rule on a small
+// hand-made drawing.
+#include <gtest/gtest.h>
+
+#include "libshapeproc/io/svg_reader.hpp"
+
+namespace shapeproc::io {
+namespace {
+
+using geometry::Scene;
+
+Scene read(const std::string& body, bool tile = false, bool nested_separate = false,
+           const char* view_box = "0 0 100 100") {
+  ReaderOptions options;
+  options.tile = tile;
+  options.nested_separate = nested_separate;
+  return parse_svg(std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox=")") + view_box +
+                       "\">" + body + "</svg>",
+                   "visual.svg", options);
+}
+
+std::size_t count(const std::string& body, bool tile = false, bool nested_separate = false) {
+  return read(body, tile, nested_separate).elements.size();
+}
+
+TEST(VisualElements, DotInARingsHoleJoinsItUnlessNestedSeparate) {
+  const std::string ring_and_dot =
+      R"(<path fill-rule="evenodd" d="M10 10h40v40h-40z M20 20h20v20h-20z M28 28h4v4h-4z"/>)";
+  EXPECT_EQ(count(ring_and_dot), 1u);
+  EXPECT_EQ(count(ring_and_dot, false, true), 2u);
+  // The same with the dot a drawable of its own, and with the ring drawn by nonzero winding.
+  EXPECT_EQ(
+      count(R"(<path d="M10 10h40v40h-40z M20 20v20h20v-20z"/><circle cx="30" cy="30" r="2"/>)"),
+      1u);
+  EXPECT_EQ(
+      count(R"(<path d="M10 10h40v40h-40z M20 20v20h20v-20z"/><circle cx="30" cy="30" r="2"/>)",
+            false, true),
+      2u);
+}
+
+TEST(VisualElements, GearWithHubAndSeparateDrawablesThatOverlap) {
+  // A toothed ring drawn as a ring plus separate teeth that overlap it, and a hub in its hole.
+  const std::string gear =
+      R"(<path fill-rule="evenodd" d="M30 30h40v40h-40z M40 40h20v20h-20z"/>)"
+      R"(<rect x="45" y="25" width="10" height="10"/><rect x="45" y="65" width="10" height="10"/>)"
+      R"(<circle cx="50" cy="50" r="4"/><circle cx="90" cy="90" r="3"/>)";
+  EXPECT_EQ(count(gear), 2u);               // the gear, the far dot
+  EXPECT_EQ(count(gear, false, true), 3u);  // the hub apart
+}
+
+TEST(VisualElements, SharedEdgesJoinCornersDoNot) {
+  // Two squares sharing an edge are one element; two meeting at a corner stay two.
+  EXPECT_EQ(
+      count(
+          R"(<rect x="10" y="10" width="10" height="10"/><rect x="20" y="10" width="10" height="10"/>)"),
+      1u);
+  EXPECT_EQ(
+      count(
+          R"(<rect x="10" y="10" width="10" height="10"/><rect x="20" y="20" width="10" height="10"/>)"),
+      2u);
+  // A checkerboard of four squares in one path: corners only.
+  EXPECT_EQ(
+      count(R"(<path d="M0 0h10v10h-10z M10 10h10v10h-10z M20 0h10v10h-10z M30 10h10v10h-10z"/>)"),
+      4u);
+}
+
+TEST(VisualElements, DifferentCategoriesStayApart) {
+  ReaderOptions options;
+  options.category_by = CategoryRule::parse("fill");
+  const Scene scene = parse_svg(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">)"
+      R"(<rect fill="red" x="10" y="10" width="10" height="10"/><rect fill="blue" x="15" y="15" width="10" height="10"/>)"
+      R"(<rect fill="red" x="18" y="12" width="10" height="10"/></svg>)",
+      "categories.svg", options);
+  EXPECT_EQ(scene.elements.size(), 2u);  // the red squares overlap; the blue one stays
+}
+
+TEST(VisualElements, TileJoinsPiecesCutByEachBorderAndACorner) {
+  // A 100 x 100 tile: a bar cut by the left/right border, one cut by the top/bottom border, a
+  // square cut at the corner into four pieces, and a whole dot.
+  const std::string body =
+      R"(<rect x="90" y="40" width="20" height="5"/><rect x="-10" y="40" width="20" height="5"/>)"
+      R"(<rect x="40" y="-8" width="5" height="16"/><rect x="40" y="92" width="5" height="16"/>)"
+      R"(<rect x="-5" y="-5" width="10" height="10"/><rect x="95" y="-5" width="10" height="10"/>)"
+      R"(<rect x="-5" y="95" width="10" height="10"/><rect x="95" y="95" width="10" height="10"/>)"
+      R"(<circle cx="60" cy="70" r="4"/>)";
+  const Scene tile = read(body, true);
+  ASSERT_EQ(tile.elements.size(), 4u);
+  double area_sum = 0;
+  for (std::size_t i = 0; i < tile.elements.size(); ++i) {
+    const geometry::Box3 box = geometry::bounding_box(tile.placed_shape(i));
+    // Whole elements: the bar 20 x 5, the bar 5 x 16, the corner square 10 x 10, the dot 8 x 8.
+    area_sum += box.sizes().x() * box.sizes().y();
+    EXPECT_TRUE(tile.window.contains(tile.elements[i].position)) << i;
+  }
+  EXPECT_NEAR(area_sum, 100 + 80 + 100 + 64, 1e-6);
+  // Without --tile the pieces in the window are separate elements, clipped by nothing.
+  EXPECT_EQ(read(body).elements.size(), 9u);
+}
+
+TEST(VisualElements, UseAndTransformsArePlacedBeforeJoining) {
+  // A ring defined once and used twice, the second use moved onto a dot.
+  const std::string body =
+      R"(<defs><path id="ring" fill-rule="evenodd" d="M0 0h20v20h-20z M5 5h10v10h-10z"/></defs>)"
+      R"svg(<use href="#ring" x="10" y="10"/><use href="#ring" transform="translate(50 50)"/>)svg"
+      R"(<circle cx="60" cy="60" r="2"/>)";
+  EXPECT_EQ(count(body), 2u);
+  EXPECT_EQ(count(body, false, true), 3u);
+}
+
+TEST(VisualElements, MotifWrappingAroundTheTileIsNoted) {
+  const Scene scene = read(R"(<rect x="0" y="40" width="100" height="5"/>)", true);
+  EXPECT_EQ(scene.elements.size(), 1u);
+  ASSERT_EQ(scene.notes.size(), 1u);
+  EXPECT_NE(scene.notes[0].find("wraps around the tile"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shapeproc::io
