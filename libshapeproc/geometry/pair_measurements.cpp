@@ -8,6 +8,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/geometry/overlap_depth.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 
@@ -32,26 +33,6 @@ bool lexicographically_negative(const Vec3& v) {
     if (v[k] != 0.0) return v[k] < 0.0;
   }
   return false;
-}
-
-// Shortest distance from p to the outline of a 2D proxy.
-double point_to_outline(const Proxy2& proxy, const Vec2& p) {
-  BoxTree<2> single = BoxTree<2>::build({Box2(p, p)});
-  return closest_pair_distance<2>(
-      single, proxy.segment_tree, Vec2::Zero(), PairMeasurer::kNoCutoff, [&](int, int j) {
-        return point_segment_distance(p, proxy.segment_start[j], proxy.segment_end[j]);
-      });
-}
-
-double point_to_surface(const Proxy3& proxy, const Vec3& p) {
-  if (proxy.point) return (p - proxy.vertices[0]).norm();
-  BoxTree<3> single = BoxTree<3>::build({Box3(p, p)});
-  return closest_pair_distance<3>(
-      single, proxy.triangle_tree, Vec3::Zero(), PairMeasurer::kNoCutoff, [&](int, int j) {
-        const auto& t = proxy.triangles[j];
-        return point_triangle_distance(p, proxy.vertices[t[0]], proxy.vertices[t[1]],
-                                       proxy.vertices[t[2]]);
-      });
 }
 
 // Points along a 2D outline at most `step` apart.
@@ -159,15 +140,16 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
       return lower >= bound ? kNoCutoff : segment_segment_squared_distance(a0, a1, b0, b1);
     };
     double outline;  // distance between the outlines (or a value of its interval)
-    double first_positive =
-        0.0;  // the smallest positive breakpoint: below it 0 is in the same interval
+    // Outlines closer than this meet (rounding of coordinates that were drawn touching).
+    const double contact =
+        1e-12 * (radii_[static_cast<std::size_t>(a)] + radii_[static_cast<std::size_t>(b)]);
+    double first_mark = -kNoCutoff;  // the smallest breakpoint: below it, every d is one interval
     if (breakpoints == nullptr || breakpoints->empty()) {
       outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t,
                                                            cutoff * cutoff, segments));
     } else {
       const std::vector<double>& marks = *breakpoints;
-      const auto positive = std::upper_bound(marks.begin(), marks.end(), 0.0);
-      first_positive = positive == marks.end() ? kNoCutoff : *positive;
+      first_mark = marks.front();
       // Prune below the breakpoint under the best distance so far: nothing there can move the
       // result into another interval.
       auto floor = [&](double best_squared) {
@@ -179,15 +161,26 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
       };
       outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t,
                                                            cutoff * cutoff, segments, floor));
+      // The search stops once the interval is known; with a breakpoint at or below 0, outlines
+      // that meet (0 or below) are in another interval than a small gap: look for contact alone.
+      if (first_mark <= 0.0 && contact > 0.0 && outline > contact && outline < kNoCutoff) {
+        const double near = std::sqrt(closest_pair_squared_distance<2>(
+            pa.segment_tree, pb.segment_tree, t, 4 * contact * contact, segments));
+        if (near <= contact)
+          outline = near;  // (the search returns its cut-off, 2 contact, if none)
+      }
     }
-    // One shape inside the other's filled region (their outlines not crossing): one vertex of
-    // every polyline decides. Needed only when 0 lies in another interval than the outlines' gap.
-    if (outline > 0.0 && outline >= first_positive && pa.box.intersects(moved)) {
+    // Outlines that meet: touching (0) or overlapping (minus the overlap's depth).
+    if (outline <= contact) return -overlap_depth(pa, pb, t);
+    // One shape inside the other's filled region (their outlines apart): one vertex of every
+    // polyline decides. Needed only when a negative distance lies in another interval than the
+    // outlines' gap, i.e. some breakpoint is at most the gap.
+    if (outline >= first_mark && pa.box.intersects(moved)) {
       for (const auto& polyline : pb.polylines) {
-        if (pa.inside(polyline.points.front() + t)) return 0.0;
+        if (pa.inside(polyline.points.front() + t)) return -overlap_depth(pa, pb, t);
       }
       for (const auto& polyline : pa.polylines) {
-        if (pb.inside(polyline.points.front() - t)) return 0.0;
+        if (pb.inside(polyline.points.front() - t)) return -overlap_depth(pa, pb, t);
       }
     }
     return outline;
@@ -197,18 +190,19 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
   const Box3 moved = pb.box.translated(offset);
   if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
   if (pa.box.intersects(moved)) {
-    if (pa.inside(pb.vertices.front() + offset)) return 0.0;
-    if (pb.inside(pa.vertices.front() - offset)) return 0.0;
+    if (pa.inside(pb.vertices.front() + offset) || pb.inside(pa.vertices.front() - offset))
+      return -overlap_depth(pa, pb, offset);
   }
   auto corner = [](const Proxy3& p, int t, int k) -> const Vec3& {
     return p.point ? p.vertices[0] : p.vertices[p.triangles[t][k]];
   };
-  return closest_pair_distance<3>(
+  const double surfaces = closest_pair_distance<3>(
       pa.triangle_tree, pb.triangle_tree, offset, cutoff, [&](int i, int j) {
         return triangle_triangle_distance(corner(pa, i, 0), corner(pa, i, 1), corner(pa, i, 2),
                                           corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
                                           corner(pb, j, 2) + offset);
       });
+  return surfaces <= 0.0 ? -overlap_depth(pa, pb, offset) : surfaces;
 }
 
 double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const {

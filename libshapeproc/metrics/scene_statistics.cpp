@@ -108,7 +108,7 @@ std::vector<double> offset_measure(const geometry::Scene& scene,
     if (high >= range || std::min(bins - 1, static_cast<int>(high / width)) != k) {
       const double d = measurer.distance(a, b, u, range);
       if (d >= range) continue;
-      k = std::min(bins - 1, static_cast<int>(d / width));
+      k = std::min(bins - 1, static_cast<int>(std::max(0.0, d) / width));  // overlaps: 0
     }
     measure[k] += ball_measure(dim, reach) / samples;
   }
@@ -206,8 +206,9 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> nearest(n, inf);
   for (const geometry::PairRecord& p : pairs) {
-    nearest[p.i] = std::min(nearest[p.i], p.measurement.distance);
-    nearest[p.j] = std::min(nearest[p.j], p.measurement.distance);
+    const double gap = std::max(0.0, p.measurement.distance);
+    nearest[p.i] = std::min(nearest[p.i], gap);
+    nearest[p.j] = std::min(nearest[p.j], gap);
   }
   if (!stats.periodic()) {
     stats.edge = options.edge;
@@ -229,11 +230,16 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   std::vector<double> correlation_counts(static_cast<std::size_t>(options.correlation_bins), 0.0);
   const double width = range / options.correlation_bins;
   for (const geometry::PairRecord& p : pairs) {
-    const double d = p.measurement.distance;
+    // Signed shape distance: below 0 the shapes overlap, at 0 they touch; the distributions
+    // take the gap, 0 for both.
+    const double signed_distance = p.measurement.distance;
+    const double d = std::max(0.0, signed_distance);
     const int axis = p.measurement.axis;
-    if (d <= 0.0) {
+    if (signed_distance < 0.0) {
       stats.collisions.pairs.emplace_back(p.i, p.j);
       stats.collisions.colliding[p.i] = stats.collisions.colliding[p.j] = true;
+    } else if (signed_distance == 0.0) {
+      stats.collisions.touching.emplace_back(p.i, p.j);
     }
     for (const int e : {p.i, p.j}) {
       nearest_axis[axis][e] = std::min(nearest_axis[axis][e], d);

@@ -72,11 +72,13 @@ struct DirectionalStatistics {
   double neighbours = 0.0;  // mean number of neighbours in this bin below R per element
 };
 
+// Overlaps (signed shape distance below 0: the shapes' filled regions overlap, or one lies in
+// the other's fill) and contacts (distance 0: outlines meet, nothing overlaps), apart.
 struct Collisions {
-  std::vector<std::pair<int, int>>
-      pairs;                    // element pairs at shape distance 0 (overlap, touch, nest)
-  std::vector<bool> colliding;  // per element
-  int elements = 0;             // elements in at least one such pair
+  std::vector<std::pair<int, int>> pairs;     // overlapping element pairs
+  std::vector<std::pair<int, int>> touching;  // element pairs that touch without overlapping
+  std::vector<bool> colliding;                // per element: in an overlapping pair
+  int elements = 0;                           // elements in at least one overlapping pair
 };
 
 struct SceneStatistics {

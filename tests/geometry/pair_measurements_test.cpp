@@ -7,6 +7,7 @@
 #include <random>
 
 #include "libshapeproc/core/constants.hpp"
+#include "libshapeproc/geometry/overlap_depth.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 #include "tests/geometry/measurement_fixtures.hpp"
@@ -38,7 +39,9 @@ TEST(ShapeDistance, BoxesWithKnownGaps) {
   EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {5, 0}}), 3.0);
   EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {5, 6}}), 5.0);    // corner to corner 3-4-5
   EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {2, 2}}), 0.0);    // touching at a corner
-  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {1, 0.5}}), 0.0);  // overlapping
+  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {2, 0.5}}), 0.0);  // sharing an edge
+  // Overlapping: minus the depth of the deepest corner inside the other square.
+  EXPECT_DOUBLE_EQ(measured({square, square}, {{0, 0}, {1, 0.5}}), -0.5);
 }
 
 TEST(ShapeDistance, DiscsAreCentreDistanceMinusRadii) {
@@ -56,22 +59,28 @@ TEST(ShapeDistance, DiscsAreCentreDistanceMinusRadii) {
 
 TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   const Shape dot = disc(0.5);
-  // A dot inside a filled disc touches it.
-  EXPECT_DOUBLE_EQ(measured({disc(10), dot}, {{0, 0}, {3, 0}}), 0.0);
+  // A dot inside a filled disc overlaps it: minus the depth of its deepest point (7.5).
+  EXPECT_NEAR(measured({disc(10), dot}, {{0, 0}, {3, 0}}), -7.5, 1e-2);
   // A dot in a ring's hole (nonzero winding with a reversed hole) is apart from the ring.
   EXPECT_NEAR(measured({ring(10, 6), dot}, {{0, 0}, {1, 0}}), 6 - 1.5, 1e-2);
   // The same ring drawn with even-odd and both circles the same way round.
   const Shape evenodd = planar(
       {ellipse_path(Vec2::Zero(), 10, 10), ellipse_path(Vec2::Zero(), 6, 6)}, FillRule::evenodd);
   EXPECT_NEAR(measured({evenodd, dot}, {{0, 0}, {1, 0}}), 4.5, 1e-2);
-  EXPECT_DOUBLE_EQ(measured({evenodd, dot}, {{0, 0}, {8, 0}}), 0.0);  // in the ring's body
+  EXPECT_NEAR(measured({evenodd, dot}, {{0, 0}, {8, 0}}), -1.98, 2e-2);  // in the ring's body
   // An unfilled circle is a curve: a dot inside is apart from it.
   const Shape outline = planar({ellipse_path(Vec2::Zero(), 10, 10)}, FillRule::nonzero, false);
   EXPECT_NEAR(measured({outline, dot}, {{0, 0}, {3, 0}}), 10 - 3.5, 1e-2);
   // Open curves crossing each other.
   const Shape stroke = planar({polygon({{-5, 0}, {5, 0}}, false)});
-  EXPECT_DOUBLE_EQ(
-      measured({stroke, planar({polygon({{0, -5}, {0, 5}}, false)})}, {{0, 0}, {1, 0}}), 0.0);
+  // Open curves crossing each other overlap, by a depth the vertices do not show.
+  const double crossing =
+      measured({stroke, planar({polygon({{0, -5}, {0, 5}}, false)})}, {{0, 0}, {1, 0}});
+  EXPECT_LT(crossing, 0.0);
+  EXPECT_GT(crossing, -1e-6);
+  // Touching at an end is not overlapping.
+  EXPECT_DOUBLE_EQ(measured({stroke, planar({polygon({{0, 0}, {0, 5}}, false)})}, {{0, 0}, {5, 0}}),
+                   0.0);
   EXPECT_DOUBLE_EQ(measured({stroke, stroke}, {{0, 0}, {0, 2}}), 2.0);
   // Nested elongated and interlocking shapes: an L inside another L's notch.
   const Shape ell = planar({polygon({{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 4}, {0, 4}})});
@@ -100,7 +109,12 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
       if (pa.inside(pb.polylines[0].points[0] + t) || pb.inside(pa.polylines[0].points[0] - t))
         brute = 0.0;
       const double d = measurer.measure(scene.elements[i], scene.elements[j]).distance;
-      EXPECT_NEAR(d, brute, 1e-12) << i << " " << j;
+      if (brute == 0.0) {  // overlapping (random polygons do not touch exactly)
+        EXPECT_LT(d, 0.0) << i << " " << j;
+        EXPECT_DOUBLE_EQ(d, -overlap_depth(pa, pb, t)) << i << " " << j;
+      } else {
+        EXPECT_NEAR(d, brute, 1e-12) << i << " " << j;
+      }
       // Symmetric, and the cut-off form agrees below the cut-off.
       EXPECT_DOUBLE_EQ(d, measurer.measure(scene.elements[j], scene.elements[i]).distance);
       const double cut = measurer.measure(scene.elements[i], scene.elements[j], 1.0).distance;
@@ -328,7 +342,8 @@ TEST(Measurements3D, MeshDistancesAndContainment) {
   const PairMeasurer measurer(scene, options);
   const auto& e = scene.elements;
   EXPECT_NEAR(measurer.measure(e[0], e[1]).distance, 3.0, 1e-12);
-  EXPECT_EQ(measurer.measure(e[0], e[2]).distance, 0.0);  // small cube inside the big one
+  // A small cube inside the big one overlaps it: minus its deepest corner's depth.
+  EXPECT_LT(measurer.measure(e[0], e[2]).distance, 0.0);
   const double spheres = std::sqrt(9.0 + 9.0 + 1.0) - 2.0;
   EXPECT_NEAR(measurer.measure(e[3], e[4]).distance, spheres, 0.05);  // polyhedral spheres
   EXPECT_GE(measurer.measure(e[3], e[4]).distance, spheres - 1e-9);

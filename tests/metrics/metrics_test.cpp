@@ -92,15 +92,16 @@ TEST(Collisions, TwoOverlappingSquaresAndOneApart) {
   EXPECT_DOUBLE_EQ(s.intensity.at(0), 3.0 / 10000.0);
 }
 
-TEST(Collisions, NestedAndTouchingShapesCollideSeparateOnesDoNot) {
+TEST(Collisions, NestedShapesOverlapTouchingOnesAreCountedApart) {
   const std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">
     <rect x="10" y="10" width="40" height="40"/><rect x="20" y="20" width="10" height="10"/>
     <rect x="60" y="10" width="10" height="10"/><rect x="70" y="10" width="10" height="10"/>
     <rect x="60" y="60" width="10" height="10"/><rect x="71" y="60" width="10" height="10"/></svg>)";
   const SceneStatistics s = compute_statistics(io::parse_svg(svg, "nested.svg", each_drawable()),
                                                StatisticsOptions{}, core::Random(1));
-  EXPECT_EQ(s.collisions.pairs.size(), 2u);  // nested, touching; the last two are 1 apart
-  EXPECT_EQ(s.collisions.elements, 4);
+  EXPECT_EQ(s.collisions.pairs.size(), 1u);     // nested: overlapping
+  EXPECT_EQ(s.collisions.touching.size(), 1u);  // sharing an edge; the last two are 1 apart
+  EXPECT_EQ(s.collisions.elements, 2);
 }
 
 TEST(SceneStatistics, LatticeNearestNeighboursPerAxis) {

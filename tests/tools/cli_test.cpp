@@ -322,7 +322,7 @@ TEST(CliStats, TextJsonAndComparisons) {
   const Result text = run_cli({"stats", data("svg/dots-random.svg")});
   ASSERT_EQ(text.code, 0) << text.err;
   EXPECT_NE(text.out.find("30 elements"), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("collisions  0 pairs"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("collisions  0 overlapping pairs"), std::string::npos) << text.out;
 
   // Against itself: every distance is 0.
   const Result self = run_cli(

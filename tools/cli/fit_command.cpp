@@ -92,6 +92,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
+  for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
   nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
   provenance["exemplar"] = input;
   provenance["arguments"] = arguments;

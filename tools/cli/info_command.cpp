@@ -97,6 +97,7 @@ nlohmann::json describe(const geometry::Scene& scene, const std::string& input) 
           {"categories", categories},
           {scene.dimension == 2 ? "segments_total" : "triangles_total", primitives},
           {"primitives_per_element", mean},
+          {"notes", scene.notes},
           {"elements", elements}};
 }
 
@@ -111,6 +112,7 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
       << d["primitives_per_element"].get<double>() << (planar ? " segments" : " triangles")
       << " per element)\n";
   out.unsetf(std::ios::fixed);
+  for (const std::string& note : scene.notes) out << "note:       " << note << '\n';
   out << "categories: " << scene.categories.size() << '\n';
   for (const auto& c : d["categories"]) {
     out << "  " << c["name"].get<std::string>() << ": " << c["count"].get<std::size_t>() << '\n';

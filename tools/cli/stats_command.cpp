@@ -70,8 +70,9 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
     out << '\n';
   }
   const double fraction = s.elements() > 0 ? 100.0 * s.collisions.elements / s.elements() : 0.0;
-  out << "collisions  " << s.collisions.pairs.size() << " pairs, " << s.collisions.elements
-      << " elements (" << format_fixed(fraction, 1) << "%)\n";
+  out << "collisions  " << s.collisions.pairs.size() << " overlapping pairs, "
+      << s.collisions.elements << " elements (" << format_fixed(fraction, 1) << "%); "
+      << s.collisions.touching.size() << " touching pairs\n";
   out << "distances   shape distance up to R = " << format_general(s.range) << ' ' << unit
       << (reference.empty() ? " (mean spacing)" : " (the exemplar's mean spacing)")
       << "; nearest: mean over elements of "
@@ -264,7 +265,9 @@ nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e)
       {"elements", s.collisions.elements},
       {"fraction",
        s.elements() > 0 ? static_cast<double>(s.collisions.elements) / s.elements() : 0.0},
-      {"list", s.collisions.pairs}};
+      {"list", s.collisions.pairs},
+      {"touching", s.collisions.touching.size()},
+      {"touching_list", s.collisions.touching}};
   nlohmann::json j = {{"scene", scene.file},
                       {"dimension", s.dimension},
                       {"boundary", geometry::to_string(s.boundary)},
