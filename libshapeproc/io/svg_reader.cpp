@@ -10,6 +10,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/arc.hpp"
+#include "libshapeproc/geometry/stroke_ink.hpp"
 #include "libshapeproc/geometry/subpath_components.hpp"
 #include "libshapeproc/geometry/visual_elements.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
@@ -176,6 +177,9 @@ class SvgReader {
                int use_depth) const;
   std::vector<Path2> drawable_paths(pugi::xml_node node, const std::string& name) const;
   Drawable2 styled(std::vector<Path2> paths, const State& state) const;
+  // The drawable as its visible ink: its fill, and its stroke as a filled outline of the
+  // stroke's width, caps and joins (geometry/stroke_ink.hpp).
+  void append_visible_ink(Drawable2 drawable, std::vector<Drawable2>& parts) const;
   std::string category_of(pugi::xml_node node, const State& state,
                           const std::vector<Drawable2>& parts) const;
   bool is_layer(pugi::xml_node node) const {
@@ -200,6 +204,7 @@ class SvgReader {
   std::optional<Box2> window_rect_;
   pugi::xml_node window_node_;
   Scene scene_;
+  mutable std::vector<geometry::Style> drawn_styles_;  // of the element being collected, as drawn
 };
 
 double SvgReader::length(pugi::xml_node node, const char* name, double fallback) const {
@@ -461,6 +466,7 @@ void SvgReader::walk_container(pugi::xml_node node, const State& state) {
 
 void SvgReader::make_element(pugi::xml_node node, const State& state) {
   std::vector<Drawable2> parts;
+  drawn_styles_.clear();
   collect(node, state, parts, 0);
   if (parts.empty()) return;
   const int category = scene_.category_index(category_of(node, state, parts));
@@ -513,7 +519,7 @@ void SvgReader::collect(pugi::xml_node node, const State& state, std::vector<Dra
       return;
     }
     std::vector<Path2> paths = drawable_paths(node, name);
-    if (!paths.empty()) parts.push_back(styled(std::move(paths), state));
+    if (!paths.empty()) append_visible_ink(styled(std::move(paths), state), parts);
   }
 }
 
@@ -606,6 +612,25 @@ std::vector<Path2> SvgReader::drawable_paths(pugi::xml_node node, const std::str
   return paths;
 }
 
+void SvgReader::append_visible_ink(Drawable2 drawable, std::vector<Drawable2>& parts) const {
+  drawn_styles_.push_back(drawable.style);
+  if (!geometry::stroked(drawable)) {
+    parts.push_back(std::move(drawable));
+    return;
+  }
+  Box2 box;
+  for (const Path2& path : drawable.paths) box.extend(geometry::bounding_box(path));
+  const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+  std::optional<Drawable2> ink = geometry::stroke_ink(drawable, std::max(1e-3 * size, 1e-9));
+  if (drawable.filled()) {
+    drawable.style["stroke"] = "none";
+    parts.push_back(std::move(drawable));
+  } else if (!ink) {
+    parts.push_back(std::move(drawable));  // a stroke that paints nothing stays a curve
+  }
+  if (ink) parts.push_back(std::move(*ink));
+}
+
 Drawable2 SvgReader::styled(std::vector<Path2> paths, const State& state) const {
   Drawable2 drawable;
   const Affine2& map = state.transform;
@@ -642,7 +667,8 @@ std::string SvgReader::category_of(pugi::xml_node node, const State& state,
   using Kind = CategoryRule::Kind;
   const CategoryRule& rule = options_.category_by;
   auto paint = [&](const char* property, const char* fallback) {
-    const Style& style = parts.front().style;
+    // As drawn: the first drawable's own style, before its stroke became a part of its own.
+    const Style& style = drawn_styles_.empty() ? parts.front().style : drawn_styles_.front();
     const auto it = style.find(property);
     const std::string value = it == style.end() ? fallback : it->second;
     return svg::normalise_color(value).value_or(to_lower(value));

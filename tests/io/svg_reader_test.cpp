@@ -201,8 +201,13 @@ TEST(SvgStyle, InheritanceSheetsAndStyleAttributes) {
   EXPECT_EQ(planar(scene, 2).parts[0].style.at("fill"), "red");
   const auto& special = planar(scene, 3).parts[0].style;
   EXPECT_EQ(special.at("fill"), "purple");
-  EXPECT_EQ(special.at("stroke"), "green");
-  EXPECT_EQ(special.at("stroke-width"), "6");  // scaled with the geometry
+  // The stroke is ink of its own: a part filled green, as wide as the stroke scaled with the
+  // geometry (a 3 x 3 square with a stroke of 6: 9 x 9).
+  ASSERT_EQ(planar(scene, 3).parts.size(), 2u);
+  EXPECT_EQ(special.at("stroke"), "none");
+  EXPECT_EQ(planar(scene, 3).parts[1].style.at("fill"), "green");
+  EXPECT_NEAR(geometry::bounding_box(scene.shapes.at(scene.elements.at(3).shape)).sizes().x(), 9.0,
+              1e-9);
   EXPECT_EQ(planar(scene, 4).parts[0].fill_rule, geometry::FillRule::evenodd);
   EXPECT_EQ(planar(scene, 4).parts[0].style.at("opacity"), "0.25");
 }

@@ -108,6 +108,42 @@ TEST(VisualElements, UseAndTransformsArePlacedBeforeJoining) {
   EXPECT_EQ(count(body, false, true), 3u);
 }
 
+TEST(VisualInk, StrokedBarsAreTheirInk) {
+  // Two bars drawn as lines 10 thick, 12 apart between centrelines: a visible gap of 2.
+  const Scene bars = read(R"(<path d="M10 10H90" stroke="black" stroke-width="10" fill="none"/>)"
+                          R"(<path d="M10 22H90" stroke="black" stroke-width="10" fill="none"/>)");
+  ASSERT_EQ(bars.elements.size(), 2u);
+  const geometry::Box3 first = geometry::bounding_box(bars.placed_shape(0));
+  const geometry::Box3 second = geometry::bounding_box(bars.placed_shape(1));
+  EXPECT_NEAR(second.min().y() - first.max().y(), 2.0, 1e-9);
+  EXPECT_NEAR(first.sizes().x(), 80.0, 1e-9);  // butt caps end at the path's ends
+  // 4 apart between centrelines: their ink overlaps, one element as seen.
+  EXPECT_EQ(count(R"(<path d="M10 10H90" stroke="black" stroke-width="10" fill="none"/>)"
+                  R"(<path d="M10 14H90" stroke="black" stroke-width="10" fill="none"/>)"),
+            1u);
+}
+
+TEST(VisualInk, CapsAndClosedOutlines) {
+  const auto width_of = [](const std::string& cap) {
+    const Scene s =
+        read(R"(<path d="M10 10H50" stroke="black" stroke-width="4" fill="none" stroke-linecap=")" +
+             cap + R"("/>)");
+    return geometry::bounding_box(s.placed_shape(0)).sizes().x();
+  };
+  EXPECT_NEAR(width_of("butt"), 40.0, 1e-9);
+  EXPECT_NEAR(width_of("square"), 44.0, 1e-9);
+  EXPECT_NEAR(width_of("round"), 44.0, 1e-3);
+  // A stroked square outline is a frame: a dot in its hole is nested, not overlapping.
+  const std::string frame =
+      R"(<rect x="20" y="20" width="40" height="40" fill="none" stroke="black" stroke-width="4"/>)"
+      R"(<circle cx="40" cy="40" r="3"/>)";
+  const Scene joined = read(frame);
+  ASSERT_EQ(joined.elements.size(), 1u);
+  const geometry::Box3 box = geometry::bounding_box(joined.placed_shape(0));
+  EXPECT_NEAR(box.sizes().x(), 44.0, 1e-9);  // mitre joins: the frame's corners are square
+  EXPECT_EQ(read(frame, false, true).elements.size(), 2u);
+}
+
 TEST(VisualElements, MotifWrappingAroundTheTileIsNoted) {
   const Scene scene = read(R"(<rect x="0" y="40" width="100" height="5"/>)", true);
   EXPECT_EQ(scene.elements.size(), 1u);
