@@ -43,7 +43,7 @@ const std::set<std::string, std::less<>> kInheritedProperties = {"fill",
                                                                  "stroke-dashoffset",
                                                                  "color",
                                                                  "visibility"};
-const std::set<std::string, std::less<>> kOwnProperties = {"opacity", "display"};
+const std::set<std::string, std::less<>> kOwnProperties = {"opacity", "display", "vector-effect"};
 
 const std::set<std::string, std::less<>> kNeverDrawn = {
     "defs",           "symbol", "clipPath",      "mask",  "pattern",   "marker",   "linearGradient",
@@ -146,9 +146,10 @@ bool has_class(pugi::xml_node node, const std::string& name) {
 // What a node inherits and carries down the tree.
 struct State {
   Affine2 transform = Affine2::Identity();
-  Style style;           // resolved inherited properties
-  double opacity = 1.0;  // product of the group opacities above
-  std::string layer;     // label of the enclosing layer
+  Style style;                      // resolved inherited properties
+  double opacity = 1.0;             // product of the group opacities above
+  std::string layer;                // label of the enclosing layer
+  bool non_scaling_stroke = false;  // this node's vector-effect (not inherited)
 };
 
 class SvgReader {
@@ -263,8 +264,13 @@ std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) 
     if (accept(d.first)) declarations.push_back(d);
   }
 
+  state.non_scaling_stroke = false;
   for (const auto& [name, value] : declarations) {
     if (value == "inherit") continue;
+    if (name == "vector-effect") {
+      state.non_scaling_stroke = value == "non-scaling-stroke";
+      continue;
+    }
     if (name == "display") {
       if (value == "none") return std::nullopt;
       continue;
@@ -651,7 +657,8 @@ Drawable2 SvgReader::styled(std::vector<Path2> paths, const State& state) const 
   }
   style.erase("color");
   style.erase("visibility");
-  if (auto width = style.find("stroke-width"); width != style.end()) {
+  // vector-effect: non-scaling-stroke keeps the width in the root's user space.
+  if (auto width = style.find("stroke-width"); width != style.end() && !state.non_scaling_stroke) {
     const double scale = std::sqrt(std::abs(map.linear().determinant()));
     if (const auto w = parse_number(width->second); w && scale != 1.0) {
       width->second = core::format_number(*w * scale);

@@ -123,6 +123,17 @@ TEST(VisualInk, StrokedBarsAreTheirInk) {
             1u);
 }
 
+TEST(VisualInk, TransformsScaleStrokesUnlessNonScaling) {
+  const auto height_of = [](const std::string& extra) {
+    const Scene s = read(R"(<path d="M1 5H9" stroke="black" stroke-width="2" fill="none" )"
+                         R"svg(transform="scale(4)" )svg" +
+                         extra + "/>");
+    return geometry::bounding_box(s.placed_shape(0)).sizes().y();
+  };
+  EXPECT_NEAR(height_of(""), 8.0, 1e-9);
+  EXPECT_NEAR(height_of(R"(vector-effect="non-scaling-stroke")"), 2.0, 1e-9);
+}
+
 TEST(VisualInk, CapsAndClosedOutlines) {
   const auto width_of = [](const std::string& cap) {
     const Scene s =
