@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
+#include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::cli {
@@ -61,6 +63,15 @@ nlohmann::json ReaderFlags::to_json() const {
                       {"split", split}};
   if (!window.empty()) j["window"] = window;
   return j;
+}
+
+FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader) {
+  FittingExemplar result{io::read_scene(input, reader.options()), 1};
+  if (reader.tile && result.scene.dimension == 2) {
+    result.repeats = geometry::tile_repeats(result.scene.elements.size());
+    result.scene = geometry::repeat_tile(result.scene, result.repeats);
+  }
+  return result;
 }
 
 void add_measurement_kind_options(CLI::App& command, std::string& distance,

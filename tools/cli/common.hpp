@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 
@@ -27,6 +28,14 @@ struct ReaderFlags {
   io::ReaderOptions options() const;  // throws core::UsageError
   nlohmann::json to_json() const;
 };
+
+// The exemplar a fit learns from: the file as read, or, for a --tile of few elements, the tile
+// repeated so that each element's periodic images are elements (geometry/tile_repeat.hpp).
+struct FittingExemplar {
+  geometry::Scene scene;
+  int repeats = 1;  // along each side
+};
+FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader);
 
 // --distance shape|centroid|hausdorff and --direction gravitation|centroid, and their values.
 void add_measurement_kind_options(CLI::App& command, std::string& distance, std::string& direction);

@@ -64,7 +64,7 @@ void print_report(const evaluation::FidelityReport& r, const evaluation::Fidelit
 
 int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& arguments,
                  std::ostream& out) {
-  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  const geometry::Scene exemplar = read_fitting_exemplar(args.input, args.reader).scene;
   const model::ShapeProcessModel model =
       args.model.empty()
           ? fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity).model

@@ -61,7 +61,12 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const VerbosityFlags& verbosity) {
   fit::FitOptions options = flags.options(reader);
   verbosity.stage("reading " + input);
-  const geometry::Scene exemplar = io::read_scene(input, reader.options());
+  const FittingExemplar fitting = read_fitting_exemplar(input, reader);
+  const geometry::Scene& exemplar = fitting.scene;
+  const int repeats = fitting.repeats;
+  // The repeated tile keeps the cells' size: as many cells per tile as the default gives one.
+  if (repeats > 1 && options.quadrature == 0 && exemplar.dimension == 2)
+    options.quadrature = 48 * repeats;
   // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
   // terminal.
   ProgressBar bar("fitting: quadrature", verbosity.show_progress());
@@ -99,6 +104,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   provenance["reader"] = reader.to_json();
   provenance["options"] = flags.to_json();
   provenance["options"]["edge"] = flags.edge_for(reader);
+  if (repeats > 1) provenance["tile_repeats"] = repeats;
   provenance["options"]["directions"] = result.model.measurement.directions;
   result.model.fit_json = provenance.dump();
   return result;

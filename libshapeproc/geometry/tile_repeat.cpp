@@ -1,0 +1,35 @@
+#include "libshapeproc/geometry/tile_repeat.hpp"
+
+#include <algorithm>
+
+namespace shapeproc::geometry {
+
+Scene repeat_tile(const Scene& tile, int times) {
+  Scene out = tile;
+  if (times <= 1) return out;
+  out.elements.clear();
+  const Vec3 sizes = tile.window.sizes();
+  const int depth = tile.dimension == 3 ? times : 1;
+  for (int k = 0; k < depth; ++k) {
+    for (int j = 0; j < times; ++j) {
+      for (int i = 0; i < times; ++i) {
+        const Vec3 shift(i * sizes.x(), j * sizes.y(), k * sizes.z());
+        for (Element e : tile.elements) {
+          e.position += shift;
+          out.elements.push_back(e);
+        }
+      }
+    }
+  }
+  Vec3 max = tile.window.min() + times * sizes;
+  if (tile.dimension == 2) max.z() = tile.window.max().z();
+  out.window = Box3(tile.window.min(), max);
+  return out;
+}
+
+int tile_repeats(std::size_t elements) {
+  if (elements >= 8) return 1;
+  return elements <= 1 ? 4 : 3;
+}
+
+}  // namespace shapeproc::geometry
