@@ -100,7 +100,6 @@ class PlaneCell {
   void set_frame() {
     hx_ = 0.5 * size_.x();
     hy_ = 0.5 * size_.y();
-    side_ = std::sqrt(size_.x() * size_.y());  // of the square of the same area
     corner_ = std::hypot(hx_, hy_);
     // Samples at the corners use one cut-off whatever the refinement, so that they can be shared.
     sample_reach_ = 3 * (context_.top_corner > 0 ? context_.top_corner : corner_);
@@ -494,7 +493,7 @@ class PlaneCell {
   std::vector<PlaneNeighbour>& neighbours_;
   std::vector<PlaneCut>& cuts_;
   std::vector<HalfPlane>& sides_;
-  double hx_ = 0, hy_ = 0, side_ = 0, corner_ = 0, sample_reach_ = 0;
+  double hx_ = 0, hy_ = 0, corner_ = 0, sample_reach_ = 0;
   std::array<long, 4> lattice_x_{}, lattice_y_{};
   bool on_lattice_ = false;
   model::InteractionCounts base_;  // neighbours with one effect on the whole cell
