@@ -130,6 +130,8 @@ class SvgReader {
   bool has_element_groups(pugi::xml_node node) const;
   // The elements regrouped as connected pieces of ink (visual), or joined across the tile.
   void regroup_as_seen();
+  // Groups as elements that hold many separate pieces of ink get a note naming --elements visual.
+  void note_groups_of_many_pieces();
 
   std::string_view text_;
   std::string file_;
@@ -283,7 +285,11 @@ Scene SvgReader::read() {
     throw core::InputError(file_, 0,
                            "no elements found (nothing drawable outside <defs> and hidden parts)");
   }
-  if (rule_ == ElementRule::visual || options_.tile) regroup_as_seen();
+  if (rule_ == ElementRule::visual || options_.tile) {
+    regroup_as_seen();
+  } else if (rule_ == ElementRule::groups) {
+    note_groups_of_many_pieces();
+  }
   return std::move(scene_);
 }
 
@@ -307,6 +313,22 @@ bool SvgReader::has_element_groups(pugi::xml_node node) const {
     if ((kGroups.count(name) || name == "svg") && has_element_groups(child)) return true;
   }
   return false;
+}
+
+void SvgReader::note_groups_of_many_pieces() {
+  std::size_t pieces = 0;
+  for (const geometry::Shape& shape : scene_.shapes) {
+    if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
+      for (const Drawable2& part : planar->parts)
+        pieces += geometry::split_disjoint_subpaths(part).size();
+    }
+  }
+  const std::size_t elements = scene_.elements.size();
+  if (pieces >= 8 && pieces >= 4 * elements) {
+    scene_.notes.push_back(std::to_string(elements) + " groups hold " + std::to_string(pieces) +
+                           " separate pieces of ink: if those are the drawing's elements, try "
+                           "--elements visual");
+  }
 }
 
 void SvgReader::regroup_as_seen() {

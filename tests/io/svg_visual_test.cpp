@@ -155,6 +155,27 @@ TEST(VisualInk, CapsAndClosedOutlines) {
   EXPECT_EQ(read(frame, false, true).elements.size(), 2u);
 }
 
+TEST(VisualElements, ReaderNotesWhenSubpathsAndElementsDisagree) {
+  // One path of 8 dots inside a big ring's hole: read as seen, one element from 10 subpaths.
+  std::string dots;
+  for (int i = 0; i < 8; ++i) dots += " M" + std::to_string(30 + 5 * i) + " 50h2v2h-2z";
+  const Scene seen =
+      read(R"(<path fill-rule="evenodd" d="M5 5h90v90h-90z M10 10h80v80h-80z)" + dots + R"("/>)");
+  ASSERT_EQ(seen.elements.size(), 1u);
+  ASSERT_EQ(seen.notes.size(), 1u);
+  EXPECT_NE(seen.notes[0].find("--nested separate"), std::string::npos);
+  // The reverse: two groups holding 4 separate squares each are two elements by the groups
+  // rule (a single group would be a wrapper that only carries style).
+  std::string squares[2];
+  for (int i = 0; i < 8; ++i)
+    squares[i / 4] +=
+        R"(<rect x=")" + std::to_string(10 * i) + R"(" y="10" width="4" height="4"/>)";
+  const Scene grouped = read("<g>" + squares[0] + "</g><g>" + squares[1] + "</g>");
+  ASSERT_EQ(grouped.elements.size(), 2u);
+  ASSERT_EQ(grouped.notes.size(), 1u);
+  EXPECT_NE(grouped.notes[0].find("--elements visual"), std::string::npos);
+}
+
 TEST(VisualElements, MotifWrappingAroundTheTileIsNoted) {
   const Scene scene = read(R"(<rect x="0" y="40" width="100" height="5"/>)", true);
   EXPECT_EQ(scene.elements.size(), 1u);
