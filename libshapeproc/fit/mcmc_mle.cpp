@@ -62,6 +62,7 @@ constexpr int kUnreachableAfter = 4;        // simulations without variance: unr
 constexpr std::size_t kAveraged = 8;        // estimates averaged in the final phase
 constexpr int kStalledAfter = 2;            // rough simulations without progress end that phase…
 constexpr double kNearTolerance = 2;        // …when the gap is within this many tolerances
+constexpr double kDiverged = 10;            // a gap this many times the best one undoes the step
 
 using Clock = std::chrono::steady_clock;
 
@@ -140,9 +141,9 @@ class Newton {
     for (Eigen::Index a = 0; a < m; ++a) step[informed[static_cast<std::size_t>(a)]] = solved[a];
     for (Eigen::Index i = 0; i < n; ++i)
       if (g.information(i, i) <= kNoInformation && g.gap[i] != 0)
-        step[i] = std::copysign(options_.max_step, g.gap[i]);
+        step[i] = std::copysign(max_step(), g.gap[i]);
     const double largest = step.cwiseAbs().maxCoeff();
-    if (largest > options_.max_step) step *= options_.max_step / largest;
+    if (largest > max_step()) step *= max_step() / largest;
     for (Eigen::Index i = 0; i < n; ++i) theta[free_[static_cast<std::size_t>(i)]] += step[i];
     return theta;
   }
@@ -167,6 +168,10 @@ class Newton {
     return theta;
   }
 
+  // Halves the largest step (after a step that made the gap much worse).
+  void shorten_steps() { step_scale_ *= 0.5; }
+  double max_step() const { return options_.max_step * step_scale_; }
+
   // Standard errors of θ̂ from the inverse of the (penalised) information.
   void standard_errors(const Gap& g, std::vector<double>& out) const {
     const Eigen::Index n = g.gap.size();
@@ -183,6 +188,7 @@ class Newton {
   std::size_t categories_;
   std::size_t parameters_;  // θ indices from here on are shape classes
   const MleOptions& options_;
+  double step_scale_ = 1.0;
 };
 
 }  // namespace
@@ -315,6 +321,14 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     if (options.progress) options.progress(r.iterations, g.worst_z);
     const bool improved = g.worst_z < best.worst_z;
     if (improved) best = {r.theta, m.mean, m.standard_error, g.worst_z};
+    // Step control: a step that made the gap much worse than the best iterate's is undone, and
+    // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
+    // parameters where they hold almost nothing and the gaps explode).
+    if (g.worst_z > kDiverged * best.worst_z && g.worst_z > r.tolerance) {
+      r.theta = best.theta;
+      newton->shorten_steps();
+      continue;
+    }
     // The rough phase ends at the tolerance, or where the gap stops shrinking near it (its noise
     // floor); far from it (a sampler that cannot mix), the simulations stay short.
     stalled = improved ? 0 : stalled + 1;
