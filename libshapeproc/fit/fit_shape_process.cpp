@@ -13,6 +13,8 @@
 
 namespace shapeproc::fit {
 
+int default_quadrature_cells(int dimension) { return dimension == 3 ? 8 : 48; }
+
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

@@ -50,6 +50,9 @@ struct FitOptions {
   std::function<void(const char* stage, long long done, long long total)> progress;
 };
 
+// Quadrature cells along the window's longest side when FitOptions::quadrature is 0.
+int default_quadrature_cells(int dimension);
+
 struct FitResult {
   model::ShapeProcessModel model;
   double log_pseudo_likelihood = 0.0;

@@ -165,8 +165,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   const int dimension = region.dimension;
   const int categories = static_cast<int>(shapes_of.size());
   const std::size_t n = exemplar.elements.size();
-  const CellGrid grid(region,
-                      options.quadrature > 0 ? options.quadrature : (dimension == 3 ? 8 : 48));
+  const CellGrid grid(
+      region, options.quadrature > 0 ? options.quadrature : default_quadrature_cells(dimension));
   QuadratureDesign out;
   out.cells = grid.cells;
   out.cells_along = grid.cells_along;

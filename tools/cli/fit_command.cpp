@@ -66,7 +66,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   const int repeats = fitting.repeats;
   // The repeated tile keeps the cells' size: as many cells per tile as the default gives one.
   if (repeats > 1 && options.quadrature == 0 && exemplar.dimension == 2)
-    options.quadrature = 48 * repeats;
+    options.quadrature = fit::default_quadrature_cells(2) * repeats;
   // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
   // terminal.
   ProgressBar bar("fitting: quadrature", verbosity.show_progress());
