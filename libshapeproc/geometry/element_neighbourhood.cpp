@@ -5,28 +5,53 @@
 
 namespace shapeproc::geometry {
 
+namespace {
+
+std::vector<Vec3> positions_of(const std::vector<Element>& elements) {
+  std::vector<Vec3> out;
+  out.reserve(elements.size());
+  for (const Element& e : elements) out.push_back(e.position);
+  return out;
+}
+
+std::vector<int> keys_of(const std::vector<Element>& elements, const std::vector<int>& map) {
+  std::vector<int> out;
+  out.reserve(elements.size());
+  for (const Element& e : elements)
+    out.push_back(map.empty() ? e.category : map[static_cast<std::size_t>(e.category)]);
+  return out;
+}
+
+}  // namespace
+
 NeighbourhoodIndex::NeighbourhoodIndex(const std::vector<Element>& elements, const Domain& domain,
-                                       double radius, std::vector<int> category_map)
-    : elements_(elements),
+                                       double radius, const std::vector<int>& category_map)
+    : NeighbourhoodIndex(positions_of(elements), keys_of(elements, category_map), {}, domain,
+                         radius) {}
+
+NeighbourhoodIndex::NeighbourhoodIndex(std::vector<Vec3> positions, std::vector<int> keys,
+                                       std::vector<int> attributes, const Domain& domain,
+                                       double radius)
+    : positions_(std::move(positions)),
+      keys_(std::move(keys)),
+      attributes_(std::move(attributes)),
       domain_(domain),
       radius_(radius),
-      category_map_(std::move(category_map)),
       grid_(domain.box(), domain.dimension(), radius, domain.periodic()) {
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    grid_.insert(static_cast<int>(i), elements[i].position);
+  if (keys_.empty()) keys_.assign(positions_.size(), 0);
+  if (attributes_.empty()) attributes_.assign(positions_.size(), 0);
+  for (std::size_t i = 0; i < positions_.size(); ++i)
+    grid_.insert(static_cast<int>(i), positions_[i]);
 }
 
 Neighbourhood NeighbourhoodIndex::around(const Vec3& position, int skip) const {
   Neighbourhood out;
   grid_.for_each_candidate(position, [&](int j) {
     if (j == skip) return;
-    const Element& other = elements_[static_cast<std::size_t>(j)];
-    const Vec3 t = domain_.minimum_image(other.position - position);
+    const std::size_t k = static_cast<std::size_t>(j);
+    const Vec3 t = domain_.minimum_image(positions_[k] - position);
     if (t.norm() >= radius_) return;
-    const int category = category_map_.empty()
-                             ? other.category
-                             : category_map_[static_cast<std::size_t>(other.category)];
-    out.push_back({t, category, j});
+    out.push_back({t, keys_[k], j, attributes_[k]});
   });
   std::sort(out.begin(), out.end(),
             [](const Neighbour& a, const Neighbour& b) { return a.element < b.element; });
@@ -34,7 +59,7 @@ Neighbourhood NeighbourhoodIndex::around(const Vec3& position, int skip) const {
 }
 
 Neighbourhood NeighbourhoodIndex::of(std::size_t centre) const {
-  return around(elements_[centre].position, static_cast<int>(centre));
+  return around(positions_[centre], static_cast<int>(centre));
 }
 
 namespace {
@@ -46,7 +71,7 @@ std::vector<std::tuple<double, int, int>> candidate_pairs(const Neighbourhood& o
   std::vector<std::tuple<double, int, int>> candidates;
   for (std::size_t a = 0; a < output.size(); ++a) {
     for (std::size_t b = 0; b < exemplar.size(); ++b) {
-      if (output[a].category != exemplar[b].category || output[a].category < 0) continue;
+      if (output[a].key != exemplar[b].key || output[a].key < 0) continue;
       const double c = (output[a].offset - exemplar[b].offset).squaredNorm();
       if (c < cap) candidates.emplace_back(c, static_cast<int>(a), static_cast<int>(b));
     }
@@ -73,7 +98,7 @@ std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& outpu
 }
 
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
-                              double radius) {
+                              double radius, double alpha) {
   const double cap = radius * radius;
   double sum = 0.0;
   std::size_t paired = 0;
@@ -82,7 +107,9 @@ double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& 
     if (used_output[static_cast<std::size_t>(a)] || used_exemplar[static_cast<std::size_t>(b)])
       continue;
     used_output[static_cast<std::size_t>(a)] = used_exemplar[static_cast<std::size_t>(b)] = true;
-    sum += c;
+    sum += alpha > 0.0 ? pair_cost(output[static_cast<std::size_t>(a)],
+                                   exemplar[static_cast<std::size_t>(b)], radius, alpha)
+                       : c;
     if (++paired == output.size()) break;
   }
   return sum + static_cast<double>(output.size() - paired) * cap;

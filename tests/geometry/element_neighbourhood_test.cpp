@@ -34,7 +34,7 @@ TEST(NeighbourhoodIndex, MatchesABruteForceSearch) {
       ASSERT_EQ(found.size(), expected.size()) << "centre " << c;
       for (std::size_t k = 0; k < found.size(); ++k) {
         EXPECT_EQ(found[k].element, expected[k].element);
-        EXPECT_EQ(found[k].category, expected[k].category);
+        EXPECT_EQ(found[k].key, expected[k].key);
         EXPECT_TRUE(found[k].offset.isApprox(expected[k].offset));
       }
     }
@@ -45,8 +45,8 @@ TEST(NeighbourhoodIndex, RenumbersCategories) {
   const std::vector<Element> elements = {at(1, 1, 0), at(2, 1, 1)};
   const Domain domain = Domain::from_sizes({10, 10}, Boundary::open);
   const NeighbourhoodIndex index(elements, domain, 3.0, {5, -1});
-  EXPECT_EQ(index.of(0).at(0).category, -1);
-  EXPECT_EQ(index.of(1).at(0).category, 5);
+  EXPECT_EQ(index.of(0).at(0).key, -1);
+  EXPECT_EQ(index.of(1).at(0).key, 5);
 }
 
 TEST(NeighbourhoodDistance, ExactValuesOnTinyNeighbourhoods) {
@@ -77,6 +77,23 @@ TEST(NeighbourhoodDistance, GreedyPairingTakesTheClosestPairFirst) {
   EXPECT_EQ(pairs[0], std::make_pair(0, 0));
   EXPECT_EQ(pairs[1], std::make_pair(1, 1));
   EXPECT_NEAR(neighbourhood_distance(output, exemplar, 2.0), 0.01 + 0.36, 1e-12);
+}
+
+TEST(NeighbourhoodDistance, AttributesCostAlphaAndKeysRestrictThePairs) {
+  const double r = 3.0, alpha = 0.5;
+  // Keys 0 and 1 (two sample ids); the exemplar's key-1 neighbour has attribute 2.
+  const Neighbourhood exemplar = {{Vec3(1, 0, 0), 0, 0, 1}, {Vec3(0, 1, 0), 1, 1, 2}};
+  const Neighbourhood output = {{Vec3(1, 0.5, 0), 0, 0, 1}, {Vec3(0, 1, 0), 1, 1, 1}};
+  // (0.5² + 0) + (0 + α) = 0.75.
+  EXPECT_DOUBLE_EQ(neighbourhood_distance(output, exemplar, r, alpha), 0.75);
+  // Without α attributes are free.
+  EXPECT_DOUBLE_EQ(neighbourhood_distance(output, exemplar, r), 0.25);
+  // The key-0 neighbour cannot take the key-1 partner even if nearer: it is 1 away from its own.
+  const Neighbourhood swapped = {{Vec3(0, 1, 0), 0, 0, 1}};
+  EXPECT_DOUBLE_EQ(neighbourhood_distance(swapped, exemplar, r, alpha), 2.0);
+  // A pair cost is capped at r².
+  const Neighbour far{Vec3(0, 0, 0), 0, 0, 7};
+  EXPECT_DOUBLE_EQ(pair_cost(far, exemplar[0], 1.2, 10.0), 1.44);
 }
 
 }  // namespace

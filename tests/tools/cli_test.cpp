@@ -208,7 +208,9 @@ TEST(CliSample, SampleRecordsSeedAndParameters) {
   EXPECT_NE(svg.find("&quot;seed&quot;:7"), std::string::npos);
   EXPECT_NE(svg.find("viewBox=\"0 0 200 200\""), std::string::npos);
   const std::string trace = testing::read_file(dir.file("trace.csv"));
-  EXPECT_EQ(trace.rfind("# shapeproc sample seed 7 chain 1\nstep,elements,log_density\n", 0), 0u)
+  EXPECT_EQ(trace.rfind(
+                "# shapeproc sample shape-process seed 7 chain 1\nstep,elements,log_density\n", 0),
+            0u)
       << trace.substr(0, 80);
   // Same seed, same output.
   const std::string again = dir.file("again.svg").string();

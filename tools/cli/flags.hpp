@@ -53,7 +53,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const VerbosityFlags& verbosity);
 
 struct SampleFlags {
-  std::string size, domain, intensity, boundary, trace, png;
+  std::string size, domain_file, intensity, boundary, trace, png;
   long long iterations = 0;
   std::uint64_t seed = 1;
   int chains = 1, threads = 0;
@@ -62,15 +62,22 @@ struct SampleFlags {
   double png_scale = 0.0;
   VerbosityFlags verbosity;
 
-  void add_to(CLI::App& command);
+  // `sampler_options`: also --intensity, --shift-probability and --shift-radius, which only the
+  // shape process's sampler takes.
+  void add_to(CLI::App& command, bool sampler_options = true);
   // Checks what can be checked before any expensive work: --size's syntax (and its count when
   // `dimension` is known, else 2 or 3), the output, --png and --trace extensions, --boundary with
   // --domain, and that the mask and map files exist. Throws core::UsageError or core::InputError.
   void check(const std::string& output, int dimension = 0) const;
+  // The output domain (--size, --boundary, --domain, --intensity) for a `dimension`-D model.
+  geometry::Domain domain(int dimension) const;
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.
   int run(const model::ShapeProcessModel& model, const std::string& output,
+          synthesis::SynthesisRecord record, std::ostream& out) const;
+  // The same for any synthesis method: its chains, their outputs, pictures and traces.
+  int run(const synthesis::Synthesizer& synthesizer, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out) const;
 };
 

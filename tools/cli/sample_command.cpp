@@ -1,5 +1,5 @@
-// shapeproc sample model.json -o out.svg --size W,H[,D]: birth-death Metropolis-Hastings, and
-// shapeproc synthesize EXEMPLAR -o out.svg --size ...: fit, then sample.
+// shapeproc sample model.json -o out.svg --size W,H[,D]: birth-death Metropolis-Hastings; and
+// the chains' runner and output writer every synthesis method's command shares.
 #include <filesystem>
 #include <memory>
 
@@ -33,8 +33,10 @@ std::string suffixed(const std::string& path, int chain, int chains) {
 
 void write_trace(const std::string& file, const synthesis::SynthesisResult& result) {
   core::write_file_atomically(file, [&](std::ostream& f) {
-    f << "# shapeproc " << result.record.command << " seed " << result.record.seed << " chain "
-      << result.record.chain << "\nstep,elements,log_density\n";
+    f << "# shapeproc " << result.record.command << ' ' << result.record.method << " seed "
+      << result.record.seed << " chain " << result.record.chain
+      << (result.record.method == "shape-process" ? "\nstep,elements,log_density\n"
+                                                  : "\niteration,elements,energy\n");
     for (const auto& t : result.trace)
       f << t.step << ',' << t.elements << ',' << core::format_number(t.log_density) << '\n';
   });
@@ -54,29 +56,32 @@ std::vector<std::pair<std::string, std::string>> png_text(
 
 }  // namespace
 
-void SampleFlags::add_to(CLI::App& command) {
+void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
   command.add_option("--size", size, "domain W,H (2D) or W,H,D (3D), in the model's units")
       ->required();
-  command.add_option("--domain", domain,
+  command.add_option("--domain", domain_file,
                      "2D domain shape: an SVG (its filled shapes) or a grayscale PNG mask (white = "
                      "inside), stretched over --size");
-  command.add_option(
-      "--intensity", intensity,
-      "2D intensity map: grayscale PNG stretched over --size, scales beta (white = 1)");
   command
       .add_option(
           "--iterations", iterations,
-          "steps per chain (default: until the element count is stationary, see docs/sample.md)")
+          "steps per chain (default: until the element count is stationary, see docs/sample.md); "
+          "ma-em: EM iterations (default 10)")
       ->check(non_negative_number());
-  command
-      .add_option("--shift-probability", shift_probability,
-                  "share of steps that shift an element (0: birth-death only)")
-      ->check(CLI::Range(0.0, 0.95))
-      ->capture_default_str();
-  command
-      .add_option("--shift-radius", shift_radius,
-                  "largest shift (default: half the interaction range)")
-      ->check(non_negative_number());
+  if (sampler_options) {
+    command.add_option(
+        "--intensity", intensity,
+        "2D intensity map: grayscale PNG stretched over --size, scales beta (white = 1)");
+    command
+        .add_option("--shift-probability", shift_probability,
+                    "share of steps that shift an element (0: birth-death only)")
+        ->check(CLI::Range(0.0, 0.95))
+        ->capture_default_str();
+    command
+        .add_option("--shift-radius", shift_radius,
+                    "largest shift (default: half the interaction range)")
+        ->check(non_negative_number());
+  }
   command.add_option("--seed", seed, "random seed")->capture_default_str();
   command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")
       ->check(CLI::Range(1, 1000));
@@ -116,55 +121,63 @@ void SampleFlags::check(const std::string& output, int dimension) const {
     throw core::UsageError("--png: expected a .png file, got '" + png + "'");
   if (!trace.empty() && io::extension_of(trace) != "csv")
     throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
-  if (boundary == "torus" && !domain.empty())
+  if (boundary == "torus" && !domain_file.empty())
     throw core::UsageError(
         "--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
-  if (sizes->size() == 3 && (!domain.empty() || !intensity.empty()))
+  if (sizes->size() == 3 && (!domain_file.empty() || !intensity.empty()))
     throw core::UsageError("--domain and --intensity are for 2D models");
-  if (!domain.empty() && io::extension_of(domain) != "svg" && io::extension_of(domain) != "png") {
+  if (!domain_file.empty() && io::extension_of(domain_file) != "svg" &&
+      io::extension_of(domain_file) != "png") {
     throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" +
-                           domain + "'");
+                           domain_file + "'");
   }
   if (!intensity.empty() && io::extension_of(intensity) != "png") {
     throw core::UsageError("--intensity: expected a grayscale .png, got '" + intensity + "'");
   }
-  for (const std::string* file : {&domain, &intensity}) {
+  for (const std::string* file : {&domain_file, &intensity}) {
     if (!file->empty() && !std::filesystem::is_regular_file(*file))
       throw core::InputError(*file, 0, "no such file");
   }
 }
 
-int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
-                     synthesis::SynthesisRecord record, std::ostream& out) const {
-  check(output, model.dimension);
+geometry::Domain SampleFlags::domain(int dimension) const {
   io::DomainFiles files;
   files.size = *io::parse_number_list(size);
   files.boundary = boundary;
-  files.mask = domain;
+  files.mask = domain_file;
   files.intensity = intensity;
-  const geometry::Domain sample_domain = io::read_domain(files, model.dimension);
+  return io::read_domain(files, dimension);
+}
 
+int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
+                     synthesis::SynthesisRecord record, std::ostream& out) const {
+  check(output, model.dimension);
   sample::SamplerOptions options;
   options.iterations = iterations;
   options.shift_probability = shift_probability;
   options.shift_radius = shift_radius;
   if (!trace.empty())
     options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
-  const sample::ShapeProcessSampler sampler(model, sample_domain, options);
+  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), options);
+  return run(sampler, output, std::move(record), out);
+}
 
+int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::string& output,
+                     synthesis::SynthesisRecord record, std::ostream& out) const {
   synthesis::ChainOptions chains_options;
   chains_options.chains = chains;
   chains_options.threads = threads;
   chains_options.seed = seed;
-  record.domain_file = domain;
+  record.domain_file = domain_file;
   record.intensity_file = intensity;
   chains_options.record = std::move(record);
   const InterruptFlag interrupt;
   chains_options.cancel = interrupt.flag();
-  ProgressBar bar("sampling", verbosity.show_progress());
+  const bool sampler = synthesizer.method() == "shape-process";
+  ProgressBar bar(sampler ? "sampling" : "synthesising", verbosity.show_progress());
   chains_options.progress = [&bar](long long done, long long total) { bar.update(done, total); };
   const std::vector<synthesis::SynthesisResult> results =
-      synthesis::run_chains(sampler, chains_options);
+      synthesis::run_chains(synthesizer, chains_options);
   bar.finish();
 
   for (int c = 0; c < chains; ++c) {
@@ -185,14 +198,17 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
       picture.text = png_text(result.record);
       render::write_png(result.scene, suffixed(png, c, chains), picture);
     }
-    out << "sampled " << result.scene.elements.size() << " elements in " << result.record.steps
-        << " steps (" << result.record.seconds << " s";
+    out << (sampler ? "sampled " : "synthesised ") << result.scene.elements.size()
+        << " elements in " << result.record.steps << (sampler ? " steps (" : " iterations (")
+        << result.record.seconds << " s";
     for (std::size_t k = 0; k < result.counters.size(); ++k)
       out << (k ? ", " : "; ") << result.counters[k].first << ' ' << result.counters[k].second;
     out << "), seed " << result.record.chain_seed << '\n';
     if (!result.record.stationary) {
-      out << "warning: the element count was still changing after " << result.record.steps
-          << " steps; the output may not be at equilibrium (give --iterations)\n";
+      out << (sampler ? "warning: the element count was still changing after "
+                      : "warning: the energy was still falling after ")
+          << result.record.steps << (sampler ? " steps" : " iterations")
+          << "; the output may not be at equilibrium (give --iterations)\n";
     }
     out << "wrote " << file;
     if (!png.empty()) out << " and " << suffixed(png, c, chains);
@@ -235,48 +251,6 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
       record.arguments = arguments;
       record.inputs = {{"model", args->model}};
       return args->sample.run(model, args->output, std::move(record), out);
-    };
-  });
-}
-
-void add_synthesize_command(CLI::App& app, Action& action,
-                            const std::vector<std::string>& arguments) {
-  struct SynthesizeArguments {
-    std::string input, output, model;
-    FitFlags fit;
-    ReaderFlags reader;
-    SampleFlags sample;
-  };
-  auto args = std::make_shared<SynthesizeArguments>();
-  CLI::App* command =
-      app.add_subcommand("synthesize", "Fit a model to an exemplar, then sample an output from it");
-  command->add_option("EXEMPLAR", args->input, "input file")->required();
-  command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
-  command->add_option("--model", args->model, "also write the fitted model (.json)");
-  args->fit.add_to(*command);
-  args->reader.add_to(*command);
-  args->sample.add_to(*command);
-  command->callback([&action, args, arguments] {
-    action = [args, arguments](std::ostream& out) {
-      if (!args->model.empty() && io::extension_of(args->model) != "json")
-        throw core::UsageError(args->model + ": the model is written as .json");
-      args->sample.check(args->output);
-      args->fit.options(args->reader);  // its own checks, before reading or fitting anything
-      args->reader.options();
-      const fit::FitResult fitted =
-          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity);
-      if (!args->model.empty()) io::write_model(fitted.model, args->model);
-      print_model_brief(fitted.model, out);
-      synthesis::SynthesisRecord record;
-      record.command = "synthesize";
-      record.arguments = arguments;
-      record.inputs = {{"exemplar", args->input}};
-      if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
-      record.options = flatten_options("fit", args->fit.to_json());
-      for (auto& pair : flatten_options("reader", args->reader.to_json()))
-        record.options.push_back(std::move(pair));
-      args->sample.verbosity.stage("sampling");
-      return args->sample.run(fitted.model, args->output, std::move(record), out);
     };
   });
 }

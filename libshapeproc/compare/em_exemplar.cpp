@@ -1,0 +1,110 @@
+#include "libshapeproc/compare/em_exemplar.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/fit/fit_thresholds.hpp"
+#include "libshapeproc/fit/shape_classes.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
+
+namespace shapeproc::compare {
+
+double EmExemplar::attribute_distance(int element_a, int element_b) const {
+  const auto a = static_cast<std::size_t>(element_a), b = static_cast<std::size_t>(element_b);
+  return (category[a] != category[b] ? 1.0 : 0.0) + (shape_class[a] != shape_class[b] ? 1.0 : 0.0);
+}
+
+const std::vector<int>& EmExemplar::samples_with_key(int key) const {
+  static const std::vector<int> none;
+  return key >= 0 && key < static_cast<int>(by_key.size()) ? by_key[static_cast<std::size_t>(key)]
+                                                           : none;
+}
+
+double mean_nearest_distance(const std::vector<geometry::Element>& elements,
+                             const geometry::Domain& domain) {
+  if (elements.size() < 2) return 0.0;
+  // Grow a grid's cell until every element has a neighbour within it.
+  const Vec3 sizes = domain.sizes();
+  double cell =
+      std::pow(domain.measure() / static_cast<double>(elements.size()), 1.0 / domain.dimension());
+  for (;;) {
+    geometry::NeighbourGrid grid(domain.box(), domain.dimension(), cell, domain.periodic());
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      grid.insert(static_cast<int>(i), elements[i].position);
+    double sum = 0.0;
+    bool all = true;
+    for (std::size_t i = 0; i < elements.size() && all; ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      grid.for_each_candidate(elements[i].position, [&](int j) {
+        if (static_cast<std::size_t>(j) == i) return;
+        best = std::min(best, domain
+                                  .minimum_image(elements[static_cast<std::size_t>(j)].position -
+                                                 elements[i].position)
+                                  .norm());
+      });
+      if (best > cell) all = false;
+      sum += best;
+    }
+    if (all) return sum / static_cast<double>(elements.size());
+    if (cell > sizes.norm()) return sum / static_cast<double>(elements.size());
+    cell *= 2.0;
+  }
+}
+
+namespace {
+
+void classify_elements(EmExemplar& ex) {
+  const geometry::Scene& scene = ex.scene;
+  model::ShapeProcessModel skeleton = fit::model_skeleton(scene, fit::FitOptions{});
+  fit::assign_shape_classes(skeleton, scene);
+  const int classes = std::max<int>(1, static_cast<int>(skeleton.shape_classes.size()) + 1);
+  for (const geometry::Element& e : scene.elements) {
+    const int shape_class = skeleton.shapes.empty()
+                                ? -1
+                                : skeleton.shapes[static_cast<std::size_t>(e.shape)].shape_class;
+    ex.category.push_back(e.category);
+    ex.shape_class.push_back(shape_class);
+    ex.attribute.push_back(e.category * classes + shape_class + 1);
+  }
+}
+
+}  // namespace
+
+EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary boundary, double rings,
+                            const SampleOptions& options) {
+  if (scene.elements.size() < 2)
+    throw core::ArgumentError("neighbourhood EM", "the exemplar needs at least 2 elements");
+  if (!(rings > 0)) throw core::ArgumentError("neighbourhood EM", "--neighbourhood must be > 0");
+  EmExemplar ex;
+  ex.scene = scene;
+  ex.boundary = boundary;
+  const geometry::Domain domain(scene.window, scene.dimension, boundary);
+  ex.templates = sample_templates(scene, options);
+  ex.samples = place_samples(scene, ex.templates);
+  classify_elements(ex);
+  for (std::size_t s = 0; s < ex.samples.size(); ++s)
+    ex.sample_attribute.push_back(ex.attribute[static_cast<std::size_t>(ex.samples.element[s])]);
+  ex.spacing = mean_nearest_distance(scene.elements, domain);
+  ex.radius = (rings + 0.5) * ex.spacing;
+  ex.density = static_cast<double>(scene.elements.size()) / domain.measure();
+
+  // Positions wrapped into the window on a torus, so that the grid holds them.
+  std::vector<Vec3> positions = ex.samples.positions;
+  for (Vec3& p : positions) p = domain.wrap(p);
+  const geometry::NeighbourhoodIndex near_index(positions, ex.samples.key, ex.sample_attribute,
+                                                domain, ex.radius);
+  const geometry::NeighbourhoodIndex wide_index(positions, ex.samples.key, ex.sample_attribute,
+                                                domain, 2.0 * ex.radius);
+  for (std::size_t s = 0; s < positions.size(); ++s) {
+    ex.near.push_back(near_index.of(s));
+    ex.wide.push_back(wide_index.of(s));
+    const auto key = static_cast<std::size_t>(ex.samples.key[s]);
+    if (ex.by_key.size() <= key) ex.by_key.resize(key + 1);
+    ex.by_key[key].push_back(static_cast<int>(s));
+  }
+  return ex;
+}
+
+}  // namespace shapeproc::compare

@@ -1,0 +1,48 @@
+// The neighbourhood EM's starting output (Ma et al. 2011, §4.1).
+// - Patch copy (the default): the output is cut into square (cubic) cells of the neighbourhood's
+//   size 2r, and each cell, in scanline order, receives the whole elements of a patch of that size
+//   taken from the exemplar (anywhere on a torus, inside the window otherwise), turned by the
+//   orientation field at the cell's centre. Of kPatchCandidates patches at random places, the one
+//   whose samples' neighbourhoods among the elements already placed are nearest to their
+//   sources' (eq. 1) is copied, as image quilting picks its blocks: Ma et al. copy at random,
+//   which on regular exemplars leaves seams out of phase that the EM cannot close.
+// - Random element copy ("white noise"): as many elements as the exemplar's density gives the
+//   domain, each a random exemplar element at a uniform random place.
+// - Incremental add (Jodoin et al. 2002, Ijiri et al. 2008): from one element at the domain's
+//   centre, elements are added at the exemplar offsets of their sources' neighbours, a random
+//   frontier element at a time, where no element is nearer than half the exemplar's smallest
+//   nearest distance.
+// Elements whose reference position falls outside the domain (its box and mask) are not placed.
+#pragma once
+
+#include <string>
+
+#include "libshapeproc/compare/em_exemplar.hpp"
+#include "libshapeproc/compare/orientation_field.hpp"
+#include "libshapeproc/compare/output_samples.hpp"
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
+
+namespace shapeproc::compare {
+
+enum class Initialisation { patch_copy, random_copy, incremental_add };
+const char* to_string(Initialisation initialisation);
+Initialisation parse_initialisation(const std::string& text);  // throws core::ArgumentError
+
+// The first output, and for each of its samples the exemplar sample it was copied from.
+struct InitialOutput {
+  OutputSamples output;
+  std::vector<int> copied_from;  // per output sample
+};
+
+inline constexpr int kPatchCandidates = 16;
+
+// `alpha`: the attribute weight of eq. 1 (squared length units), for the patches' seams.
+InitialOutput initialise(const EmExemplar& exemplar, const geometry::Domain& domain,
+                         const OrientationField& orientation, Initialisation rule, double alpha,
+                         core::Random& random);
+
+// The elements the domain should hold at the exemplar's density (its box, or the mask's inside).
+double expected_elements(const EmExemplar& exemplar, const geometry::Domain& domain);
+
+}  // namespace shapeproc::compare

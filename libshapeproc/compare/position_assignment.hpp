@@ -1,0 +1,29 @@
+// The position half of the assignment step (Ma et al. 2011, §4.3, eq. 4): output sample positions
+// that satisfy, in the least-squares sense, every offset the search predicted,
+//     E_p = Σ (p(so) − p(s'o) − p̃(so, s'o))²   over the predictions,
+// solved as the sparse positive definite system of the graph Laplacian (Eigen's sparse Cholesky,
+// one factorisation for every axis). The unknowns are displacements from the current positions
+// and every offset takes the minimum image, so the system is the same on a torus. A small ridge
+// (kRidge per unit of the mean degree) fixes each connected group's free translation to no mean
+// move, and keeps samples without predictions where they are.
+#pragma once
+
+#include <vector>
+
+#include "libshapeproc/compare/neighbourhood_search.hpp"
+#include "libshapeproc/geometry/domain.hpp"
+
+namespace shapeproc::compare {
+
+inline constexpr double kRidge = 1e-6;
+
+// The displacement of each of the `count` samples at `positions` that minimises E_p.
+std::vector<Vec3> solve_positions(const std::vector<Vec3>& positions,
+                                  const std::vector<Prediction>& predictions,
+                                  const geometry::Domain& domain);
+
+// E_p at `positions` (for tests and the energy trace).
+double position_energy(const std::vector<Vec3>& positions,
+                       const std::vector<Prediction>& predictions, const geometry::Domain& domain);
+
+}  // namespace shapeproc::compare

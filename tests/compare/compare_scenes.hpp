@@ -1,0 +1,54 @@
+// Small scenes for the comparison methods' tests: lattices and scatters of rectangles.
+#pragma once
+
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/scene.hpp"
+
+namespace shapeproc::testing {
+
+// A filled axis-aligned rectangle w x h centred at the origin.
+inline geometry::Shape rectangle(double w, double h) {
+  geometry::Path2 path;
+  const geometry::Vec2 a(-w / 2, -h / 2), b(w / 2, -h / 2), c(w / 2, h / 2), d(-w / 2, h / 2);
+  path.segments = {geometry::Segment2::line(a, b), geometry::Segment2::line(b, c),
+                   geometry::Segment2::line(c, d), geometry::Segment2::line(d, a)};
+  path.closed = true;
+  geometry::Drawable2 drawable;
+  drawable.paths = {path};
+  drawable.style["fill"] = "#000000";
+  geometry::Shape shape;
+  shape.geometry = geometry::PlanarShape{{drawable}};
+  return shape;
+}
+
+// An n x n square lattice of w x h rectangles with spacing a, filling the window [0, n a]^2 (a
+// seamless tile: its copies continue the lattice).
+inline geometry::Scene rectangle_lattice(int n, double a, double w, double h) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(n * a, n * a, 0));
+  scene.categories = {{"a"}};
+  scene.shapes = {rectangle(w, h)};
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      scene.elements.push_back({0, 0, geometry::Vec3((i + 0.5) * a, (j + 0.5) * a, 0)});
+  return scene;
+}
+
+// `count` squares of side s at uniform random places of [0, size]^2, none closer than `gap`.
+inline geometry::Scene rectangle_scatter(int count, double size, double s, double gap,
+                                         std::uint64_t seed) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(size, size, 0));
+  scene.categories = {{"a"}};
+  scene.shapes = {rectangle(s, s)};
+  core::Random random(seed);
+  while (static_cast<int>(scene.elements.size()) < count) {
+    const geometry::Vec3 p(random.uniform(0, size), random.uniform(0, size), 0);
+    bool free = true;
+    for (const auto& e : scene.elements) free = free && (e.position - p).norm() >= gap;
+    if (free) scene.elements.push_back({0, 0, p});
+  }
+  return scene;
+}
+
+}  // namespace shapeproc::testing

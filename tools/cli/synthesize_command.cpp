@@ -1,0 +1,215 @@
+// shapeproc synthesize EXEMPLAR -o out.svg --size ... [--method shape-process|ma-em]: the shape
+// process (fit, then sample) or the neighbourhood EM of Ma et al. 2011, through the same domain,
+// chains, outputs and pictures.
+#include <cmath>
+#include <memory>
+
+#include "libshapeproc/compare/neighbourhood_em.hpp"
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
+#include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/io/png_reader.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/text.hpp"
+#include "tools/cli/commands.hpp"
+#include "tools/cli/common.hpp"
+#include "tools/cli/flags.hpp"
+#include "tools/cli/model_summary.hpp"
+
+namespace shapeproc::cli {
+
+namespace {
+
+// The neighbourhood EM's options (--method ma-em).
+struct EmFlags {
+  double rings = compare::EmOptions{}.rings;
+  int k = compare::EmOptions{}.k;
+  double alpha = compare::EmOptions{}.alpha;
+  double lambda = compare::EmOptions{}.lambda;
+  std::string samples = "auto";
+  std::string initialisation = "patch-copy";
+  std::string search = "k-coherence";
+  std::string reconstruction = "rigid";
+  std::string orientation;
+
+  void add_to(CLI::App& command) {
+    command.add_option("--neighbourhood", rings, "ma-em: neighbourhood size in rings (1 to 3)")
+        ->check(CLI::Range(0.25, 10.0))
+        ->capture_default_str();
+    command.add_option("--k", k, "ma-em: k-coherence similarity set size")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    command
+        .add_option("--alpha", alpha,
+                    "ma-em: weight of an attribute mismatch, in squared mean nearest distances")
+        ->check(non_negative_number())
+        ->capture_default_str();
+    command
+        .add_option("--lambda", lambda,
+                    "ma-em: weight of the domain-shape term, in squared mean nearest distances")
+        ->check(non_negative_number())
+        ->capture_default_str();
+    command
+        .add_option("--samples-per-element", samples,
+                    "ma-em: samples per element, 1 to 16, or auto (from each shape's elongation)")
+        ->capture_default_str();
+    command.add_option("--initialisation", initialisation, "ma-em: the starting output")
+        ->check(CLI::IsMember({"patch-copy", "random-copy", "incremental-add"}))
+        ->capture_default_str();
+    command.add_option("--search", search, "ma-em: k-coherence or brute-force search")
+        ->check(CLI::IsMember({"k-coherence", "brute-force"}))
+        ->capture_default_str();
+    command
+        .add_option("--reconstruction", reconstruction,
+                    "ma-em: how elements are rebuilt from their samples")
+        ->check(CLI::IsMember({"rigid", "similarity", "tps", "tps-approx"}))
+        ->capture_default_str();
+    command.add_option("--orientation-field", orientation,
+                       "ma-em, 2D: a constant angle in degrees, or a grayscale PNG stretched over "
+                       "--size (grey g turns the exemplar's frame by 360 g degrees)");
+  }
+
+  compare::EmOptions options(const geometry::Domain& domain, long long iterations) const {
+    compare::EmOptions o;
+    o.rings = rings;
+    o.k = k;
+    o.alpha = alpha;
+    o.lambda = lambda;
+    if (samples != "auto") {
+      const auto n = io::parse_number_list(samples);
+      if (!n || n->size() != 1 || (*n)[0] != std::floor((*n)[0]) || (*n)[0] < 1 ||
+          (*n)[0] > compare::kMaxSamplesPerElement)
+        throw core::UsageError("--samples-per-element: expected 1 to 16 or auto, got '" + samples +
+                               "'");
+      o.samples.per_element = static_cast<int>((*n)[0]);
+    }
+    o.initialisation = compare::parse_initialisation(initialisation);
+    o.search = search == "brute-force" ? compare::SearchRule::brute_force
+                                       : compare::SearchRule::k_coherence;
+    o.reconstruction = compare::parse_reconstruction(reconstruction);
+    if (iterations > 10000) throw core::UsageError("--iterations: ma-em takes at most 10000");
+    if (iterations > 0) o.iterations = static_cast<int>(iterations);
+    if (!orientation.empty()) {
+      if (io::extension_of(orientation) == "png") {
+        o.orientation = compare::OrientationField::map(
+            std::make_shared<const geometry::Raster>(io::read_grayscale_png(orientation)),
+            domain.box());
+      } else {
+        const auto angle = io::parse_number_list(orientation);
+        if (!angle || angle->size() != 1)
+          throw core::UsageError(
+              "--orientation-field: expected an angle in degrees or a .png, "
+              "got '" +
+              orientation + "'");
+        o.orientation = compare::OrientationField::constant((*angle)[0]);
+      }
+    }
+    return o;
+  }
+};
+
+// The names of the options added to `command` since it had `before` of them.
+std::vector<std::string> options_since(const CLI::App& command, std::size_t before) {
+  std::vector<std::string> names;
+  const auto all = command.get_options();
+  for (std::size_t i = before; i < all.size(); ++i) names.push_back(all[i]->get_name());
+  return names;
+}
+
+// Throws when an option of the other method was given.
+void reject_options(const CLI::App& command, const std::vector<std::string>& names,
+                    const std::string& method) {
+  for (const std::string& name : names) {
+    if (command.count(name) > 0) throw core::UsageError(name + " is for --method " + method);
+  }
+}
+
+}  // namespace
+
+void add_synthesize_command(CLI::App& app, Action& action,
+                            const std::vector<std::string>& arguments) {
+  struct SynthesizeArguments {
+    std::string input, output, model, method = "shape-process";
+    FitFlags fit;
+    ReaderFlags reader;
+    SampleFlags sample;
+    EmFlags em;
+    std::vector<std::string> fit_only, em_only;
+  };
+  auto args = std::make_shared<SynthesizeArguments>();
+  CLI::App* command = app.add_subcommand(
+      "synthesize",
+      "Synthesise an output like an exemplar: fit a shape process and sample it, or "
+      "run another method (--method)");
+  command->add_option("EXEMPLAR", args->input, "input file")->required();
+  command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
+  command
+      ->add_option("--method", args->method,
+                   "shape-process, or ma-em (the neighbourhood EM of Ma et al. 2011)")
+      ->check(CLI::IsMember({"shape-process", "ma-em"}))
+      ->capture_default_str();
+  std::size_t before = command->get_options().size();
+  command->add_option("--model", args->model, "also write the fitted model (.json)");
+  args->fit.add_to(*command);
+  command
+      ->add_option("--shift-probability", args->sample.shift_probability,
+                   "share of steps that shift an element (0: birth-death only)")
+      ->check(CLI::Range(0.0, 0.95))
+      ->capture_default_str();
+  command
+      ->add_option("--shift-radius", args->sample.shift_radius,
+                   "largest shift (default: half the interaction range)")
+      ->check(non_negative_number());
+  command->add_option("--intensity", args->sample.intensity,
+                      "2D intensity map: grayscale PNG stretched over --size, scales beta");
+  args->fit_only = options_since(*command, before);
+  before = command->get_options().size();
+  args->em.add_to(*command);
+  args->em_only = options_since(*command, before);
+  args->reader.add_to(*command);
+  args->sample.add_to(*command, /*sampler_options=*/false);
+  command->callback([&action, args, arguments, command] {
+    action = [args, arguments, command](std::ostream& out) {
+      const bool em = args->method == "ma-em";
+      reject_options(*command, em ? args->fit_only : args->em_only, em ? "shape-process" : "ma-em");
+      if (!args->model.empty() && io::extension_of(args->model) != "json")
+        throw core::UsageError(args->model + ": the model is written as .json");
+      args->sample.check(args->output);
+      args->reader.options();
+      synthesis::SynthesisRecord record;
+      record.command = "synthesize";
+      record.arguments = arguments;
+      record.inputs = {{"exemplar", args->input}};
+      if (em) {
+        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
+        args->sample.check(args->output, exemplar.dimension);
+        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
+        const compare::EmOptions options = args->em.options(domain, args->sample.iterations);
+        args->sample.verbosity.stage("analysing the exemplar");
+        const compare::NeighbourhoodEm method(
+            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
+            domain, options);
+        out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
+            << method.exemplar().samples.size() << " samples, radius "
+            << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';
+        for (auto& pair : flatten_options("reader", args->reader.to_json()))
+          record.options.push_back(std::move(pair));
+        args->sample.verbosity.stage("synthesising");
+        return args->sample.run(method, args->output, std::move(record), out);
+      }
+      args->fit.options(args->reader);  // its own checks, before reading or fitting anything
+      const fit::FitResult fitted =
+          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity);
+      if (!args->model.empty()) io::write_model(fitted.model, args->model);
+      print_model_brief(fitted.model, out);
+      if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
+      record.options = flatten_options("fit", args->fit.to_json());
+      for (auto& pair : flatten_options("reader", args->reader.to_json()))
+        record.options.push_back(std::move(pair));
+      args->sample.verbosity.stage("sampling");
+      return args->sample.run(fitted.model, args->output, std::move(record), out);
+    };
+  });
+}
+
+}  // namespace shapeproc::cli
