@@ -97,9 +97,15 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
                                                 domain, ex.radius);
   const geometry::NeighbourhoodIndex wide_index(positions, ex.samples.key, ex.sample_attribute,
                                                 domain, 2.0 * ex.radius);
+  // Sorted by key, so that the pairing visits only each key's range.
+  const auto by_key = [](const geometry::Neighbour& a, const geometry::Neighbour& b) {
+    return a.key < b.key || (a.key == b.key && a.element < b.element);
+  };
   for (std::size_t s = 0; s < positions.size(); ++s) {
     ex.near.push_back(near_index.of(s));
     ex.wide.push_back(wide_index.of(s));
+    std::sort(ex.near.back().begin(), ex.near.back().end(), by_key);
+    std::sort(ex.wide.back().begin(), ex.wide.back().end(), by_key);
     const auto key = static_cast<std::size_t>(ex.samples.key[s]);
     if (ex.by_key.size() <= key) ex.by_key.resize(key + 1);
     ex.by_key[key].push_back(static_cast<int>(s));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <tuple>
+#include <vector>
 
 namespace shapeproc::geometry {
 
@@ -64,20 +65,69 @@ Neighbourhood NeighbourhoodIndex::of(std::size_t centre) const {
 
 namespace {
 
-// The greedy pairing's candidates: (squared distance, output index, exemplar index), ascending.
-std::vector<std::tuple<double, int, int>> candidate_pairs(const Neighbourhood& output,
-                                                          const Neighbourhood& exemplar,
-                                                          double cap) {
-  std::vector<std::tuple<double, int, int>> candidates;
+// One candidate pair of the greedy pairing: its squared distance and the two indices.
+struct CandidatePair {
+  double cost;
+  int output, exemplar;
+  bool operator<(const CandidatePair& other) const {
+    if (cost != other.cost) return cost < other.cost;
+    if (output != other.output) return output < other.output;
+    return exemplar < other.exemplar;
+  }
+};
+
+// Calls f(output index, exemplar index, squared distance) for each pair of Ma's greedy pairing,
+// closest first. The candidate pairs (same key, nearer than r) are split at (r/4)²: the near ones
+// are sorted and paired first, and the far ones only sorted, among those still free, when some
+// output neighbour is left without a partner (the order of the pairs is unchanged). When the
+// exemplar side is sorted by key (the neighbourhood EM's are), each output neighbour only visits
+// its key's range. Buffers are reused by each thread.
+template <class F>
+void greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
+                  F&& f) {
+  thread_local std::vector<CandidatePair> near, far;
+  thread_local std::vector<char> used_output, used_exemplar;
+  near.clear();
+  far.clear();
+  const double cap = radius * radius, split = cap / 16.0;
+  const auto by_key = [](const Neighbour& a, const Neighbour& b) { return a.key < b.key; };
+  const bool sorted = std::is_sorted(exemplar.begin(), exemplar.end(), by_key);
   for (std::size_t a = 0; a < output.size(); ++a) {
-    for (std::size_t b = 0; b < exemplar.size(); ++b) {
-      if (output[a].key != exemplar[b].key || output[a].key < 0) continue;
-      const double c = (output[a].offset - exemplar[b].offset).squaredNorm();
-      if (c < cap) candidates.emplace_back(c, static_cast<int>(a), static_cast<int>(b));
+    const Neighbour& o = output[a];
+    if (o.key < 0) continue;
+    auto first = exemplar.begin(), last = exemplar.end();
+    if (sorted) std::tie(first, last) = std::equal_range(first, last, o, by_key);
+    for (auto it = first; it != last; ++it) {
+      if (it->key != o.key) continue;
+      const double c = (o.offset - it->offset).squaredNorm();
+      if (c < cap)
+        (c < split ? near : far)
+            .push_back({c, static_cast<int>(a), static_cast<int>(it - exemplar.begin())});
     }
   }
-  std::sort(candidates.begin(), candidates.end());
-  return candidates;
+  used_output.assign(output.size(), 0);
+  used_exemplar.assign(exemplar.size(), 0);
+  std::size_t paired = 0;
+  const auto take = [&](const std::vector<CandidatePair>& pairs) {
+    for (const CandidatePair& p : pairs) {
+      const auto a = static_cast<std::size_t>(p.output), b = static_cast<std::size_t>(p.exemplar);
+      if (used_output[a] || used_exemplar[b]) continue;
+      used_output[a] = used_exemplar[b] = 1;
+      f(p.output, p.exemplar, p.cost);
+      if (++paired == output.size()) return;
+    }
+  };
+  std::sort(near.begin(), near.end());
+  take(near);
+  if (paired == output.size() || far.empty()) return;
+  far.erase(std::remove_if(far.begin(), far.end(),
+                           [&](const CandidatePair& p) {
+                             return used_output[static_cast<std::size_t>(p.output)] ||
+                                    used_exemplar[static_cast<std::size_t>(p.exemplar)];
+                           }),
+            far.end());
+  std::sort(far.begin(), far.end());
+  take(far);
 }
 
 }  // namespace
@@ -86,33 +136,21 @@ std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& outpu
                                                       const Neighbourhood& exemplar,
                                                       double radius) {
   std::vector<std::pair<int, int>> pairs;
-  std::vector<bool> used_output(output.size(), false), used_exemplar(exemplar.size(), false);
-  for (const auto& [c, a, b] : candidate_pairs(output, exemplar, radius * radius)) {
-    if (used_output[static_cast<std::size_t>(a)] || used_exemplar[static_cast<std::size_t>(b)])
-      continue;
-    used_output[static_cast<std::size_t>(a)] = used_exemplar[static_cast<std::size_t>(b)] = true;
-    pairs.emplace_back(a, b);
-    if (pairs.size() == output.size()) break;
-  }
+  greedy_pairs(output, exemplar, radius, [&](int a, int b, double) { pairs.emplace_back(a, b); });
   return pairs;
 }
 
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
                               double radius, double alpha) {
-  const double cap = radius * radius;
   double sum = 0.0;
   std::size_t paired = 0;
-  std::vector<bool> used_output(output.size(), false), used_exemplar(exemplar.size(), false);
-  for (const auto& [c, a, b] : candidate_pairs(output, exemplar, cap)) {
-    if (used_output[static_cast<std::size_t>(a)] || used_exemplar[static_cast<std::size_t>(b)])
-      continue;
-    used_output[static_cast<std::size_t>(a)] = used_exemplar[static_cast<std::size_t>(b)] = true;
+  greedy_pairs(output, exemplar, radius, [&](int a, int b, double c) {
     sum += alpha > 0.0 ? pair_cost(output[static_cast<std::size_t>(a)],
                                    exemplar[static_cast<std::size_t>(b)], radius, alpha)
                        : c;
-    if (++paired == output.size()) break;
-  }
-  return sum + static_cast<double>(output.size() - paired) * cap;
+    ++paired;
+  });
+  return sum + static_cast<double>(output.size() - paired) * radius * radius;
 }
 
 }  // namespace shapeproc::geometry
