@@ -8,6 +8,7 @@
 #include "libshapeproc/fit/fit_thresholds.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::compare {
 
@@ -80,15 +81,22 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
   EmExemplar ex;
   ex.scene = scene;
   ex.boundary = boundary;
-  const geometry::Domain domain(scene.window, scene.dimension, boundary);
-  ex.templates = sample_templates(scene, options);
-  ex.samples = place_samples(scene, ex.templates);
+  // A tile smaller than its wide neighbourhoods' diameter is repeated until it holds them: on its
+  // own torus the nearest image would miss the elements' further images.
+  if (boundary == geometry::Boundary::torus) {
+    const geometry::Domain tile(scene.window, scene.dimension, boundary);
+    ex.scene = geometry::repeat_to_reach(
+        scene, 4.0 * (rings + 0.5) * mean_nearest_distance(scene.elements, tile));
+  }
+  const geometry::Domain domain(ex.scene.window, ex.scene.dimension, boundary);
+  ex.templates = sample_templates(ex.scene, options);
+  ex.samples = place_samples(ex.scene, ex.templates);
   classify_elements(ex);
   for (std::size_t s = 0; s < ex.samples.size(); ++s)
     ex.sample_attribute.push_back(ex.attribute[static_cast<std::size_t>(ex.samples.element[s])]);
-  ex.spacing = mean_nearest_distance(scene.elements, domain);
+  ex.spacing = mean_nearest_distance(ex.scene.elements, domain);
   ex.radius = (rings + 0.5) * ex.spacing;
-  ex.density = static_cast<double>(scene.elements.size()) / domain.measure();
+  ex.density = static_cast<double>(ex.scene.elements.size()) / domain.measure();
 
   // Positions wrapped into the window on a torus, so that the grid holds them.
   std::vector<Vec3> positions = ex.samples.positions;
@@ -103,9 +111,8 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
   };
   for (std::size_t s = 0; s < positions.size(); ++s) {
     ex.near.push_back(near_index.of(s));
-    ex.wide.push_back(wide_index.of(s));
+    ex.wide.emplace_back(wide_index.of(s), ex.radius, ex.scene.dimension);
     std::sort(ex.near.back().begin(), ex.near.back().end(), by_key);
-    std::sort(ex.wide.back().begin(), ex.wide.back().end(), by_key);
     const auto key = static_cast<std::size_t>(ex.samples.key[s]);
     if (ex.by_key.size() <= key) ex.by_key.resize(key + 1);
     ex.by_key[key].push_back(static_cast<int>(s));

@@ -19,18 +19,19 @@
 namespace shapeproc::compare {
 
 struct EmExemplar {
-  geometry::Scene scene;
+  geometry::Scene scene;  // a seamless tile smaller than 4r: repeated until it is not
   geometry::Boundary boundary = geometry::Boundary::open;
   std::vector<SampleTemplate> templates;  // per shape
   ElementSamples samples;
   // Per element: category, shape class (identical shapes, or size groups: fit/shape_classes) and
   // the attribute code q that combines them.
   std::vector<int> category, shape_class, attribute;
-  std::vector<int> sample_attribute;                // per sample: its element's attribute
-  double spacing = 0.0;                             // d̄, the mean nearest distance
-  double radius = 0.0;                              // r
-  double density = 0.0;                             // elements per unit area (volume)
-  std::vector<geometry::Neighbourhood> near, wide;  // per sample: radius r and 2r
+  std::vector<int> sample_attribute;                 // per sample: its element's attribute
+  double spacing = 0.0;                              // d̄, the mean nearest distance
+  double radius = 0.0;                               // r
+  double density = 0.0;                              // elements per unit area (volume)
+  std::vector<geometry::Neighbourhood> near;         // per sample: radius r
+  std::vector<geometry::PairingNeighbourhood> wide;  // per sample: radius 2r, for pairing
   // Samples by key (what a centre may be matched to).
   std::vector<std::vector<int>> by_key;  // indexed by key; empty where no sample has it
 

@@ -105,8 +105,11 @@ Placement patch_at(const EmExemplar& exemplar, const geometry::Domain& domain, c
 // How badly a patch fits the samples already placed: eq. 1 over its samples' neighbourhoods
 // made of placed samples only (within a patch the exemplar's own arrangement holds), plus r² for
 // every exemplar neighbour that would fall where elements are already placed but finds no
-// partner there (eq. 1 alone lets a seam open a gap for free); and the translation of the patch
-// that best closes the seam (the mean move its paired samples ask for).
+// partner there (eq. 1 alone lets a seam open a gap for free); the same from the other side for
+// the placed samples within r of the cell (`bordering`): eq. 1 over their neighbourhoods among
+// the patch's samples, plus r² for every neighbour their sources have inside the cell (`in_cell`)
+// that the patch leaves without a partner, so that sparse or empty patches do not win; and the
+// translation of the patch that best closes the seam (the mean move its paired samples ask for).
 struct Seam {
   double cost = 0.0;
   Vec3 shift = Vec3::Zero();
@@ -115,11 +118,14 @@ struct Seam {
 Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
                const InitialOutput& placed, const geometry::NeighbourGrid& grid,
                const Placement& patch, double radians, double alpha,
-               const std::function<bool(const Vec3&)>& filled) {
+               const std::function<bool(const Vec3&)>& filled, const std::vector<int>& bordering,
+               const std::function<bool(const Vec3&)>& in_cell) {
   const ElementSamples& samples = placed.output.samples;
+  const double r2 = exemplar.radius * exemplar.radius;
   Seam seam;
   int pairs = 0;
   geometry::Neighbourhood hood;
+  std::vector<std::pair<Vec3, std::size_t>> patch_samples;  // position, exemplar sample
   for (const auto& [element, position] : patch) {
     const int first = exemplar.samples.first[static_cast<std::size_t>(element)];
     const int count = exemplar.samples.count_of(element);
@@ -130,6 +136,7 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
           turn_about_z(exemplar.samples.positions[source] -
                            exemplar.scene.elements[static_cast<std::size_t>(element)].position,
                        radians));
+      patch_samples.emplace_back(at, source);
       hood.clear();
       grid.for_each_candidate(at, [&](int id) {
         const auto s = static_cast<std::size_t>(id);
@@ -138,7 +145,7 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
           hood.push_back(
               {turn_about_z(t, -radians), samples.key[s], id, placed.output.attribute[s]});
       });
-      const geometry::Neighbourhood& partner = exemplar.wide[source];
+      const geometry::PairingNeighbourhood& partner = exemplar.wide[source];
       seam.cost += geometry::neighbourhood_distance(hood, partner, exemplar.radius, alpha);
       std::vector<char> paired(partner.size(), 0);
       for (const auto& [a, b] : geometry::match_neighbourhoods(hood, partner, exemplar.radius)) {
@@ -153,6 +160,30 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
           seam.cost += exemplar.radius * exemplar.radius;
       }
     }
+  }
+  // The placed side.
+  geometry::Neighbourhood expected;
+  for (const int id : bordering) {
+    const auto s = static_cast<std::size_t>(id);
+    const Vec3 at = samples.positions[s];
+    hood.clear();
+    for (std::size_t i = 0; i < patch_samples.size(); ++i) {
+      const Vec3 t = domain.minimum_image(patch_samples[i].first - at);
+      const std::size_t e = patch_samples[i].second;
+      if (t.norm() < exemplar.radius)
+        hood.push_back({turn_about_z(t, -radians), exemplar.samples.key[e], static_cast<int>(i),
+                        exemplar.sample_attribute[e]});
+    }
+    expected.clear();
+    for (const geometry::Neighbour& n :
+         exemplar.near[static_cast<std::size_t>(placed.copied_from[s])])
+      if (in_cell(domain.wrap(at + turn_about_z(n.offset, radians)))) expected.push_back(n);
+    const auto matched = geometry::match_neighbourhoods(hood, expected, exemplar.radius);
+    for (const auto& [a, b] : matched)
+      seam.cost +=
+          geometry::pair_cost(hood[static_cast<std::size_t>(a)],
+                              expected[static_cast<std::size_t>(b)], exemplar.radius, alpha);
+    seam.cost += r2 * static_cast<double>(hood.size() + expected.size() - 2 * matched.size());
   }
   if (pairs > 0) seam.shift = turn_about_z(seam.shift / pairs, radians);
   return seam;
@@ -219,6 +250,27 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
           }
           return index < current;
         };
+        // Whether a place lies in this cell, and the placed samples within r of it.
+        const auto in_cell = [&](const Vec3& p) {
+          for (int a = 0; a < dim; ++a) {
+            double t = p[a] - lo[a];
+            if (domain.periodic()) {
+              const double side = domain.sizes()[a];
+              t -= side * std::floor(t / side);
+            }
+            if (!(t >= 0.0 && t < extent[a])) return false;
+          }
+          return true;
+        };
+        std::vector<int> bordering;
+        const Vec3 centre = lo + 0.5 * extent;
+        for (std::size_t s = 0; s < out.output.samples.size(); ++s) {
+          const Vec3 t = domain.minimum_image(out.output.samples.positions[s] - centre);
+          bool near_cell = true;
+          for (int a = 0; a < dim; ++a)
+            near_cell = near_cell && std::abs(t[a]) < 0.5 * extent[a] + exemplar.radius;
+          if (near_cell) bordering.push_back(static_cast<int>(s));
+        }
         Placement best;
         double best_cost = std::numeric_limits<double>::infinity();
         const bool first_cell = out.output.elements() == 0;
@@ -234,7 +286,8 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
             break;
           }
           // The patch as drawn, and moved to close its seam.
-          const Seam seam = seam_cost(exemplar, domain, out, grid, patch, radians, alpha, filled);
+          const Seam seam = seam_cost(exemplar, domain, out, grid, patch, radians, alpha, filled,
+                                      bordering, in_cell);
           // The same cell filled from the exemplar patch moved the other way, so that its
           // elements move by the shift and the cell stays covered.
           Vec3 moved_origin = origin - turn_about_z(seam.shift, -radians);
@@ -243,8 +296,9 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
                                          window_min[a] + std::max(0.0, period[a] - cell[a]));
           Placement moved =
               uncrowded(patch_at(exemplar, domain, moved_origin, lo, extent, radians));
-          const double moved_cost =
-              seam_cost(exemplar, domain, out, grid, moved, radians, alpha, filled).cost;
+          const double moved_cost = seam_cost(exemplar, domain, out, grid, moved, radians, alpha,
+                                              filled, bordering, in_cell)
+                                        .cost;
           if (seam.cost < best_cost) {
             best_cost = seam.cost;
             best = std::move(patch);

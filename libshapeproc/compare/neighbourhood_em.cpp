@@ -97,24 +97,41 @@ synthesis::SynthesisResult NeighbourhoodEm::synthesize(
   fixed.rule = SearchRule::fixed;
   while (done < options_.iterations && !converged) {
     if (control.cancelled()) throw core::Cancelled();
-    // Assignment: positions (eq. 4) and attributes (eq. 5), kept only if the energy of the
-    // current matches falls.
+    // Assignment: positions (eq. 4), then attributes (eq. 5), each kept only if the energy of
+    // the current matches falls.
+    SearchResult kept;
+    bool accepted = false;
     const std::vector<Vec3> displacement =
         solve_positions(output.samples.positions, current.predictions, domain_);
-    const std::vector<int> sources = vote_attributes(exemplar_, output, current);
-    bool accepted = false;
-    for (double step = 1.0; step >= 0.125 && !accepted; step *= 0.5) {
-      OutputSamples candidate = moved(output, displacement, step, sources, exemplar_, domain_);
-      const SearchResult kept = search(exemplar_, candidate, domain_, fixed, current);
-      if (kept.energy < current.energy) {
+    for (double step = 1.0; step >= kShortestStep && !accepted; step *= 0.5) {
+      OutputSamples candidate =
+          moved(output, displacement, step, output.source, exemplar_, domain_);
+      SearchResult energy = search(exemplar_, candidate, domain_, fixed, current);
+      if (energy.energy < current.energy) {
         output = std::move(candidate);
+        kept = std::move(energy);
         accepted = true;
-        // Search: the next matches (the current ones among the candidates, so no increase).
-        SearchResult next = search(exemplar_, output, domain_, settings_, kept);
-        if (next.energy > kept.energy) next = kept;
-        converged = current.energy - next.energy <= options_.tolerance * current.energy;
-        current = std::move(next);
       }
+    }
+    const std::vector<int> sources = vote_attributes(exemplar_, output, current);
+    if (sources != output.source) {
+      const SearchResult& before = accepted ? kept : current;
+      OutputSamples candidate =
+          moved(output, std::vector<Vec3>(output.samples.size(), Vec3::Zero()), 0.0, sources,
+                exemplar_, domain_);
+      SearchResult energy = search(exemplar_, candidate, domain_, fixed, current);
+      if (energy.energy < before.energy) {
+        output = std::move(candidate);
+        kept = std::move(energy);
+        accepted = true;
+      }
+    }
+    if (accepted) {
+      // Search: the next matches (the current ones among the candidates, so no increase).
+      SearchResult next = search(exemplar_, output, domain_, settings_, kept);
+      if (next.energy > kept.energy) next = std::move(kept);
+      converged = current.energy - next.energy <= options_.tolerance * current.energy;
+      current = std::move(next);
     }
     converged = converged || !accepted;
     ++done;

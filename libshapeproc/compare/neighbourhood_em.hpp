@@ -6,8 +6,9 @@
 // iteration cap (10, as in the paper) is reached; the elements are then rebuilt from their
 // samples.
 //
-// An assignment is kept only when it lowers the energy of the matches it came from; otherwise
-// it is shortened (halved up to 3 times) and, failing that, the chain has converged. With the
+// Each half of the assignment is kept only when it lowers the energy of the matches it came from:
+// the positions' move is shortened (halved down to kShortestStep) until it does, and when neither
+// the move nor the vote lowers the energy, the chain has converged. With the
 // next search free to keep every match, the energy never increases over the iterations.
 // The output's element count is the initialisation's: the EM moves elements, it does not add or
 // remove them, except that elements it moved outside the domain (eq. 6 is only a soft term) are
@@ -25,6 +26,8 @@
 #include "libshapeproc/synthesis/synthesizer.hpp"
 
 namespace shapeproc::compare {
+
+inline constexpr double kShortestStep = 1.0 / 16.0;
 
 struct EmOptions {
   double rings = 2.0;  // neighbourhood size

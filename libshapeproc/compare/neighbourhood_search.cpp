@@ -1,5 +1,6 @@
 #include "libshapeproc/compare/neighbourhood_search.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
@@ -77,10 +78,13 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
           output.attribute[c] != exemplar.sample_attribute[static_cast<std::size_t>(m)]
               ? settings.alpha
               : 0.0;
-      const double cost = attribute +
-                          geometry::neighbourhood_distance(
-                              hood, exemplar.wide[static_cast<std::size_t>(m)], r, settings.alpha) +
-                          domain_term(exemplar, domain, settings, positions[c], m);
+      // Candidates that cannot beat the best so far stop at a lower bound (ties still compare).
+      const double extra = attribute + domain_term(exemplar, domain, settings, positions[c], m);
+      if (extra > best) continue;
+      const double cost =
+          extra + geometry::neighbourhood_distance(
+                      hood, exemplar.wide[static_cast<std::size_t>(m)], r, settings.alpha,
+                      std::nextafter(best - extra, std::numeric_limits<double>::infinity()));
       if (cost < best || (cost == best && m < chosen)) {
         best = cost;
         chosen = m;
@@ -91,7 +95,7 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
     result.energy += best;
     if (chosen < 0) continue;
     // The pairing's predictions and votes.
-    const geometry::Neighbourhood& partner = exemplar.wide[static_cast<std::size_t>(chosen)];
+    const geometry::PairingNeighbourhood& partner = exemplar.wide[static_cast<std::size_t>(chosen)];
     result.votes[c].push_back(chosen);
     for (const auto& [a, b] : geometry::match_neighbourhoods(hood, partner, r)) {
       const geometry::Neighbour& o = hood[static_cast<std::size_t>(a)];

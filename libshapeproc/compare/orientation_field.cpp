@@ -11,6 +11,7 @@ namespace shapeproc::compare {
 OrientationField OrientationField::constant(double degrees) {
   OrientationField field;
   field.constant_set_ = true;
+  field.degrees_ = degrees;
   // On screen y points down: a counter-clockwise turn on screen is a clockwise one in (x, y).
   field.radians_ = -degrees * core::kPi / 180.0;
   return field;
@@ -44,7 +45,7 @@ geometry::Vec3 OrientationField::turn(const geometry::Vec3& offset, const geomet
 }
 
 std::string OrientationField::describe() const {
-  if (constant_set_) return core::format_number(-radians_ * 180.0 / core::kPi) + " degrees";
+  if (constant_set_) return core::format_number(degrees_) + " degrees";
   return raster_ ? "map" : "none";
 }
 

@@ -32,7 +32,7 @@ class OrientationField {
 
  private:
   bool constant_set_ = false;
-  double radians_ = 0.0;
+  double radians_ = 0.0, degrees_ = 0.0;
   std::shared_ptr<const geometry::Raster> raster_;
   geometry::Box3 box_;
 };

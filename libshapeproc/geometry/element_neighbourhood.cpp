@@ -1,6 +1,8 @@
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <tuple>
 #include <vector>
 
@@ -76,34 +78,41 @@ struct CandidatePair {
   }
 };
 
-// Calls f(output index, exemplar index, squared distance) for each pair of Ma's greedy pairing,
-// closest first. The candidate pairs (same key, nearer than r) are split at (r/4)²: the near ones
-// are sorted and paired first, and the far ones only sorted, among those still free, when some
-// output neighbour is left without a partner (the order of the pairs is unchanged). When the
-// exemplar side is sorted by key (the neighbourhood EM's are), each output neighbour only visits
-// its key's range. Buffers are reused by each thread.
-template <class F>
-void greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
-                  F&& f) {
+// Ma's greedy pairing, closest pair first, calling f(output index, exemplar index, squared
+// distance) for each pair. It runs in two phases split at (r/4)²: the near candidate pairs of
+// every output neighbour (`near(a, visit)` calls visit(b) for a superset of its exemplar
+// partners of its key nearer than r/4) are sorted and paired first; then, only for the output
+// neighbours left without a partner, every other candidate of their key nearer than r
+// (`all(a, visit)`), among the exemplar neighbours still free. The pairs and their order are
+// those of one sort of every candidate. Buffers are reused by each thread.
+//
+// `bound`: once Σ over the output neighbours of a lower bound of their pair's cost (their
+// nearest near candidate, else (r/4)²) reaches it, no pair is made and that sum is returned;
+// otherwise the result is -1.
+template <class Near, class All, class F>
+double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
+                   Near&& near_of, All&& all_of, F&& f, double bound) {
   thread_local std::vector<CandidatePair> near, far;
   thread_local std::vector<char> used_output, used_exemplar;
   near.clear();
-  far.clear();
   const double cap = radius * radius, split = cap / 16.0;
-  const auto by_key = [](const Neighbour& a, const Neighbour& b) { return a.key < b.key; };
-  const bool sorted = std::is_sorted(exemplar.begin(), exemplar.end(), by_key);
+  double lower = 0.0;
   for (std::size_t a = 0; a < output.size(); ++a) {
     const Neighbour& o = output[a];
-    if (o.key < 0) continue;
-    auto first = exemplar.begin(), last = exemplar.end();
-    if (sorted) std::tie(first, last) = std::equal_range(first, last, o, by_key);
-    for (auto it = first; it != last; ++it) {
-      if (it->key != o.key) continue;
-      const double c = (o.offset - it->offset).squaredNorm();
-      if (c < cap)
-        (c < split ? near : far)
-            .push_back({c, static_cast<int>(a), static_cast<int>(it - exemplar.begin())});
+    double nearest = split;
+    if (o.key >= 0) {
+      near_of(a, [&](std::size_t b) {
+        const Neighbour& e = exemplar[b];
+        if (e.key != o.key) return;
+        const double c = (o.offset - e.offset).squaredNorm();
+        if (c < split) {
+          near.push_back({c, static_cast<int>(a), static_cast<int>(b)});
+          nearest = std::min(nearest, c);
+        }
+      });
     }
+    lower += nearest;
+    if (lower >= bound) return lower;
   }
   used_output.assign(output.size(), 0);
   used_exemplar.assign(exemplar.size(), 0);
@@ -119,15 +128,67 @@ void greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, do
   };
   std::sort(near.begin(), near.end());
   take(near);
-  if (paired == output.size() || far.empty()) return;
-  far.erase(std::remove_if(far.begin(), far.end(),
-                           [&](const CandidatePair& p) {
-                             return used_output[static_cast<std::size_t>(p.output)] ||
-                                    used_exemplar[static_cast<std::size_t>(p.exemplar)];
-                           }),
-            far.end());
+  if (paired == output.size()) return -1.0;
+  far.clear();
+  for (std::size_t a = 0; a < output.size(); ++a) {
+    const Neighbour& o = output[a];
+    if (used_output[a] || o.key < 0) continue;
+    all_of(a, [&](std::size_t b) {
+      const Neighbour& e = exemplar[b];
+      if (used_exemplar[b] || e.key != o.key) return;
+      const double c = (o.offset - e.offset).squaredNorm();
+      if (c >= split && c < cap) far.push_back({c, static_cast<int>(a), static_cast<int>(b)});
+    });
+  }
   std::sort(far.begin(), far.end());
   take(far);
+  return -1.0;
+}
+
+// The pairing against a plain neighbourhood: a scan of the exemplar side (of the key's range
+// when it is sorted by key).
+template <class F>
+double greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
+                    F&& f, double bound = std::numeric_limits<double>::infinity()) {
+  const auto by_key = [](const Neighbour& a, const Neighbour& b) { return a.key < b.key; };
+  const bool sorted = std::is_sorted(exemplar.begin(), exemplar.end(), by_key);
+  const auto scan = [&](std::size_t a, auto&& visit) {
+    auto first = exemplar.begin(), last = exemplar.end();
+    if (sorted) std::tie(first, last) = std::equal_range(first, last, output[a], by_key);
+    for (auto it = first; it != last; ++it) visit(static_cast<std::size_t>(it - exemplar.begin()));
+  };
+  return greedy_core(output, exemplar, radius, scan, scan, f, bound);
+}
+
+// The pairing against an indexed neighbourhood: near partners from the grid.
+template <class F>
+double greedy_pairs(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
+                    double radius, F&& f, double bound = std::numeric_limits<double>::infinity()) {
+  const auto near = [&](std::size_t a, auto&& visit) {
+    exemplar.for_each_within(output[a].key, output[a].offset, 1, visit);
+  };
+  const auto all = [&](std::size_t a, auto&& visit) {
+    exemplar.for_each_within(output[a].key, output[a].offset, 4, visit);
+  };
+  return greedy_core(output, exemplar.neighbours(), radius, near, all, f, bound);
+}
+
+template <class Exemplar>
+double distance(const Neighbourhood& output, const Exemplar& exemplar,
+                const Neighbourhood& partners, double radius, double alpha, double bound) {
+  double sum = 0.0;
+  std::size_t paired = 0;
+  const double lower = greedy_pairs(
+      output, exemplar, radius,
+      [&](int a, int b, double c) {
+        sum += alpha > 0.0 ? pair_cost(output[static_cast<std::size_t>(a)],
+                                       partners[static_cast<std::size_t>(b)], radius, alpha)
+                           : c;
+        ++paired;
+      },
+      bound);
+  if (lower >= 0.0) return lower;
+  return sum + static_cast<double>(output.size() - paired) * radius * radius;
 }
 
 }  // namespace
@@ -140,17 +201,68 @@ std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& outpu
   return pairs;
 }
 
+std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& output,
+                                                      const PairingNeighbourhood& exemplar,
+                                                      double radius) {
+  std::vector<std::pair<int, int>> pairs;
+  greedy_pairs(output, exemplar, radius, [&](int a, int b, double) { pairs.emplace_back(a, b); });
+  return pairs;
+}
+
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
-                              double radius, double alpha) {
-  double sum = 0.0;
-  std::size_t paired = 0;
-  greedy_pairs(output, exemplar, radius, [&](int a, int b, double c) {
-    sum += alpha > 0.0 ? pair_cost(output[static_cast<std::size_t>(a)],
-                                   exemplar[static_cast<std::size_t>(b)], radius, alpha)
-                       : c;
-    ++paired;
+                              double radius, double alpha, double bound) {
+  return distance(output, exemplar, exemplar, radius, alpha, bound);
+}
+
+double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
+                              double radius, double alpha, double bound) {
+  return distance(output, exemplar, exemplar.neighbours(), radius, alpha, bound);
+}
+
+// PairingNeighbourhood: the neighbours sorted by key, then by cell of a grid of side r/4 over
+// the offsets [−2r, 2r)^dim (offsets beyond fall in the border cells).
+
+PairingNeighbourhood::PairingNeighbourhood(Neighbourhood neighbours, double radius, int dimension)
+    : neighbours_(std::move(neighbours)), side_(radius / 4.0), dimension_(dimension) {
+  const int rows = dimension_ == 3 ? kCells * kCells : kCells;
+  struct Entry {
+    int key, row, column;
+    Neighbour neighbour;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(neighbours_.size());
+  for (const Neighbour& n : neighbours_) {
+    const int z = dimension_ == 3 ? axis_cell(n.offset.z()) : 0;
+    entries.push_back({n.key, z * kCells + axis_cell(n.offset.y()), axis_cell(n.offset.x()), n});
+  }
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return std::tie(a.key, a.row, a.column) < std::tie(b.key, b.row, b.column);
   });
-  return sum + static_cast<double>(output.size() - paired) * radius * radius;
+  neighbours_.clear();
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const Entry& e = entries[i];
+    if (distinct_keys_.empty() || distinct_keys_.back() != e.key) {
+      distinct_keys_.push_back(e.key);
+      row_start_.insert(row_start_.end(), static_cast<std::size_t>(rows + 1), static_cast<int>(i));
+    }
+    keys_.push_back(e.key);
+    column_.push_back(e.column);
+    neighbours_.push_back(e.neighbour);
+    // Rows after this one start after it (until a later entry says otherwise).
+    int* start =
+        row_start_.data() + (distinct_keys_.size() - 1) * static_cast<std::size_t>(rows + 1);
+    for (int r = e.row + 1; r <= rows; ++r) start[r] = static_cast<int>(i) + 1;
+  }
+}
+
+int PairingNeighbourhood::axis_cell(double x) const {
+  return std::clamp(static_cast<int>(std::floor(x / side_)) + kCells / 2, 0, kCells - 1);
+}
+
+std::pair<std::size_t, std::size_t> PairingNeighbourhood::key_range(int key) const {
+  const auto [first, last] = std::equal_range(keys_.begin(), keys_.end(), key);
+  return {static_cast<std::size_t>(first - keys_.begin()),
+          static_cast<std::size_t>(last - keys_.begin())};
 }
 
 }  // namespace shapeproc::geometry

@@ -13,6 +13,8 @@
 // The cap makes a neighbourhood of radius 2r on the exemplar side as good as Ma's unbounded one.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -56,14 +58,78 @@ class NeighbourhoodIndex {
   NeighbourGrid grid_;
 };
 
+// An exemplar neighbourhood prepared for many pairings (the neighbourhood EM's): its neighbours
+// sorted by key, then by cell of a grid of side r/4 over the offsets, so that the partners an
+// output neighbour may pair with first (those nearer than r/4) are found by a few binary
+// searches instead of a scan. Pairings against it equal those against its neighbours.
+class PairingNeighbourhood {
+ public:
+  static constexpr int kCells = 16;  // per axis, over [−2r, 2r)
+
+  PairingNeighbourhood() = default;
+  PairingNeighbourhood(Neighbourhood neighbours, double radius, int dimension);
+
+  const Neighbourhood& neighbours() const { return neighbours_; }
+  std::size_t size() const { return neighbours_.size(); }
+  const Neighbour& operator[](std::size_t i) const { return neighbours_[i]; }
+
+  // The index range of the neighbours of `key`.
+  std::pair<std::size_t, std::size_t> key_range(int key) const;
+  // Calls visit(index) for every neighbour of `key` in the cells up to `reach` cells from
+  // `offset`'s: a superset of those within reach · r/4 of it (reach 1: the near partners; 4:
+  // every partner nearer than r).
+  template <class F>
+  void for_each_within(int key, const Vec3& offset, int reach, F&& visit) const {
+    const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), key);
+    if (k == distinct_keys_.end() || *k != key) return;
+    const std::size_t rows = dimension_ == 3 ? kCells * kCells : kCells;
+    const int* start =
+        row_start_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) * (rows + 1);
+    const int x = axis_cell(offset.x()), y = axis_cell(offset.y());
+    const int z = dimension_ == 3 ? axis_cell(offset.z()) : 0;
+    const int reach_z = dimension_ == 3 ? reach : 0;
+    for (int dz = -reach_z; dz <= reach_z; ++dz) {
+      if (z + dz < 0 || z + dz >= kCells) continue;
+      for (int dy = -reach; dy <= reach; ++dy) {
+        if (y + dy < 0 || y + dy >= kCells) continue;
+        const int row = (z + dz) * kCells + (y + dy);
+        for (int i = start[row]; i < start[row + 1]; ++i) {
+          const int dx = column_[static_cast<std::size_t>(i)] - x;
+          if (dx >= -reach && dx <= reach) visit(static_cast<std::size_t>(i));
+        }
+      }
+    }
+  }
+
+ private:
+  int axis_cell(double x) const;
+
+  Neighbourhood neighbours_;  // sorted by key, row of the grid, column
+  std::vector<int> keys_, column_, distinct_keys_;
+  // Per distinct key, where each grid row's neighbours start (rows + 1 entries).
+  std::vector<int> row_start_;
+  double side_ = 1.0;
+  int dimension_ = 2;
+};
+
 // The greedy pairing of Ma et al.: (index in `output`, index in `exemplar`) pairs of one key,
 // closest first, each used once, none at r or farther.
 std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& output,
                                                       const Neighbourhood& exemplar, double radius);
 
-// |n(o) − n(e)| of eq. 1, with the greedy pairing and attribute weight `alpha`.
+std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& output,
+                                                      const PairingNeighbourhood& exemplar,
+                                                      double radius);
+
+// |n(o) − n(e)| of eq. 1, with the greedy pairing and attribute weight `alpha`. A search that
+// only needs distances below `bound` may pass it: a neighbourhood shown to be at least that far
+// (by the sum of each neighbour's nearest candidate) returns that lower bound, unpaired.
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
-                              double radius, double alpha = 0.0);
+                              double radius, double alpha = 0.0,
+                              double bound = std::numeric_limits<double>::infinity());
+double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
+                              double radius, double alpha = 0.0,
+                              double bound = std::numeric_limits<double>::infinity());
 
 // The cost of one pair of eq. 1: min(|Δp̂|² + α [q ≠ q'], r²).
 inline double pair_cost(const Neighbour& output, const Neighbour& exemplar, double radius,

@@ -1,6 +1,8 @@
 #include "libshapeproc/geometry/tile_repeat.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace shapeproc::geometry {
 
@@ -25,6 +27,13 @@ Scene repeat_tile(const Scene& tile, int times) {
   if (tile.dimension == 2) max.z() = tile.window.max().z();
   out.window = Box3(tile.window.min(), max);
   return out;
+}
+
+Scene repeat_to_reach(const Scene& tile, double reach) {
+  double side = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < tile.dimension; ++a) side = std::min(side, tile.window.sizes()[a]);
+  if (!(side > 0) || side >= reach) return tile;
+  return repeat_tile(tile, static_cast<int>(std::ceil(reach / side)));
 }
 
 int tile_repeats(std::size_t elements) {

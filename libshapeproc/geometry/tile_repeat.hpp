@@ -15,6 +15,10 @@ namespace shapeproc::geometry {
 // moved by whole windows, on a window `times` as large along each axis from the same corner.
 Scene repeat_tile(const Scene& tile, int times);
 
+// The tile repeated as often as needed for its smallest side to reach `reach` (unchanged when it
+// does): a neighbourhood of radius R on a torus sees every image once when the side is >= 2R.
+Scene repeat_to_reach(const Scene& tile, double reach);
+
 // Repeats along each side that a tile of `elements` elements is fitted with: none from 8
 // elements (their interaction ranges stay within half the tile), else 3 (an element's images one
 // period away on either side are then two elements; on a repeat of 2 they would be one), and 4 for

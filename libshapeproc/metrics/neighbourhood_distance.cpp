@@ -9,6 +9,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::metrics {
 
@@ -33,9 +34,10 @@ double inner_distance(const geometry::Scene& scene, const Vec3& p) {
 
 NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& output,
                                                      geometry::Boundary output_boundary,
-                                                     const geometry::Scene& exemplar,
+                                                     const geometry::Scene& tile,
                                                      geometry::Boundary exemplar_boundary,
                                                      double radius) {
+  const geometry::Scene& exemplar = tile;
   if (output.elements.empty() || exemplar.elements.empty())
     throw core::ArgumentError("neighbourhood distance", "a scene has no elements");
   if (output.dimension != exemplar.dimension)
@@ -46,6 +48,13 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
   NeighbourhoodDistance result;
   result.radius = radius > 0 ? radius : 2.0 * spacing;
   const double r = result.radius;
+  // A periodic exemplar smaller than its neighbourhoods' diameter (4r) is repeated, so that the
+  // nearest image does not hide an element's further images.
+  const geometry::Scene repeated = exemplar_boundary == geometry::Boundary::torus
+                                       ? geometry::repeat_to_reach(tile, 4.0 * r)
+                                       : geometry::Scene{};
+  const geometry::Scene& exemplar_scene =
+      exemplar_boundary == geometry::Boundary::torus ? repeated : tile;
 
   // Categories are matched by name; the exemplar's numbering is the common one.
   std::vector<int> exemplar_map(exemplar.categories.size());
@@ -60,15 +69,15 @@ NeighbourhoodDistance average_neighbourhood_distance(const geometry::Scene& outp
 
   // Every exemplar element is a candidate centre: a neighbourhood cut by the exemplar's edge only
   // matches worse, and the minimum passes over it.
-  const geometry::Domain exemplar_domain = scene_domain(exemplar, exemplar_boundary);
-  const geometry::NeighbourhoodIndex exemplar_index(exemplar.elements, exemplar_domain, 2.0 * r,
-                                                    exemplar_map);
+  const geometry::Domain exemplar_domain = scene_domain(exemplar_scene, exemplar_boundary);
+  const geometry::NeighbourhoodIndex exemplar_index(exemplar_scene.elements, exemplar_domain,
+                                                    2.0 * r, exemplar_map);
   std::vector<std::vector<geometry::Neighbourhood>> exemplar_hoods(exemplar.categories.size());
-  for (std::size_t e = 0; e < exemplar.elements.size(); ++e) {
-    exemplar_hoods[static_cast<std::size_t>(exemplar.elements[e].category)].push_back(
+  for (std::size_t e = 0; e < exemplar_scene.elements.size(); ++e) {
+    exemplar_hoods[static_cast<std::size_t>(exemplar_scene.elements[e].category)].push_back(
         exemplar_index.of(e));
   }
-  result.exemplar_centres = static_cast<int>(exemplar.elements.size());
+  result.exemplar_centres = static_cast<int>(exemplar_scene.elements.size());
 
   // Output centres whose neighbourhood an open window cuts are left out, unless that is all of
   // them.

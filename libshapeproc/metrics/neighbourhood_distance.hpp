@@ -11,6 +11,8 @@
 // average neighbourhood distance is the mean over the output's elements of the smallest
 // |n(o) − n(e)| over the exemplar's elements.
 //
+// A periodic exemplar smaller than the neighbourhoods' diameter is repeated first
+// (geometry::repeat_to_reach), so that the nearest image does not hide further images.
 // Elements whose neighbourhood reaches outside an open window are not used as centres (their
 // neighbourhoods are cut), on either side, unless no element is far enough from the edge.
 #pragma once

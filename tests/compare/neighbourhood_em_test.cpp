@@ -42,7 +42,8 @@ TEST(NeighbourhoodEm, ASquareLatticeGivesALattice) {
   const geometry::Scene exemplar = testing::rectangle_lattice(6, 10.0, 3.0, 3.0);
   const Domain domain = Domain::from_sizes({150, 150}, Boundary::torus);
   const NeighbourhoodEm em(exemplar, Boundary::torus, domain, EmOptions{});
-  EXPECT_EQ(em.exemplar().samples.size(), 36u);
+  // The tile (side 60) is smaller than 4r (100): analysed repeated 2 x 2.
+  EXPECT_EQ(em.exemplar().samples.size(), 4 * 36u);
   EXPECT_NEAR(em.exemplar().spacing, 10.0, 1e-9);
   const synthesis::SynthesisResult result = run(em, 4);
   ASSERT_GT(result.scene.elements.size(), 150u);

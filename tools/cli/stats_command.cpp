@@ -139,12 +139,17 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
                                     const std::string& boundary) {
   EvaluatedScene e;
   e.file = file;
-  e.scene = io::read_scene(file, reader.options());
   e.record = io::read_synthesis_record(file);
+  // A shapeproc output is read as written (its elements are its groups): --tile is for exemplars.
+  io::ReaderOptions options = reader.options();
+  if (e.record) options.tile = false;
+  e.scene = io::read_scene(file, options);
   if (boundary == "torus") {
     e.boundary = geometry::Boundary::torus;
   } else if (boundary == "auto" && e.record) {
     e.boundary = e.record->boundary;
+  } else if (boundary == "auto" && options.tile) {
+    e.boundary = geometry::Boundary::torus;  // a seamless tile is one period of a torus
   }
   if (e.scene.elements.empty())
     throw core::InputError(file, 0, "the scene has no elements to measure");
@@ -158,8 +163,9 @@ EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader,
 
 void MetricFlags::add_to(CLI::App& command) {
   command
-      .add_option("--boundary", boundary,
-                  "auto (a shapeproc output's own boundary, else open), torus or open")
+      .add_option(
+          "--boundary", boundary,
+          "auto (a shapeproc output's own boundary, a --tile torus, else open), torus or open")
       ->check(CLI::IsMember({"auto", "torus", "open"}))
       ->capture_default_str();
   command.add_option("--edge", edge, "edge treatment of open windows: auto, border or none")

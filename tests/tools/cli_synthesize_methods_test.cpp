@@ -1,0 +1,85 @@
+// synthesize --method ma-em: the neighbourhood EM through the same domain, chains, outputs,
+// records and errors as the shape process.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/test_support.hpp"
+#include "tests/tools/cli_test_support.hpp"
+
+namespace shapeproc::cli {
+namespace {
+
+TEST(CliSynthesizeMaEm, OutputsCarryTheMethodsRecordAndRepeat) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("em.svg").string();
+  const std::string trace = dir.file("em.csv").string();
+  const Result r =
+      run_cli({"synthesize", data("svg/dashes-rows.svg"), "--method", "ma-em", "-o", out, "--size",
+               "300,200", "--seed", "3", "--iterations", "4", "--trace", trace, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("synthesised "), std::string::npos) << r.out;
+  const std::string svg = testing::read_file(out);
+  for (const char* part : {"&quot;method&quot;:&quot;neighbourhood-em&quot;", "&quot;seed&quot;:3",
+                           "em.neighbourhood_rings", "em.reconstruction", "--method"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  const std::string csv = testing::read_file(trace);
+  EXPECT_EQ(csv.find("# shapeproc synthesize neighbourhood-em seed 3 chain 1\niteration,elements,"
+                     "energy\n0,"),
+            0u)
+      << csv.substr(0, 90);
+  // Same seed, same bytes after the metadata.
+  const std::string again = dir.file("again.svg").string();
+  ASSERT_EQ(run_cli({"synthesize", data("svg/dashes-rows.svg"), "--method", "ma-em", "-o", again,
+                     "--size", "300,200", "--seed", "3", "--iterations", "4", "--quiet"})
+                .code,
+            0);
+  const auto body = [](const std::string& text) { return text.substr(text.find("</metadata>")); };
+  EXPECT_EQ(body(testing::read_file(again)), body(svg));
+  // stats reads the record back: the output's own torus.
+  const Result stats = run_cli({"stats", out, "--against", data("svg/dashes-rows.svg"), "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_EQ(nlohmann::json::parse(stats.out).at("boundary"), "torus");
+}
+
+TEST(CliSynthesizeMaEm, OptionsOfTheOtherMethodAndNonsenseAreRefused) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("em.svg").string();
+  const std::string exemplar = data("svg/dots-random.svg");
+  const auto em = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"synthesize", exemplar, "--method", "ma-em",
+                                     "-o",         out,      "--size",   "100,100"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args);
+  };
+  expect_one_line_error(em({"--estimator", "mpl"}), 2, "--estimator is for --method shape-process");
+  expect_one_line_error(em({"--shift-probability", "0.5"}), 2, "--shift-probability");
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3"}), 2,
+      "--k is for --method ma-em");
+  expect_one_line_error(em({"--samples-per-element", "0"}), 2, "--samples-per-element");
+  expect_one_line_error(em({"--orientation-field", "north"}), 2, "--orientation-field");
+  expect_one_line_error(em({"--reconstruction", "bend"}), 2, "--reconstruction");
+  expect_one_line_error(em({"--method", "copy"}), 2, "--method");
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "--method", "ma-em", "-o", out, "--size", "10,10,10"}), 2,
+      "for a 2D model");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSynthesizeMaEm, DomainShapesAndOrientationFields) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("em.svg").string();
+  const Result r =
+      run_cli({"synthesize", data("svg/dots-random.svg"), "--method", "ma-em", "-o", out, "--size",
+               "400,400", "--domain", data("maps/star.svg"), "--orientation-field", "30",
+               "--reconstruction", "tps", "--png", dir.file("em.png").string(), "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("em.png")));
+  const std::string svg = testing::read_file(out);
+  EXPECT_NE(svg.find("30 degrees"), std::string::npos);
+  EXPECT_NE(svg.find("&quot;boundary&quot;:&quot;open&quot;"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shapeproc::cli
