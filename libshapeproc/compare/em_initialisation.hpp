@@ -1,11 +1,5 @@
 // The neighbourhood EM's starting output (Ma et al. 2011, §4.1).
-// - Patch copy (the default): the output is cut into square (cubic) cells of the neighbourhood's
-//   size 2r, and each cell, in scanline order, receives the whole elements of a patch of that size
-//   taken from the exemplar (anywhere on a torus, inside the window otherwise), turned by the
-//   orientation field at the cell's centre. Of kPatchCandidates patches at random places, the one
-//   whose samples' neighbourhoods among the elements already placed are nearest to their
-//   sources' (eq. 1) is copied, as image quilting picks its blocks: Ma et al. copy at random,
-//   which on regular exemplars leaves seams out of phase that the EM cannot close.
+// - Patch copy (the default): whole elements copied patch by patch (compare/patch_copy.hpp).
 // - Random element copy ("white noise"): as many elements as the exemplar's density gives the
 //   domain, each a random exemplar element at a uniform random place.
 // - Incremental add (Jodoin et al. 2002, Ijiri et al. 2008): from one element at the domain's
@@ -33,14 +27,18 @@ Initialisation parse_initialisation(const std::string& text);  // throws core::A
 struct InitialOutput {
   OutputSamples output;
   std::vector<int> copied_from;  // per output sample
-};
 
-inline constexpr int kPatchCandidates = 16;
+  // Appends a copy of exemplar element `source` at `position`, turned by `radians`.
+  void add(const EmExemplar& exemplar, int source, const Vec3& position, double radians);
+};
 
 // `alpha`: the attribute weight of eq. 1 (squared length units), for the patches' seams.
 InitialOutput initialise(const EmExemplar& exemplar, const geometry::Domain& domain,
                          const OrientationField& orientation, Initialisation rule, double alpha,
                          core::Random& random);
+
+// The smallest distance between two exemplar elements (minimum image on a torus), at most d̄.
+double smallest_gap(const EmExemplar& exemplar);
 
 // The elements the domain should hold at the exemplar's density (its box, or the mask's inside).
 double expected_elements(const EmExemplar& exemplar, const geometry::Domain& domain);
