@@ -7,6 +7,7 @@ packages=(
   libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev pkgconf
+  libbox2d-dev libbullet-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -115,6 +115,42 @@ geometry::Shape map_shape(const geometry::Shape& shape,
   return out;
 }
 
+namespace {
+
+// Element e's samples, unwrapped around its first one.
+std::vector<Vec3> unwrapped_samples(const OutputSamples& output, std::size_t e,
+                                    const geometry::Domain& domain) {
+  const ElementSamples& samples = output.samples;
+  const int first = samples.first[e], count = samples.count_of(static_cast<int>(e));
+  const Vec3 anchor = samples.positions[static_cast<std::size_t>(first)];
+  std::vector<Vec3> to;
+  for (int k = 0; k < count; ++k)
+    to.push_back(anchor + domain.minimum_image(
+                              samples.positions[static_cast<std::size_t>(first + k)] - anchor));
+  return to;
+}
+
+const SampleTemplate& template_of(const EmExemplar& exemplar, const OutputSamples& output,
+                                  std::size_t e) {
+  const geometry::Element& source =
+      exemplar.scene.elements[static_cast<std::size_t>(output.source[e])];
+  return exemplar.templates[static_cast<std::size_t>(source.shape)];
+}
+
+}  // namespace
+
+Similarity rigid_placement(const EmExemplar& exemplar, const OutputSamples& output, std::size_t e,
+                           const geometry::Domain& domain, const OrientationField& orientation) {
+  const SampleTemplate& t = template_of(exemplar, output, e);
+  const std::vector<Vec3> to = unwrapped_samples(output, e, domain);
+  if (to.size() > 1) return fit_similarity(t.offsets, to, exemplar.scene.dimension, false);
+  Similarity s;
+  const double radians = orientation.angle_at(to[0]);
+  if (radians != 0.0) s.linear = Eigen::AngleAxisd(radians, Vec3::UnitZ()).toRotationMatrix();
+  s.translation = to[0] - s.linear * t.offsets[0];
+  return s;
+}
+
 geometry::Scene reconstruct(const EmExemplar& exemplar, const OutputSamples& output,
                             const geometry::Domain& domain, const OrientationField& orientation,
                             Reconstruction rule) {
@@ -125,35 +161,23 @@ geometry::Scene reconstruct(const EmExemplar& exemplar, const OutputSamples& out
   scene.categories = exemplar.scene.categories;
   scene.shapes = exemplar.scene.shapes;
   const int dim = scene.dimension;
-  const ElementSamples& samples = output.samples;
   for (std::size_t e = 0; e < output.elements(); ++e) {
     const geometry::Element& source =
         exemplar.scene.elements[static_cast<std::size_t>(output.source[e])];
-    const SampleTemplate& t = exemplar.templates[static_cast<std::size_t>(source.shape)];
-    const int first = samples.first[e], count = samples.count_of(static_cast<int>(e));
-    // The samples unwrapped around the first one.
-    const Vec3 anchor = samples.positions[static_cast<std::size_t>(first)];
-    std::vector<Vec3> to;
-    for (int k = 0; k < count; ++k)
-      to.push_back(anchor + domain.minimum_image(
-                                samples.positions[static_cast<std::size_t>(first + k)] - anchor));
+    const SampleTemplate& t = template_of(exemplar, output, e);
+    const std::vector<Vec3> to = unwrapped_samples(output, e, domain);
     const geometry::Shape& shape = exemplar.scene.shapes[static_cast<std::size_t>(source.shape)];
-    if (count == 1) {
-      const double radians = orientation.angle_at(anchor);
-      if (radians == 0.0) {
-        scene.elements.push_back(
-            {source.shape, source.category, domain.wrap(anchor - t.offsets[0])});
+    const auto count = static_cast<int>(to.size());
+    if (count == 1 || rule == Reconstruction::rigid || rule == Reconstruction::similarity ||
+        count < dim + 1) {
+      const Similarity s = count == 1 || rule == Reconstruction::rigid
+                               ? rigid_placement(exemplar, output, e, domain, orientation)
+                               : fit_similarity(t.offsets, to, dim, true);
+      if (s.linear.isIdentity(0.0)) {
+        // The drawn shape itself, moved: shared with the exemplar, not copied.
+        scene.elements.push_back({source.shape, source.category, domain.wrap(s.translation)});
         continue;
       }
-      geometry::add_element(scene,
-                            map_shape(shape,
-                                      [&](const Vec3& x) -> Vec3 {
-                                        return anchor + turn_about_z(x - t.offsets[0], radians);
-                                      }),
-                            source.category);
-    } else if (rule == Reconstruction::rigid || rule == Reconstruction::similarity ||
-               count < dim + 1) {
-      const Similarity s = fit_similarity(t.offsets, to, dim, rule != Reconstruction::rigid);
       geometry::add_element(scene, map_shape(shape, s), source.category);
     } else {
       const ThinPlateSpline spline(t.offsets, to, dim, rule == Reconstruction::tps);

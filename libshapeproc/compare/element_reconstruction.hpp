@@ -60,6 +60,12 @@ class ThinPlateSpline {
 geometry::Shape map_shape(const geometry::Shape& shape,
                           const std::function<Vec3(const Vec3&)>& map);
 
+// The rigid motion that places element e's source shape (local coordinates) on its samples:
+// Umeyama's fit without scale, or for a single sample, the sample's position and the orientation
+// field's turn.
+Similarity rigid_placement(const EmExemplar& exemplar, const OutputSamples& output, std::size_t e,
+                           const geometry::Domain& domain, const OrientationField& orientation);
+
 // The output scene: every element's shape rebuilt from its samples, window = the domain's box.
 geometry::Scene reconstruct(const EmExemplar& exemplar, const OutputSamples& output,
                             const geometry::Domain& domain, const OrientationField& orientation,

@@ -28,6 +28,8 @@ void check_options(const EmOptions& o, const geometry::Scene& exemplar,
     throw core::ArgumentError(
         "neighbourhood EM", "the exemplar is " + std::to_string(exemplar.dimension) +
                                 "D but the domain is " + std::to_string(domain.dimension()) + "D");
+  if (o.physics_steps < 0 || o.physics_steps > 1000)
+    throw core::ArgumentError("--physics-steps", "expected 0 to 1000 engine steps per iteration");
   if (!o.orientation.empty() && exemplar.dimension != 2)
     throw core::ArgumentError("--orientation-field", "orientation fields are for 2D outputs");
 }
@@ -60,6 +62,7 @@ NeighbourhoodEm::NeighbourhoodEm(const geometry::Scene& exemplar,
   if (options_.search == SearchRule::k_coherence)
     sets_ = build_similarity_sets(exemplar_, options_.k, settings_.alpha);
   settings_.sets = &sets_;
+  if (options_.physics_steps > 0) physics_.emplace(exemplar_, options_.physics_steps);
 }
 
 std::vector<std::pair<std::string, std::string>> NeighbourhoodEm::record_options() const {
@@ -75,7 +78,8 @@ std::vector<std::pair<std::string, std::string>> NeighbourhoodEm::record_options
       {"em.initialisation", to_string(options_.initialisation)},
       {"em.search", options_.search == SearchRule::brute_force ? "brute-force" : "k-coherence"},
       {"em.reconstruction", to_string(options_.reconstruction)},
-      {"em.orientation", options_.orientation.describe()}};
+      {"em.orientation", options_.orientation.describe()},
+      {"em.physics_steps", std::to_string(options_.physics_steps)}};
 }
 
 synthesis::SynthesisResult NeighbourhoodEm::synthesize(
@@ -126,14 +130,20 @@ synthesis::SynthesisResult NeighbourhoodEm::synthesize(
         accepted = true;
       }
     }
-    if (accepted) {
+    // The interleaved physics solver, after search and assignment.
+    bool settled = false;
+    if (physics_) {
+      settled = physics_->settle(exemplar_, output, domain_, options_.orientation);
+      if (settled) kept = search(exemplar_, output, domain_, fixed, accepted ? kept : current);
+    }
+    if (accepted || settled) {
       // Search: the next matches (the current ones among the candidates, so no increase).
       SearchResult next = search(exemplar_, output, domain_, settings_, kept);
       if (next.energy > kept.energy) next = std::move(kept);
-      converged = current.energy - next.energy <= options_.tolerance * current.energy;
+      converged = std::abs(current.energy - next.energy) <= options_.tolerance * current.energy;
       current = std::move(next);
     }
-    converged = converged || !accepted;
+    converged = converged || !(accepted || settled);
     ++done;
     result.trace.push_back({done, elements, current.energy});
     if (control.progress) control.progress(done, options_.iterations);

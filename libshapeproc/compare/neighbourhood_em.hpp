@@ -9,17 +9,21 @@
 // Each half of the assignment is kept only when it lowers the energy of the matches it came from:
 // the positions' move is shortened (halved down to kShortestStep) until it does, and when neither
 // the move nor the vote lowers the energy, the chain has converged. With the
-// next search free to keep every match, the energy never increases over the iterations.
+// next search free to keep every match, the energy never increases over the iterations, unless
+// the interleaved physics solver (off by default) moves elements apart: its moves are kept
+// whatever they cost, as an implicit term outside eq. 2.
 // The output's element count is the initialisation's: the EM moves elements, it does not add or
 // remove them, except that elements it moved outside the domain (eq. 6 is only a soft term) are
 // left out of the output (counted in the result's counters).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "libshapeproc/compare/element_reconstruction.hpp"
 #include "libshapeproc/compare/em_exemplar.hpp"
 #include "libshapeproc/compare/em_initialisation.hpp"
+#include "libshapeproc/compare/interleaved_physics.hpp"
 #include "libshapeproc/compare/k_coherence.hpp"
 #include "libshapeproc/compare/neighbourhood_search.hpp"
 #include "libshapeproc/compare/orientation_field.hpp"
@@ -40,6 +44,8 @@ struct EmOptions {
   SearchRule search = SearchRule::k_coherence;
   Reconstruction reconstruction = Reconstruction::rigid;
   int iterations = 10;
+  // The interleaved physics solver (§5): engine steps after each assignment; 0 = off.
+  int physics_steps = 0;
   double tolerance = 1e-3;  // converged when an iteration lowers the energy by less than this share
   OrientationField orientation;
 };
@@ -66,6 +72,7 @@ class NeighbourhoodEm : public synthesis::Synthesizer {
   EmOptions options_;
   SimilaritySets sets_;
   SearchSettings settings_;
+  std::optional<InterleavedPhysics> physics_;
 };
 
 }  // namespace shapeproc::compare

@@ -61,6 +61,11 @@ TEST(CliSynthesizeMaEm, OptionsOfTheOtherMethodAndNonsenseAreRefused) {
   expect_one_line_error(em({"--orientation-field", "north"}), 2, "--orientation-field");
   expect_one_line_error(em({"--reconstruction", "bend"}), 2, "--reconstruction");
   expect_one_line_error(em({"--method", "copy"}), 2, "--method");
+  expect_one_line_error(em({"--physics-steps", "3"}), 2, "--physics");
+  expect_one_line_error(em({"--physics", "--physics-steps", "0"}), 2, "--physics-steps");
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--physics"}), 2,
+      "--physics is for --method ma-em");
   expect_one_line_error(
       run_cli({"synthesize", exemplar, "--method", "ma-em", "-o", out, "--size", "10,10,10"}), 2,
       "for a 2D model");

@@ -31,6 +31,8 @@ struct EmFlags {
   std::string search = "k-coherence";
   std::string reconstruction = "rigid";
   std::string orientation;
+  bool physics = false;
+  int physics_steps = compare::kPhysicsSubSteps;
 
   void add_to(CLI::App& command) {
     command.add_option("--neighbourhood", rings, "ma-em: neighbourhood size in rings (1 to 3)")
@@ -67,6 +69,16 @@ struct EmFlags {
     command.add_option("--orientation-field", orientation,
                        "ma-em, 2D: a constant angle in degrees, or a grayscale PNG stretched over "
                        "--size (grey g turns the exemplar's frame by 360 g degrees)");
+    CLI::Option* flag =
+        command.add_flag("--physics", physics,
+                         "ma-em: interleave rigid-body steps (Box2D in 2D, Bullet in 3D) that push "
+                         "interpenetrating elements apart");
+    command
+        .add_option("--physics-steps", physics_steps,
+                    "ma-em: engine steps per EM iteration with --physics")
+        ->check(CLI::Range(1, 1000))
+        ->needs(flag)
+        ->capture_default_str();
   }
 
   compare::EmOptions options(const geometry::Domain& domain, long long iterations) const {
@@ -87,6 +99,7 @@ struct EmFlags {
     o.search = search == "brute-force" ? compare::SearchRule::brute_force
                                        : compare::SearchRule::k_coherence;
     o.reconstruction = compare::parse_reconstruction(reconstruction);
+    o.physics_steps = physics ? physics_steps : 0;
     if (iterations > 10000) throw core::UsageError("--iterations: ma-em takes at most 10000");
     if (iterations > 0) o.iterations = static_cast<int>(iterations);
     if (!orientation.empty()) {
