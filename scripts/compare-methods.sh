@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The shape process beside the neighbourhood EM of Ma et al. 2011 on a set of exemplars
-# (docs/compare.md): for each exemplar, `synthesize` with each method (2W x 2H, torus, seed 1),
-# then `stats OUTPUT --against EXEMPLAR` with the same metrics for both. Pictures go to
-# out/compare/NAME-METHOD.png. Options after the files go to every synthesize and stats call
+# (docs/compare.md): for each exemplar, `synthesize` with each method (2W x 2H, torus, seed 1;
+# the EM also with its interleaved physics solver), then `stats OUTPUT --against EXEMPLAR` with
+# the same metrics for all. Pictures go to out/compare/NAME-VARIANT.png. Options after the files go to every synthesize and stats call
 # (e.g. --tile for seamless tiles). Prints a markdown table.
 #   bash scripts/compare-methods.sh data/svg/*.svg
 #   bash scripts/compare-methods.sh --tile -- tiles/a.svg tiles/b.svg
@@ -26,19 +26,22 @@ for file in "$@"; do
   n=$(python3 -c 'import json, sys; print(json.loads(sys.argv[1])["elements"])' "$exemplar_json")
   size=$("$shapeproc" info "$file" "${options[@]}" | sed -n 's/^window: *\[\([-0-9.e]*\), \([-0-9.e]*\)\] x \[\([-0-9.e]*\), \([-0-9.e]*\)\].*/\1 \2 \3 \4/p' |
     awk '{printf "%g,%g", 2*($2-$1), 2*($4-$3)}')
-  for method in shape-process ma-em; do
-    output="out/compare/$name-$method.svg"
+  for variant in shape-process ma-em ma-em-physics; do
+    method=${variant%-physics}
+    extra=()
+    [ "$variant" = ma-em-physics ] && extra=(--physics)
+    output="out/compare/$name-$variant.svg"
     start=$(date +%s.%N)
-    if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" --size "$size" \
-      --seed 1 --quiet -o "$output" --png "out/compare/$name-$method.png" 2>&1); then
-      echo "| $name | $n | $method | failed: $(tail -n 1 <<< "$log") |"
+    if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" "${extra[@]}" \
+      --size "$size" --seed 1 --quiet -o "$output" --png "out/compare/$name-$variant.png" 2>&1); then
+      echo "| $name | $n | $variant | failed: $(tail -n 1 <<< "$log") |"
       continue
     fi
     seconds=$(echo "$(date +%s.%N) - $start" | bc)
     energy=$(sed -n 's/.*energy \([-0-9.e+]*\) -> \([-0-9.e+]*\).*/\1 \2/p' <<< "$log" | head -1)
     iterations=$(sed -n 's/.*iterations \([0-9]*\)\/\([0-9]*\).*/\1/p' <<< "$log" | head -1)
     stats=$("$shapeproc" stats "$output" --against "$file" "${options[@]}" --json 2>/dev/null)
-    python3 - "$stats" "$exemplar_json" "$name" "$n" "$method" "$seconds" "$energy" "$iterations" <<'PY'
+    python3 - "$stats" "$exemplar_json" "$name" "$n" "$variant" "$seconds" "$energy" "$iterations" <<'PY'
 import json, sys
 s, e = json.loads(sys.argv[1]), json.loads(sys.argv[2])
 name, n, method, seconds, energy, iterations = sys.argv[3:9]

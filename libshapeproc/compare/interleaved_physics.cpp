@@ -22,8 +22,8 @@ double typical_size(const geometry::Scene& scene) {
   return diagonals[diagonals.size() / 2];
 }
 
-// Ghosts of `body` at its periodic images that come within `reach` of the box.
-void add_ghosts(const RigidBody& body, const geometry::Domain& domain, double reach,
+// Ghosts of `body` (a copy: `bodies` may move while they are added) at its periodic images that come within `reach` of the box.
+void add_ghosts(RigidBody body, const geometry::Domain& domain, double reach,
                 std::vector<RigidBody>& bodies) {
   const int dim = domain.dimension();
   const geometry::Box3& box = domain.box();
@@ -37,10 +37,9 @@ void add_ghosts(const RigidBody& body, const geometry::Domain& domain, double re
     for (int a = 0; a < dim; ++a)
       near = near && at[a] >= box.min()[a] - reach && at[a] <= box.max()[a] + reach;
     if (!near) continue;
-    RigidBody ghost = body;
+    RigidBody& ghost = bodies.emplace_back(body);
     ghost.placement.translation = at;
     ghost.fixed = true;
-    bodies.push_back(ghost);
   }
 }
 

@@ -49,6 +49,7 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
   result.votes.assign(n, {});
   std::vector<char> seen(exemplar.samples.size(), 0);
   std::vector<int> candidates;
+  std::vector<std::pair<int, int>> trial, pairs;  // a candidate's pairing, the best one's
   for (std::size_t c = 0; c < n; ++c) {
     geometry::Neighbourhood hood = index.of(c);
     if (settings.orientation && !settings.orientation->empty()) {
@@ -72,6 +73,7 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
     }
     double best = std::numeric_limits<double>::infinity();
     int chosen = -1;
+    pairs.clear();
     for (const int m : candidates) {
       if (m < 0) continue;
       const double attribute =
@@ -84,10 +86,12 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
       const double cost =
           extra + geometry::neighbourhood_distance(
                       hood, exemplar.wide[static_cast<std::size_t>(m)], r, settings.alpha,
-                      std::nextafter(best - extra, std::numeric_limits<double>::infinity()));
+                      std::nextafter(best - extra, std::numeric_limits<double>::infinity()),
+                      &trial);
       if (cost < best || (cost == best && m < chosen)) {
         best = cost;
         chosen = m;
+        std::swap(pairs, trial);
       }
     }
     result.match[c] = chosen;
@@ -97,7 +101,7 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
     // The pairing's predictions and votes.
     const geometry::PairingNeighbourhood& partner = exemplar.wide[static_cast<std::size_t>(chosen)];
     result.votes[c].push_back(chosen);
-    for (const auto& [a, b] : geometry::match_neighbourhoods(hood, partner, r)) {
+    for (const auto& [a, b] : pairs) {
       const geometry::Neighbour& o = hood[static_cast<std::size_t>(a)];
       const geometry::Neighbour& e = partner[static_cast<std::size_t>(b)];
       const Vec3 offset =

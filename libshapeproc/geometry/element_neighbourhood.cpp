@@ -175,9 +175,11 @@ double greedy_pairs(const Neighbourhood& output, const PairingNeighbourhood& exe
 
 template <class Exemplar>
 double distance(const Neighbourhood& output, const Exemplar& exemplar,
-                const Neighbourhood& partners, double radius, double alpha, double bound) {
+                const Neighbourhood& partners, double radius, double alpha, double bound,
+                std::vector<std::pair<int, int>>* pairs = nullptr) {
   double sum = 0.0;
   std::size_t paired = 0;
+  if (pairs) pairs->clear();
   const double lower = greedy_pairs(
       output, exemplar, radius,
       [&](int a, int b, double c) {
@@ -185,9 +187,13 @@ double distance(const Neighbourhood& output, const Exemplar& exemplar,
                                        partners[static_cast<std::size_t>(b)], radius, alpha)
                            : c;
         ++paired;
+        if (pairs) pairs->emplace_back(a, b);
       },
       bound);
-  if (lower >= 0.0) return lower;
+  if (lower >= 0.0) {
+    if (pairs) pairs->clear();
+    return lower;
+  }
   return sum + static_cast<double>(output.size() - paired) * radius * radius;
 }
 
@@ -215,8 +221,9 @@ double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& 
 }
 
 double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
-                              double radius, double alpha, double bound) {
-  return distance(output, exemplar, exemplar.neighbours(), radius, alpha, bound);
+                              double radius, double alpha, double bound,
+                              std::vector<std::pair<int, int>>* pairs) {
+  return distance(output, exemplar, exemplar.neighbours(), radius, alpha, bound, pairs);
 }
 
 // PairingNeighbourhood: the neighbours sorted by key, then by cell of a grid of side r/4 over

@@ -123,13 +123,16 @@ std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& outpu
 
 // |n(o) − n(e)| of eq. 1, with the greedy pairing and attribute weight `alpha`. A search that
 // only needs distances below `bound` may pass it: a neighbourhood shown to be at least that far
-// (by the sum of each neighbour's nearest candidate) returns that lower bound, unpaired.
+// (by the sum of each neighbour's nearest candidate) returns that lower bound, unpaired. With
+// `pairs`, a completed pairing is also stored there (as match_neighbourhoods gives it; left empty
+// when the bound stops the pairing).
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
                               double radius, double alpha = 0.0,
                               double bound = std::numeric_limits<double>::infinity());
 double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
                               double radius, double alpha = 0.0,
-                              double bound = std::numeric_limits<double>::infinity());
+                              double bound = std::numeric_limits<double>::infinity(),
+                              std::vector<std::pair<int, int>>* pairs = nullptr);
 
 // The cost of one pair of eq. 1: min(|Δp̂|² + α [q ≠ q'], r²).
 inline double pair_cost(const Neighbour& output, const Neighbour& exemplar, double radius,
