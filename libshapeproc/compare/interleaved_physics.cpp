@@ -22,7 +22,8 @@ double typical_size(const geometry::Scene& scene) {
   return diagonals[diagonals.size() / 2];
 }
 
-// Ghosts of `body` (a copy: `bodies` may move while they are added) at its periodic images that come within `reach` of the box.
+// Ghosts of `body` (a copy: `bodies` may move while they are added) at its periodic images that
+// come within `reach` of the box.
 void add_ghosts(RigidBody body, const geometry::Domain& domain, double reach,
                 std::vector<RigidBody>& bodies) {
   const int dim = domain.dimension();
