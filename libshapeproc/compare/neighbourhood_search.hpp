@@ -39,6 +39,7 @@ struct SearchSettings {
 struct Prediction {
   int centre = 0, neighbour = 0;
   Vec3 offset = Vec3::Zero();
+  double weight = 1.0;  // its weight in E_p (Davison et al.'s eq. 4; Ma et al.: 1)
 };
 
 struct SearchResult {

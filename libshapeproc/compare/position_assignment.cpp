@@ -9,7 +9,8 @@ namespace shapeproc::compare {
 
 std::vector<Vec3> solve_positions(const std::vector<Vec3>& positions,
                                   const std::vector<Prediction>& predictions,
-                                  const geometry::Domain& domain) {
+                                  const geometry::Domain& domain,
+                                  const std::vector<double>& anchors) {
   const auto n = static_cast<Eigen::Index>(positions.size());
   std::vector<Vec3> displacement(positions.size(), Vec3::Zero());
   if (n == 0 || predictions.empty()) return displacement;
@@ -25,14 +26,17 @@ std::vector<Vec3> solve_positions(const std::vector<Vec3>& positions,
     if (a == b) continue;
     const Vec3 residual = p.offset - domain.minimum_image(positions[static_cast<std::size_t>(b)] -
                                                           positions[static_cast<std::size_t>(a)]);
-    triplets.emplace_back(a, a, 1.0);
-    triplets.emplace_back(b, b, 1.0);
-    triplets.emplace_back(a, b, -1.0);
-    triplets.emplace_back(b, a, -1.0);
-    rhs.row(b) += residual.transpose();
-    rhs.row(a) -= residual.transpose();
+    const double w = p.weight;
+    triplets.emplace_back(a, a, w);
+    triplets.emplace_back(b, b, w);
+    triplets.emplace_back(a, b, -w);
+    triplets.emplace_back(b, a, -w);
+    rhs.row(b) += w * residual.transpose();
+    rhs.row(a) -= w * residual.transpose();
   }
-  for (Eigen::Index i = 0; i < n; ++i) triplets.emplace_back(i, i, ridge);
+  for (Eigen::Index i = 0; i < n; ++i)
+    triplets.emplace_back(i, i,
+                          ridge + (anchors.empty() ? 0.0 : anchors[static_cast<std::size_t>(i)]));
   Eigen::SparseMatrix<double> system(n, n);
   system.setFromTriplets(triplets.begin(), triplets.end());
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
@@ -50,7 +54,7 @@ double position_energy(const std::vector<Vec3>& positions,
   for (const Prediction& p : predictions) {
     const Vec3 offset = domain.minimum_image(positions[static_cast<std::size_t>(p.neighbour)] -
                                              positions[static_cast<std::size_t>(p.centre)]);
-    sum += (offset - p.offset).squaredNorm();
+    sum += p.weight * (offset - p.offset).squaredNorm();
   }
   return sum;
 }

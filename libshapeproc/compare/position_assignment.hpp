@@ -17,10 +17,13 @@ namespace shapeproc::compare {
 
 inline constexpr double kRidge = 1e-6;
 
-// The displacement of each of the `count` samples at `positions` that minimises E_p.
+// The displacement of each of the samples at `positions` that minimises E_p, each prediction
+// weighted by its weight. `anchors` (empty, or one per sample) adds anchors[i] |d_i|² to E_p:
+// a sample's pull towards where it is (growth holds its older elements so).
 std::vector<Vec3> solve_positions(const std::vector<Vec3>& positions,
                                   const std::vector<Prediction>& predictions,
-                                  const geometry::Domain& domain);
+                                  const geometry::Domain& domain,
+                                  const std::vector<double>& anchors = {});
 
 // E_p at `positions` (for tests and the energy trace).
 double position_energy(const std::vector<Vec3>& positions,

@@ -1,10 +1,11 @@
-// shapeproc synthesize EXEMPLAR -o out.svg --size ... [--method shape-process|ma-em]: the shape
-// process (fit, then sample) or the neighbourhood EM of Ma et al. 2011, through the same domain,
-// chains, outputs and pictures.
+// shapeproc synthesize EXEMPLAR -o out.svg --size ... [--method shape-process|ma-em|davison]: the
+// shape process (fit, then sample), the neighbourhood EM of Ma et al. 2011 or the region growing
+// of Davison et al. 2018, through the same domain, chains, outputs and pictures.
 #include <cmath>
 #include <memory>
 
 #include "libshapeproc/compare/neighbourhood_em.hpp"
+#include "libshapeproc/compare/region_growing.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -34,18 +35,25 @@ struct EmFlags {
   bool physics = false;
   int physics_steps = compare::kPhysicsSubSteps;
 
-  void add_to(CLI::App& command) {
-    command.add_option("--neighbourhood", rings, "ma-em: neighbourhood size in rings (1 to 3)")
+  // The options both neighbourhood methods (ma-em, davison) take.
+  void add_shared_to(CLI::App& command) {
+    command
+        .add_option("--neighbourhood", rings,
+                    "ma-em, davison: neighbourhood size in rings (1 to 3)")
         ->check(CLI::Range(0.25, 10.0))
         ->capture_default_str();
-    command.add_option("--k", k, "ma-em: k-coherence similarity set size")
+    command.add_option("--k", k, "ma-em, davison: k-coherence similarity set size")
         ->check(CLI::Range(1, 100))
         ->capture_default_str();
     command
         .add_option("--alpha", alpha,
-                    "ma-em: weight of an attribute mismatch, in squared mean nearest distances")
+                    "ma-em, davison: weight of an attribute mismatch, in squared mean nearest "
+                    "distances")
         ->check(non_negative_number())
         ->capture_default_str();
+  }
+
+  void add_to(CLI::App& command) {
     command
         .add_option("--lambda", lambda,
                     "ma-em: weight of the domain-shape term, in squared mean nearest distances")
@@ -121,6 +129,40 @@ struct EmFlags {
   }
 };
 
+// Region growing's options (--method davison); it shares --neighbourhood, --k and --alpha.
+struct GrowthFlags {
+  double ratio = compare::GrowthOptions{}.ratio;
+  double bounding_radius = 0.0;
+  bool no_optimise = false;
+
+  void add_to(CLI::App& command) {
+    command
+        .add_option("--ratio", ratio,
+                    "davison: a candidate that can grow is taken only within this ratio of the "
+                    "best candidate's neighbourhood distance (> 1)")
+        ->check(CLI::Range(1.0 + 1e-9, 1e6))
+        ->capture_default_str();
+    command
+        .add_option("--bounding-radius", bounding_radius,
+                    "davison: every element's bounding radius (default: half each exemplar "
+                    "element's nearest distance, within its bounding circle)")
+        ->check(non_negative_number());
+    command.add_flag("--no-optimise", no_optimise,
+                     "davison: grow without the least-squares relaxation of the front");
+  }
+
+  compare::GrowthOptions options(const EmFlags& shared) const {
+    compare::GrowthOptions o;
+    o.rings = shared.rings;
+    o.k = shared.k;
+    o.alpha = shared.alpha;
+    o.ratio = ratio;
+    o.bounding_radius = bounding_radius;
+    o.optimise = !no_optimise;
+    return o;
+  }
+};
+
 // The names of the options added to `command` since it had `before` of them.
 std::vector<std::string> options_since(const CLI::App& command, std::size_t before) {
   std::vector<std::string> names;
@@ -147,7 +189,8 @@ void add_synthesize_command(CLI::App& app, Action& action,
     ReaderFlags reader;
     SampleFlags sample;
     EmFlags em;
-    std::vector<std::string> fit_only, em_only;
+    GrowthFlags growth;
+    std::vector<std::string> fit_only, shared, em_only, growth_only;
   };
   auto args = std::make_shared<SynthesizeArguments>();
   CLI::App* command = app.add_subcommand(
@@ -158,8 +201,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
   command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
   command
       ->add_option("--method", args->method,
-                   "shape-process, or ma-em (the neighbourhood EM of Ma et al. 2011)")
-      ->check(CLI::IsMember({"shape-process", "ma-em"}))
+                   "shape-process, ma-em (the neighbourhood EM of Ma et al. 2011) or davison "
+                   "(region growing, Davison et al. 2018)")
+      ->check(CLI::IsMember({"shape-process", "ma-em", "davison"}))
       ->capture_default_str();
   std::size_t before = command->get_options().size();
   command->add_option("--model", args->model, "also write the fitted model (.json)");
@@ -177,14 +221,24 @@ void add_synthesize_command(CLI::App& app, Action& action,
                       "2D intensity map: grayscale PNG stretched over --size, scales beta");
   args->fit_only = options_since(*command, before);
   before = command->get_options().size();
+  args->em.add_shared_to(*command);
+  args->shared = options_since(*command, before);
+  before = command->get_options().size();
   args->em.add_to(*command);
   args->em_only = options_since(*command, before);
+  before = command->get_options().size();
+  args->growth.add_to(*command);
+  args->growth_only = options_since(*command, before);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false);
   command->callback([&action, args, arguments, command] {
     action = [args, arguments, command](std::ostream& out) {
-      const bool em = args->method == "ma-em";
-      reject_options(*command, em ? args->fit_only : args->em_only, em ? "shape-process" : "ma-em");
+      const bool em = args->method == "ma-em", growth = args->method == "davison";
+      if (args->method != "shape-process")
+        reject_options(*command, args->fit_only, "shape-process");
+      if (!em) reject_options(*command, args->em_only, "ma-em");
+      if (!growth) reject_options(*command, args->growth_only, "davison");
+      if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
       args->sample.check(args->output);
@@ -193,6 +247,22 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.command = "synthesize";
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
+      if (growth) {
+        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
+        args->sample.check(args->output, exemplar.dimension);
+        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
+        args->sample.verbosity.stage("analysing the exemplar");
+        const compare::RegionGrowing method(
+            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
+            domain, args->growth.options(args->em));
+        out << "region growing: " << exemplar.elements.size()
+            << " exemplar elements, neighbourhood radius "
+            << core::format_number(method.exemplar().em.radius) << ' ' << exemplar.units << '\n';
+        for (auto& pair : flatten_options("reader", args->reader.to_json()))
+          record.options.push_back(std::move(pair));
+        args->sample.verbosity.stage("growing");
+        return args->sample.run(method, args->output, std::move(record), out);
+      }
       if (em) {
         const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
         args->sample.check(args->output, exemplar.dimension);

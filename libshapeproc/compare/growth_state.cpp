@@ -1,0 +1,138 @@
+#include "libshapeproc/compare/growth_state.hpp"
+
+#include <algorithm>
+
+#include "libshapeproc/compare/neighbourhood_search.hpp"
+
+namespace shapeproc::compare {
+
+namespace {
+
+double largest(const std::vector<double>& values) {
+  double m = 0.0;
+  for (const double v : values) m = std::max(m, v);
+  return m;
+}
+
+}  // namespace
+
+GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain& domain)
+    : exemplar_(exemplar),
+      domain_(domain),
+      largest_radius_(largest(exemplar.radius)),
+      reach_(std::max(exemplar.em.radius, 2.0 * largest_radius_)),
+      elements_(domain.box(), domain.dimension(), reach_, domain.periodic()),
+      free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
+
+bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
+
+bool GrowthState::overlaps(const Vec3& p, double radius) const {
+  bool hit = false;
+  elements_.for_each_candidate(p, [&](int o) {
+    if (hit) return;
+    const double reach = radius + exemplar_.radius[static_cast<std::size_t>(source(o))];
+    hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
+  });
+  return hit;
+}
+
+bool GrowthState::on_free_point(const Vec3& p, double radius) const {
+  bool hit = false;
+  free_.for_each_candidate(p, [&](int i) {
+    const FreePoint& v = points_[static_cast<std::size_t>(i)];
+    hit = hit || (v.alive && domain_.minimum_image(v.position - p).squaredNorm() <
+                                 (v.radius + radius) * (v.radius + radius));
+  });
+  return hit;
+}
+
+bool GrowthState::free_point_within(const Vec3& p, double distance) const {
+  bool hit = false;
+  free_.for_each_candidate(p, [&](int i) {
+    const FreePoint& v = points_[static_cast<std::size_t>(i)];
+    hit = hit ||
+          (v.alive && domain_.minimum_image(v.position - p).squaredNorm() < distance * distance);
+  });
+  return hit;
+}
+
+int GrowthState::add(int source, const Vec3& p) {
+  const int e = static_cast<int>(position_.size());
+  position_.push_back(domain_.wrap(p));
+  source_.push_back(source);
+  match_.push_back(source);
+  owned_.emplace_back();
+  elements_.insert(e, position_.back());
+  consume_free_points(e);
+  add_free_points(e);
+  return e;
+}
+
+void GrowthState::move(int e, const Vec3& p) {
+  const auto i = static_cast<std::size_t>(e);
+  elements_.remove(e, position_[i]);
+  position_[i] = domain_.wrap(p);
+  elements_.insert(e, position_[i]);
+  for (const int v : owned_[i]) kill(static_cast<std::size_t>(v));
+  owned_[i].clear();
+  consume_free_points(e);
+  add_free_points(e);
+}
+
+void GrowthState::kill(std::size_t point) {
+  if (!points_[point].alive) return;
+  points_[point].alive = false;
+  --alive_;
+}
+
+void GrowthState::add_free_points(int e) {
+  const auto i = static_cast<std::size_t>(e);
+  for (const FreeSpaceVector& v : exemplar_.free[static_cast<std::size_t>(source(e))]) {
+    const Vec3 q = domain_.wrap(position_[i] + v.offset);
+    if (!in_domain(q) || overlaps(q, v.radius)) continue;
+    const int id = static_cast<int>(points_.size());
+    points_.push_back({q, v.radius, e, true});
+    ++alive_;
+    free_.insert(id, q);
+    owned_[i].push_back(id);
+  }
+}
+
+void GrowthState::consume_free_points(int e) {
+  const Vec3& p = position(e);
+  const double r = exemplar_.radius[static_cast<std::size_t>(source(e))];
+  free_.for_each_candidate(p, [&](int id) {
+    const FreePoint& v = points_[static_cast<std::size_t>(id)];
+    if (v.alive &&
+        domain_.minimum_image(v.position - p).squaredNorm() < (v.radius + r) * (v.radius + r))
+      kill(static_cast<std::size_t>(id));
+  });
+}
+
+geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
+  geometry::Neighbourhood out;
+  const double r2 = exemplar_.em.radius * exemplar_.em.radius;
+  elements_.for_each_candidate(position(e), [&](int o) {
+    if (o == e) return;
+    const Vec3 offset = domain_.minimum_image(position(o) - position(e));
+    if (offset.squaredNorm() >= r2) return;
+    const auto s = static_cast<std::size_t>(source(o));
+    out.push_back({offset, exemplar_.em.samples.key[s], o, exemplar_.em.sample_attribute[s]});
+  });
+  std::sort(out.begin(), out.end(), [](const geometry::Neighbour& a, const geometry::Neighbour& b) {
+    return a.element < b.element;
+  });
+  return out;
+}
+
+std::vector<int> GrowthState::elements_within(const Vec3& p, double distance) const {
+  std::vector<int> out;
+  elements_.for_each_candidate(p, [&](int o) {
+    if (domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance)
+      out.push_back(o);
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace shapeproc::compare

@@ -1,0 +1,85 @@
+// The output of region growing (Davison et al. 2018) while it grows: its elements (position, the
+// exemplar element it was copied from, its current best match, its bounding radius), the
+// free-space points around them (Davison's F, eq. 3) and the grids that answer "what is near
+// here". Elements and free-space points are indexed by grids of the neighbourhood radius, on the
+// domain's torus or in its box.
+//
+// A free-space point belongs to the element whose free-space vector made it; it is free while no
+// element's bounding circle (sphere) overlaps it. When an element moves, its points are made
+// again at its new place (eq. 3 for the elements that moved).
+#pragma once
+
+#include <vector>
+
+#include "libshapeproc/compare/em_exemplar.hpp"
+#include "libshapeproc/compare/free_space.hpp"
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/geometry/neighbour_grid.hpp"
+
+namespace shapeproc::compare {
+
+// What growth learns from the exemplar once.
+struct GrowthExemplar {
+  EmExemplar em;                                   // single-sample elements, neighbourhoods
+  SimilaritySets sets;                             // co(e), k per element
+  std::vector<double> radius;                      // bounding radius per exemplar element
+  std::vector<std::vector<FreeSpaceVector>> free;  // free(e)
+};
+
+class GrowthState {
+ public:
+  GrowthState(const GrowthExemplar& exemplar, const geometry::Domain& domain);
+
+  std::size_t size() const { return position_.size(); }
+  const Vec3& position(int e) const { return position_[static_cast<std::size_t>(e)]; }
+  int source(int e) const { return source_[static_cast<std::size_t>(e)]; }
+  int match(int e) const { return match_[static_cast<std::size_t>(e)]; }
+  void set_match(int e, int m) { match_[static_cast<std::size_t>(e)] = m; }
+
+  // Whether a bounding circle of `radius` at `p` lies where elements may be: anywhere on a torus,
+  // else with its centre in the domain's box and mask.
+  bool in_domain(const Vec3& p) const;
+  // Whether an element's bounding circle overlaps one of `radius` at `p`.
+  bool overlaps(const Vec3& p, double radius) const;
+  // Whether a free-space point overlaps a bounding circle of `radius` at `p` / lies within
+  // `distance` of `p`.
+  bool on_free_point(const Vec3& p, double radius) const;
+  bool free_point_within(const Vec3& p, double distance) const;
+  std::size_t free_points() const { return alive_; }
+  double largest_radius() const { return largest_radius_; }
+
+  // Adds an element copying exemplar element `source` at `p` (wrapped); returns its index.
+  int add(int source, const Vec3& p);
+  // Moves element e to `p` (wrapped) and makes its free-space points again.
+  void move(int e, const Vec3& p);
+
+  // Output elements within the neighbourhood radius of element e (itself excluded), as the
+  // neighbourhood metric takes them.
+  geometry::Neighbourhood neighbourhood(int e) const;
+  // Indices of the elements within `distance` (at most the neighbourhood radius) of `p`.
+  std::vector<int> elements_within(const Vec3& p, double distance) const;
+
+ private:
+  struct FreePoint {
+    Vec3 position;
+    double radius;
+    int owner;
+    bool alive;
+  };
+  void add_free_points(int e);
+  void consume_free_points(int e);
+  void kill(std::size_t point);
+
+  const GrowthExemplar& exemplar_;
+  const geometry::Domain& domain_;
+  double largest_radius_;
+  double reach_;  // the neighbourhood radius, at least twice the largest bounding radius
+  std::vector<Vec3> position_;
+  std::vector<int> source_, match_;
+  std::vector<std::vector<int>> owned_;  // per element: its free-space points
+  std::vector<FreePoint> points_;
+  std::size_t alive_ = 0;
+  geometry::NeighbourGrid elements_, free_;
+};
+
+}  // namespace shapeproc::compare

@@ -1,0 +1,381 @@
+#include "libshapeproc/compare/region_growing.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "libshapeproc/compare/element_reconstruction.hpp"
+#include "libshapeproc/compare/position_assignment.hpp"
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
+#include "libshapeproc/geometry/element_neighbourhood.hpp"
+
+namespace shapeproc::compare {
+
+namespace {
+
+void check_options(const GrowthOptions& o) {
+  if (!(o.rings > 0 && o.rings <= 10))
+    throw core::ArgumentError("--neighbourhood", "expected rings in (0, 10]");
+  if (o.k < 1 || o.k > 100) throw core::ArgumentError("--k", "expected 1 to 100");
+  if (!(o.alpha >= 0)) throw core::ArgumentError("--alpha", "the weight must be >= 0");
+  if (!(o.ratio > 1.0)) throw core::ArgumentError("--ratio", "the ratio must be > 1");
+  if (!(o.bounding_radius >= 0))
+    throw core::ArgumentError("--bounding-radius", "expected a radius >= 0");
+}
+
+// Half of each exemplar element's nearest distance (its shape's bounding circle when it has no
+// neighbour within the neighbourhood radius), so that the exemplar itself has no overlap.
+std::vector<double> bounding_radii(const EmExemplar& em, double fixed) {
+  std::vector<double> out;
+  for (std::size_t s = 0; s < em.samples.size(); ++s) {
+    if (fixed > 0.0) {
+      out.push_back(fixed);
+      continue;
+    }
+    double r = std::numeric_limits<double>::infinity();
+    for (const geometry::Neighbour& n : em.near[s]) r = std::min(r, 0.5 * n.offset.norm());
+    if (!std::isfinite(r)) {
+      const geometry::Element& e =
+          em.scene.elements[static_cast<std::size_t>(em.samples.element[s])];
+      r = 0.5 *
+          geometry::bounding_box(em.scene.shapes[static_cast<std::size_t>(e.shape)]).sizes().norm();
+    }
+    out.push_back(std::max(r, 1e-9 * em.spacing));
+  }
+  return out;
+}
+
+struct Settings {
+  double alpha = 0.0;      // in the exemplar's units
+  double threshold = 0.0;  // pairing threshold of generation: twice the mean bounding radius
+};
+
+// The growing output, its horizon and what one chain needs.
+struct Growth {
+  const GrowthExemplar& exemplar;
+  const geometry::Domain& domain;
+  const GrowthOptions& options;
+  Settings settings;
+  GrowthState state;
+  std::vector<int> horizon;
+  std::vector<char> in_horizon;
+  long long abandoned = 0, rounds = 0;
+};
+
+// The candidates of element e: co(source) ∪ co(match), each once.
+std::vector<int> candidates_of(const Growth& g, int e) {
+  std::vector<int> out = g.exemplar.sets.sets[static_cast<std::size_t>(g.state.source(e))];
+  for (const int m : g.exemplar.sets.sets[static_cast<std::size_t>(g.state.match(e))])
+    if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+  return out;
+}
+
+double distance_to(const Growth& g, int e, const geometry::Neighbourhood& hood, int m,
+                   std::vector<std::pair<int, int>>* pairs = nullptr) {
+  const EmExemplar& em = g.exemplar.em;
+  const double centre = em.sample_attribute[static_cast<std::size_t>(g.state.source(e))] !=
+                                em.sample_attribute[static_cast<std::size_t>(m)]
+                            ? g.settings.alpha
+                            : 0.0;
+  return centre + geometry::neighbourhood_distance(hood, em.wide[static_cast<std::size_t>(m)],
+                                                   em.radius, g.settings.alpha,
+                                                   std::numeric_limits<double>::infinity(), pairs);
+}
+
+void push_horizon(Growth& g, int e) {
+  if (static_cast<std::size_t>(e) >= g.in_horizon.size()) g.in_horizon.resize(e + 1, 0);
+  if (g.in_horizon[static_cast<std::size_t>(e)]) return;
+  g.in_horizon[static_cast<std::size_t>(e)] = 1;
+  g.horizon.push_back(e);
+}
+
+// Step 0: the exemplar's most surrounded element and its neighbours, at the domain's centre.
+void place_initial_patch(Growth& g, core::Random& random) {
+  const EmExemplar& em = g.exemplar.em;
+  std::vector<int> best;
+  std::size_t most = 0;
+  for (std::size_t s = 0; s < em.near.size(); ++s) {
+    if (em.near[s].size() > most) best.clear();
+    if (em.near[s].size() >= most) {
+      most = em.near[s].size();
+      best.push_back(static_cast<int>(s));
+    }
+  }
+  const int c = best[random.index(best.size())];
+  const Vec3 centre = g.domain.box().center();
+  push_horizon(g, g.state.add(c, centre));
+  for (const geometry::Neighbour& n : em.near[static_cast<std::size_t>(c)]) {
+    const Vec3 p = centre + n.offset;
+    const double r = g.exemplar.radius[static_cast<std::size_t>(n.element)];
+    if (g.state.in_domain(p) && !g.state.overlaps(p, r)) push_horizon(g, g.state.add(n.element, p));
+  }
+}
+
+// Step 1: the elements that can still make something.
+void prune_horizon(Growth& g) {
+  std::vector<int> kept;
+  for (const int h : g.horizon) {
+    if (g.state.free_point_within(g.state.position(h), g.exemplar.em.radius))
+      kept.push_back(h);
+    else
+      g.in_horizon[static_cast<std::size_t>(h)] = 0;
+  }
+  g.horizon = std::move(kept);
+}
+
+// Step 2: seeds apart from each other.
+std::vector<int> select_seeds(const Growth& g, core::Random& random) {
+  std::vector<int> order = g.horizon;
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.index(i)]);
+  const double apart = g.options.seed_separation * g.exemplar.em.radius;
+  std::vector<int> seeds;
+  for (const int h : order) {
+    bool free = true;
+    for (const int s : seeds)
+      free =
+          free && g.domain.minimum_image(g.state.position(s) - g.state.position(h)).norm() >= apart;
+    if (free) seeds.push_back(h);
+  }
+  return seeds;
+}
+
+// The copies candidate m would make around seed s: its right-partial pairs on free space.
+std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
+                                            const geometry::Neighbourhood& hood, int m) {
+  const geometry::Neighbourhood& near = g.exemplar.em.near[static_cast<std::size_t>(m)];
+  std::vector<char> paired(near.size(), 0);
+  for (const auto& [a, b] : geometry::match_neighbourhoods(hood, near, g.settings.threshold))
+    paired[static_cast<std::size_t>(b)] = 1;
+  std::vector<std::pair<int, Vec3>> out;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    if (paired[i]) continue;
+    const Vec3 p = g.domain.wrap(g.state.position(s) + near[i].offset);
+    const double r = g.exemplar.radius[static_cast<std::size_t>(near[i].element)];
+    if (!g.state.in_domain(p) || !g.state.on_free_point(p, r) || g.state.overlaps(p, r)) continue;
+    bool clash = false;  // with the copies before it
+    for (const auto& [e, q] : out) {
+      const double reach = r + g.exemplar.radius[static_cast<std::size_t>(e)];
+      clash = clash || g.domain.minimum_image(q - p).squaredNorm() < reach * reach;
+    }
+    if (!clash) out.emplace_back(near[i].element, p);
+  }
+  return out;
+}
+
+// Step 3: one seed's generation. Returns how many elements it added.
+int generate(Growth& g, int s) {
+  const geometry::Neighbourhood hood = g.state.neighbourhood(s);
+  std::vector<std::pair<double, int>> ranked;
+  for (const int m : candidates_of(g, s)) ranked.emplace_back(distance_to(g, s, hood, m), m);
+  std::sort(ranked.begin(), ranked.end());
+  // A candidate is a bad suggestion beyond c times the best distance; that distance is 0 where
+  // the seed's neighbourhood is an exact copy, so a tolerance of (d̄/4)² per neighbour is added.
+  const double spacing = g.exemplar.em.spacing;
+  const double limit = g.options.ratio * ranked.front().first +
+                       static_cast<double>(std::max<std::size_t>(hood.size(), 1)) *
+                           g.options.tolerance * g.options.tolerance * spacing * spacing;
+  for (const auto& [cost, m] : ranked) {
+    if (cost > limit) break;
+    const std::vector<std::pair<int, Vec3>> copies = copies_of(g, s, hood, m);
+    if (copies.empty()) continue;
+    g.state.set_match(s, m);
+    for (const auto& [e, p] : copies) push_horizon(g, g.state.add(e, p));
+    return static_cast<int>(copies.size());
+  }
+  return 0;
+}
+
+// Davison's eq. 4: each prediction of one neighbourhood weighted by a Gaussian of its predicted
+// move, fitted to all the neighbourhood's predicted moves.
+void gaussian_weights(std::vector<Prediction>& predictions, const std::vector<Vec3>& moves,
+                      double scale2) {
+  if (moves.size() < 2) return;
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& d : moves) mean += d;
+  mean /= static_cast<double>(moves.size());
+  Eigen::Matrix3d c = 1e-4 * scale2 * Eigen::Matrix3d::Identity();
+  for (const Vec3& d : moves) c += (d - mean) * (d - mean).transpose() / double(moves.size());
+  const Eigen::Matrix3d inverse = c.inverse();
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const Vec3 d = moves[i] - mean;
+    predictions[predictions.size() - moves.size() + i].weight *=
+        std::exp(-0.5 * d.dot(inverse * d));
+  }
+}
+
+// Step 4: least squares over the horizon and the elements near it.
+double optimise(Growth& g) {
+  const double r = g.exemplar.em.radius;
+  std::vector<int> local(g.state.size(), -1);
+  std::vector<int> unknowns;
+  std::vector<double> anchors;
+  const auto enter = [&](int e, double anchor) {
+    int& slot = local[static_cast<std::size_t>(e)];
+    if (slot < 0) {
+      slot = static_cast<int>(unknowns.size());
+      unknowns.push_back(e);
+      anchors.push_back(anchor);
+    } else {
+      anchors[static_cast<std::size_t>(slot)] =
+          std::min(anchors[static_cast<std::size_t>(slot)], anchor);
+    }
+  };
+  for (const int h : g.horizon) enter(h, 0.0);
+  for (const int h : g.horizon)
+    for (const int o : g.state.elements_within(g.state.position(h), r))
+      enter(o, g.options.anchor_weight);
+  const std::size_t movable = unknowns.size();
+  std::vector<Prediction> predictions;
+  double energy = 0.0;
+  std::vector<std::pair<int, int>> pairs, best_pairs;
+  for (std::size_t u = 0; u < movable; ++u) {
+    const int e = unknowns[u];
+    const geometry::Neighbourhood hood = g.state.neighbourhood(e);
+    double best = std::numeric_limits<double>::infinity();
+    int chosen = g.state.match(e);
+    for (const int m : candidates_of(g, e)) {
+      const double cost = distance_to(g, e, hood, m, &pairs);
+      if (cost < best) {
+        best = cost;
+        chosen = m;
+        std::swap(pairs, best_pairs);
+      }
+    }
+    energy += best;
+    g.state.set_match(e, chosen);
+    const geometry::PairingNeighbourhood& partner =
+        g.exemplar.em.wide[static_cast<std::size_t>(chosen)];
+    std::vector<Vec3> moves;
+    for (const auto& [a, b] : best_pairs) {
+      const geometry::Neighbour& o = hood[static_cast<std::size_t>(a)];
+      const Vec3& offset = partner[static_cast<std::size_t>(b)].offset;
+      enter(o.element, 1e6);  // a neighbour beyond: it holds its place
+      const bool frozen = !g.in_horizon[static_cast<std::size_t>(o.element)];
+      predictions.push_back({static_cast<int>(u), local[static_cast<std::size_t>(o.element)],
+                             offset, frozen ? g.options.frozen_weight : 1.0});
+      moves.push_back(offset - o.offset);
+    }
+    gaussian_weights(predictions, moves, g.exemplar.em.spacing * g.exemplar.em.spacing);
+  }
+  std::vector<Vec3> positions;
+  for (const int e : unknowns) positions.push_back(g.state.position(e));
+  const std::vector<Vec3> d = solve_positions(positions, predictions, g.domain, anchors);
+  const double still = 1e-9 * g.exemplar.em.spacing;
+  for (std::size_t u = 0; u < movable; ++u) {
+    if (d[u].norm() <= still) continue;
+    // A move onto another element's bounding circle is not taken.
+    const int e = unknowns[u];
+    const double r = g.exemplar.radius[static_cast<std::size_t>(g.state.source(e))];
+    bool clear = true;
+    for (const int o : g.state.elements_within(positions[u] + d[u], 2.0 * g.state.largest_radius()))
+      if (o != e) {
+        const double reach = r + g.exemplar.radius[static_cast<std::size_t>(g.state.source(o))];
+        clear = clear &&
+                g.domain.minimum_image(g.state.position(o) - positions[u] - d[u]).squaredNorm() >=
+                    reach * reach;
+      }
+    if (clear) g.state.move(e, positions[u] + d[u]);
+  }
+  return energy;
+}
+
+}  // namespace
+
+GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
+                                       const GrowthOptions& options) {
+  check_options(options);
+  GrowthExemplar g;
+  SampleOptions samples;
+  samples.per_element = 1;
+  g.em = analyse_exemplar(exemplar, boundary, options.rings, samples);
+  const double unit = g.em.spacing * g.em.spacing;
+  g.sets = build_similarity_sets(g.em, options.k, options.alpha * unit);
+  g.radius = bounding_radii(g.em, options.bounding_radius);
+  g.free = free_space_vectors(g.em, g.sets, g.radius, options.cluster_eps * g.em.spacing,
+                              std::min(options.cluster_min_points, options.k));
+  return g;
+}
+
+RegionGrowing::RegionGrowing(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
+                             geometry::Domain domain, GrowthOptions options)
+    : exemplar_(analyse_growth_exemplar(exemplar, exemplar_boundary, options)),
+      domain_(std::move(domain)),
+      options_(options) {
+  if (exemplar.dimension != domain_.dimension())
+    throw core::ArgumentError(
+        "region growing", "the exemplar is " + std::to_string(exemplar.dimension) +
+                              "D but the domain is " + std::to_string(domain_.dimension()) + "D");
+}
+
+std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options() const {
+  const auto number = [](double v) { return core::format_number(v); };
+  return {{"growth.neighbourhood_rings", number(options_.rings)},
+          {"growth.radius", number(exemplar_.em.radius)},
+          {"growth.k", std::to_string(options_.k)},
+          {"growth.alpha", number(options_.alpha)},
+          {"growth.ratio", number(options_.ratio)},
+          {"growth.bounding_radius",
+           options_.bounding_radius > 0 ? number(options_.bounding_radius) : "auto"},
+          {"growth.optimise", options_.optimise ? "yes" : "no"}};
+}
+
+synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
+                                                     const synthesis::ChainControl& control) const {
+  Growth g{exemplar_, domain_, options_, {}, GrowthState(exemplar_, domain_), {}, {}, 0, 0};
+  double mean_radius = 0.0;
+  for (const double r : exemplar_.radius) mean_radius += r;
+  mean_radius /= static_cast<double>(exemplar_.radius.size());
+  g.settings.alpha = options_.alpha * exemplar_.em.spacing * exemplar_.em.spacing;
+  g.settings.threshold = 2.0 * mean_radius;
+  const double expected = exemplar_.em.density * domain_.measure();
+
+  synthesis::SynthesisResult result;
+  place_initial_patch(g, random);
+  for (;;) {
+    if (control.cancelled()) throw core::Cancelled();
+    prune_horizon(g);
+    if (g.horizon.empty()) break;
+    int made = 0;
+    const std::vector<int> seeds = select_seeds(g, random);
+    for (const int s : seeds) {
+      const int n = generate(g, s);
+      made += n;
+      g.abandoned += n == 0;
+    }
+    if (made == 0) {  // no seed could grow: they leave the horizon, others get their turn
+      for (const int s : seeds) g.in_horizon[static_cast<std::size_t>(s)] = 0;
+      g.horizon.erase(
+          std::remove_if(g.horizon.begin(), g.horizon.end(),
+                         [&](int h) { return !g.in_horizon[static_cast<std::size_t>(h)]; }),
+          g.horizon.end());
+    }
+    ++g.rounds;
+    const double energy = options_.optimise && made > 0 ? optimise(g) : 0.0;
+    result.trace.push_back({g.rounds, static_cast<int>(g.state.size()), energy});
+    if (control.progress)
+      control.progress(static_cast<long long>(g.state.size()), static_cast<long long>(expected));
+  }
+
+  OutputSamples output;
+  for (std::size_t e = 0; e < g.state.size(); ++e)
+    output.add(exemplar_.em, g.state.source(static_cast<int>(e)),
+               g.state.position(static_cast<int>(e)));
+  result.scene =
+      reconstruct(exemplar_.em, output, domain_, OrientationField{}, Reconstruction::rigid);
+  result.record.boundary = domain_.boundary();
+  const Vec3 sizes = domain_.sizes();
+  result.record.size = {sizes.x(), sizes.y()};
+  if (domain_.dimension() == 3) result.record.size.push_back(sizes.z());
+  result.record.options = record_options();
+  result.record.iterations = std::to_string(g.rounds);
+  result.record.steps = g.rounds;
+  result.record.stationary = true;
+  result.counters = {{"rounds", std::to_string(g.rounds)},
+                     {"seeds abandoned", std::to_string(g.abandoned)},
+                     {"free-space points left", std::to_string(g.state.free_points())}};
+  return result;
+}
+
+}  // namespace shapeproc::compare
