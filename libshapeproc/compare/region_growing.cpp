@@ -265,10 +265,10 @@ double optimise(Growth& g) {
   const double still = 1e-9 * g.exemplar.em.spacing;
   for (std::size_t u = 0; u < movable; ++u) {
     if (d[u].norm() <= still) continue;
-    // A move onto another element's bounding circle is not taken.
+    // A move out of the domain or onto another element's bounding circle is not taken.
     const int e = unknowns[u];
     const double r = g.exemplar.radius[static_cast<std::size_t>(g.state.source(e))];
-    bool clear = true;
+    bool clear = g.state.in_domain(positions[u] + d[u]);
     for (const int o : g.state.elements_within(positions[u] + d[u], 2.0 * g.state.largest_radius()))
       if (o != e) {
         const double reach = r + g.exemplar.radius[static_cast<std::size_t>(g.state.source(o))];

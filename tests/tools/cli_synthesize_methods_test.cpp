@@ -1,5 +1,5 @@
-// synthesize --method ma-em: the neighbourhood EM through the same domain, chains, outputs,
-// records and errors as the shape process.
+// synthesize --method ma-em|davison: the neighbourhood EM and region growing through the same
+// domain, chains, outputs, records and errors as the shape process.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -84,6 +84,49 @@ TEST(CliSynthesizeMaEm, DomainShapesAndOrientationFields) {
   const std::string svg = testing::read_file(out);
   EXPECT_NE(svg.find("30 degrees"), std::string::npos);
   EXPECT_NE(svg.find("&quot;boundary&quot;:&quot;open&quot;"), std::string::npos);
+}
+
+TEST(CliSynthesizeDavison, GrowsATileWithItsRecordAndTrace) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("grown.svg").string();
+  const std::string trace = dir.file("grown.csv").string();
+  const std::string tile = data("third-party/hero-patterns/bubbles.svg");
+  const Result r = run_cli({"synthesize", tile, "--tile", "--method", "davison", "-o", out,
+                            "--size", "300,300", "--seed", "2", "--trace", trace, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string svg = testing::read_file(out);
+  for (const char* part : {"&quot;method&quot;:&quot;region-growing&quot;", "growth.ratio",
+                           "growth.neighbourhood_rings"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  EXPECT_EQ(testing::read_file(trace).find("# shapeproc synthesize region-growing seed 2 chain 1\n"
+                                           "round,elements,energy\n"),
+            0u);
+  // 17 elements per 100 x 100 tile: 9 tiles' worth.
+  const Result stats = run_cli({"stats", out, "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_NEAR(nlohmann::json::parse(stats.out).at("elements").get<double>(), 153.0, 15.0);
+}
+
+TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("x.svg").string();
+  const std::string exemplar = data("svg/dots-random.svg");
+  const auto grow = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"synthesize", exemplar, "--method", "davison",
+                                     "-o",         out,      "--size",   "100,100"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args);
+  };
+  expect_one_line_error(grow({"--physics"}), 2, "--physics is for --method ma-em");
+  expect_one_line_error(grow({"--estimator", "mpl"}), 2,
+                        "--estimator is for --method shape-process");
+  expect_one_line_error(grow({"--ratio", "1"}), 2, "--ratio");
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--ratio", "3"}), 2,
+      "--ratio is for --method davison");
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3"}), 2,
+      "--k is for --method ma-em or davison");
 }
 
 }  // namespace

@@ -35,8 +35,9 @@ void write_trace(const std::string& file, const synthesis::SynthesisResult& resu
   core::write_file_atomically(file, [&](std::ostream& f) {
     f << "# shapeproc " << result.record.command << ' ' << result.record.method << " seed "
       << result.record.seed << " chain " << result.record.chain
-      << (result.record.method == "shape-process" ? "\nstep,elements,log_density\n"
-                                                  : "\niteration,elements,energy\n");
+      << (result.record.method == "shape-process"    ? "\nstep,elements,log_density\n"
+          : result.record.method == "region-growing" ? "\nround,elements,energy\n"
+                                                     : "\niteration,elements,energy\n");
     for (const auto& t : result.trace)
       f << t.step << ',' << t.elements << ',' << core::format_number(t.log_density) << '\n';
   });
