@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The shape process beside the neighbourhood EM of Ma et al. 2011 on a set of exemplars
-# (docs/compare.md): for each exemplar, `synthesize` with each method (2W x 2H, torus, seed 1;
-# the EM also with its interleaved physics solver), then `stats OUTPUT --against EXEMPLAR` with
+# The shape process beside the neighbourhood EM of Ma et al. 2011 and the region growing of
+# Davison et al. 2018 on a set of exemplars (docs/compare.md): for each exemplar, `synthesize`
+# with each method (2W x 2H, torus, seed 1; the EM also with its interleaved physics solver), then `stats OUTPUT --against EXEMPLAR` with
 # the same metrics for all. Pictures go to out/compare/NAME-VARIANT.png. Options after the files go to every synthesize and stats call
 # (e.g. --tile for seamless tiles). Prints a markdown table.
 #   bash scripts/compare-methods.sh data/svg/*.svg
@@ -26,7 +26,7 @@ for file in "$@"; do
   n=$(python3 -c 'import json, sys; print(json.loads(sys.argv[1])["elements"])' "$exemplar_json")
   size=$("$shapeproc" info "$file" "${options[@]}" | sed -n 's/^window: *\[\([-0-9.e]*\), \([-0-9.e]*\)\] x \[\([-0-9.e]*\), \([-0-9.e]*\)\].*/\1 \2 \3 \4/p' |
     awk '{printf "%g,%g", 2*($2-$1), 2*($4-$3)}')
-  for variant in shape-process ma-em ma-em-physics; do
+  for variant in shape-process ma-em ma-em-physics davison; do
     method=${variant%-physics}
     extra=()
     [ "$variant" = ma-em-physics ] && extra=(--physics)

@@ -47,6 +47,8 @@ std::vector<double> bounding_radii(const EmExemplar& em, double fixed) {
   return out;
 }
 
+constexpr int kAttempts = 2;
+
 struct Settings {
   double alpha = 0.0;      // in the exemplar's units
   double threshold = 0.0;  // pairing threshold of generation: twice the mean bounding radius
@@ -61,6 +63,7 @@ struct Growth {
   GrowthState state;
   std::vector<int> horizon;
   std::vector<char> in_horizon;
+  std::vector<int> attempts;  // per element: rounds it was abandoned as a seed
   long long abandoned = 0, rounds = 0;
 };
 
@@ -72,20 +75,25 @@ std::vector<int> candidates_of(const Growth& g, int e) {
   return out;
 }
 
+// Eq. 1 between element e's neighbourhood and exemplar element m's; a neighbourhood shown to be
+// at least `bound` away returns a lower bound (see neighbourhood_distance).
 double distance_to(const Growth& g, int e, const geometry::Neighbourhood& hood, int m,
-                   std::vector<std::pair<int, int>>* pairs = nullptr) {
+                   std::vector<std::pair<int, int>>* pairs = nullptr,
+                   double bound = std::numeric_limits<double>::infinity()) {
   const EmExemplar& em = g.exemplar.em;
   const double centre = em.sample_attribute[static_cast<std::size_t>(g.state.source(e))] !=
                                 em.sample_attribute[static_cast<std::size_t>(m)]
                             ? g.settings.alpha
                             : 0.0;
   return centre + geometry::neighbourhood_distance(hood, em.wide[static_cast<std::size_t>(m)],
-                                                   em.radius, g.settings.alpha,
-                                                   std::numeric_limits<double>::infinity(), pairs);
+                                                   em.radius, g.settings.alpha, bound, pairs);
 }
 
 void push_horizon(Growth& g, int e) {
-  if (static_cast<std::size_t>(e) >= g.in_horizon.size()) g.in_horizon.resize(e + 1, 0);
+  if (static_cast<std::size_t>(e) >= g.in_horizon.size()) {
+    g.in_horizon.resize(static_cast<std::size_t>(e) + 1, 0);
+    g.attempts.resize(static_cast<std::size_t>(e) + 1, 0);
+  }
   if (g.in_horizon[static_cast<std::size_t>(e)]) return;
   g.in_horizon[static_cast<std::size_t>(e)] = 1;
   g.horizon.push_back(e);
@@ -167,15 +175,20 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
 // Step 3: one seed's generation. Returns how many elements it added.
 int generate(Growth& g, int s) {
   const geometry::Neighbourhood hood = g.state.neighbourhood(s);
-  std::vector<std::pair<double, int>> ranked;
-  for (const int m : candidates_of(g, s)) ranked.emplace_back(distance_to(g, s, hood, m), m);
-  std::sort(ranked.begin(), ranked.end());
   // A candidate is a bad suggestion beyond c times the best distance; that distance is 0 where
-  // the seed's neighbourhood is an exact copy, so a tolerance of (d̄/4)² per neighbour is added.
+  // the seed's neighbourhood is an exact copy, so (tolerance d̄)² per neighbour is added. The
+  // limit only falls as candidates come, so each is measured only as far as it.
   const double spacing = g.exemplar.em.spacing;
-  const double limit = g.options.ratio * ranked.front().first +
-                       static_cast<double>(std::max<std::size_t>(hood.size(), 1)) *
-                           g.options.tolerance * g.options.tolerance * spacing * spacing;
+  const double slack = static_cast<double>(std::max<std::size_t>(hood.size(), 1)) *
+                       g.options.tolerance * g.options.tolerance * spacing * spacing;
+  double limit = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, int>> ranked;
+  for (const int m : candidates_of(g, s)) {
+    const double cost = distance_to(g, s, hood, m, nullptr, limit);
+    ranked.emplace_back(cost, m);
+    limit = std::min(limit, g.options.ratio * cost + slack);
+  }
+  std::sort(ranked.begin(), ranked.end());
   for (const auto& [cost, m] : ranked) {
     if (cost > limit) break;
     const std::vector<std::pair<int, Vec3>> copies = copies_of(g, s, hood, m);
@@ -235,8 +248,13 @@ double optimise(Growth& g) {
     const geometry::Neighbourhood hood = g.state.neighbourhood(e);
     double best = std::numeric_limits<double>::infinity();
     int chosen = g.state.match(e);
-    for (const int m : candidates_of(g, e)) {
-      const double cost = distance_to(g, e, hood, m, &pairs);
+    // Horizon elements search their candidates; older ones keep their match.
+    const std::vector<int> candidates = g.in_horizon[static_cast<std::size_t>(e)]
+                                            ? candidates_of(g, e)
+                                            : std::vector<int>{g.state.match(e)};
+    for (const int m : candidates) {
+      const double cost = distance_to(
+          g, e, hood, m, &pairs, std::nextafter(best, std::numeric_limits<double>::infinity()));
       if (cost < best) {
         best = cost;
         chosen = m;
@@ -262,7 +280,7 @@ double optimise(Growth& g) {
   std::vector<Vec3> positions;
   for (const int e : unknowns) positions.push_back(g.state.position(e));
   const std::vector<Vec3> d = solve_positions(positions, predictions, g.domain, anchors);
-  const double still = 1e-9 * g.exemplar.em.spacing;
+  const double still = 1e-3 * g.exemplar.em.spacing;  // smaller moves are not worth making
   for (std::size_t u = 0; u < movable; ++u) {
     if (d[u].norm() <= still) continue;
     // A move out of the domain or onto another element's bounding circle is not taken.
@@ -323,7 +341,7 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
 
 synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                                                      const synthesis::ChainControl& control) const {
-  Growth g{exemplar_, domain_, options_, {}, GrowthState(exemplar_, domain_), {}, {}, 0, 0};
+  Growth g{exemplar_, domain_, options_, {}, GrowthState(exemplar_, domain_), {}, {}, {}, 0, 0};
   double mean_radius = 0.0;
   for (const double r : exemplar_.radius) mean_radius += r;
   mean_radius /= static_cast<double>(exemplar_.radius.size());
@@ -342,15 +360,19 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
     for (const int s : seeds) {
       const int n = generate(g, s);
       made += n;
-      g.abandoned += n == 0;
+      if (n > 0) continue;
+      // An abandoned seed leaves the horizon after kAttempts tries (its free space stays for
+      // the others); when a whole round makes nothing, all its seeds leave.
+      ++g.abandoned;
+      if (++g.attempts[static_cast<std::size_t>(s)] >= kAttempts)
+        g.in_horizon[static_cast<std::size_t>(s)] = 0;
     }
-    if (made == 0) {  // no seed could grow: they leave the horizon, others get their turn
+    if (made == 0)
       for (const int s : seeds) g.in_horizon[static_cast<std::size_t>(s)] = 0;
-      g.horizon.erase(
-          std::remove_if(g.horizon.begin(), g.horizon.end(),
-                         [&](int h) { return !g.in_horizon[static_cast<std::size_t>(h)]; }),
-          g.horizon.end());
-    }
+    g.horizon.erase(
+        std::remove_if(g.horizon.begin(), g.horizon.end(),
+                       [&](int h) { return !g.in_horizon[static_cast<std::size_t>(h)]; }),
+        g.horizon.end());
     ++g.rounds;
     const double energy = options_.optimise && made > 0 ? optimise(g) : 0.0;
     result.trace.push_back({g.rounds, static_cast<int>(g.state.size()), energy});
