@@ -121,6 +121,7 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
   expect_one_line_error(grow({"--estimator", "mpl"}), 2,
                         "--estimator is for --method shape-process");
   expect_one_line_error(grow({"--ratio", "1"}), 2, "--ratio");
+  expect_one_line_error(grow({"--iterations", "5"}), 2, "--iterations");
   expect_one_line_error(
       run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--ratio", "3"}), 2,
       "--ratio is for --method davison");

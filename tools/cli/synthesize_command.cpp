@@ -248,6 +248,10 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
       if (growth) {
+        if (args->sample.iterations > 0)
+          throw core::UsageError(
+              "--iterations: --method davison grows until the domain is full; it takes no "
+              "iteration count");
         const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
         args->sample.check(args->output, exemplar.dimension);
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
