@@ -26,10 +26,12 @@ for file in "$@"; do
   n=$(python3 -c 'import json, sys; print(json.loads(sys.argv[1])["elements"])' "$exemplar_json")
   size=$("$shapeproc" info "$file" "${options[@]}" | sed -n 's/^window: *\[\([-0-9.e]*\), \([-0-9.e]*\)\] x \[\([-0-9.e]*\), \([-0-9.e]*\)\].*/\1 \2 \3 \4/p' |
     awk '{printf "%g,%g", 2*($2-$1), 2*($4-$3)}')
-  for variant in shape-process ma-em ma-em-physics davison; do
+  for variant in ${VARIANTS:-shape-process ma-em ma-em-physics davison davison-shapes}; do
     method=${variant%-physics}
+    method=${method%-shapes}
     extra=()
     [ "$variant" = ma-em-physics ] && extra=(--physics)
+    [ "$variant" = davison-shapes ] && extra=(--overlap shapes)
     output="out/compare/$name-$variant.svg"
     start=$(date +%s.%N)
     if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" "${extra[@]}" \

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "libshapeproc/compare/neighbourhood_search.hpp"
+#include "libshapeproc/geometry/overlap_depth.hpp"
 
 namespace shapeproc::compare {
 
@@ -20,7 +21,8 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
     : exemplar_(exemplar),
       domain_(domain),
       largest_radius_(largest(exemplar.radius)),
-      reach_(std::max(exemplar.em.radius, 2.0 * largest_radius_)),
+      reach_(std::max(
+          {exemplar.em.radius, 2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius)})),
       elements_(domain.box(), domain.dimension(), reach_, domain.periodic()),
       free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
 
@@ -32,6 +34,41 @@ bool GrowthState::overlaps(const Vec3& p, double radius) const {
     if (hit) return;
     const double reach = radius + exemplar_.radius[static_cast<std::size_t>(source(o))];
     hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
+  });
+  return hit;
+}
+
+bool GrowthState::collides(int source, const Vec3& p, int skip) const {
+  const auto s = static_cast<std::size_t>(source);
+  if (!exemplar_.exact) {
+    const double r = exemplar_.radius[s];
+    bool hit = false;
+    elements_.for_each_candidate(p, [&](int o) {
+      if (hit || o == skip) return;
+      const double reach = r + exemplar_.radius[static_cast<std::size_t>(this->source(o))];
+      hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
+    });
+    return hit;
+  }
+  const auto& elements = exemplar_.em.scene.elements;
+  const auto shape_of = [&](int sample) {
+    const int element = exemplar_.em.samples.element[static_cast<std::size_t>(sample)];
+    return static_cast<std::size_t>(elements[static_cast<std::size_t>(element)].shape);
+  };
+  const std::size_t shape = shape_of(source);
+  bool hit = false;
+  elements_.for_each_candidate(p, [&](int o) {
+    if (hit || o == skip) return;
+    const auto other =
+        static_cast<std::size_t>(elements[static_cast<std::size_t>(this->source(o))].shape);
+    const Vec3 offset = domain_.minimum_image(position(o) - p);
+    const double reach = exemplar_.shape_radius[shape] + exemplar_.shape_radius[other];
+    if (offset.squaredNorm() >= reach * reach) return;
+    hit =
+        domain_.dimension() == 3
+            ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset) > 0
+            : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
+                                      geometry::Vec2(offset.x(), offset.y())) > 0;
   });
   return hit;
 }

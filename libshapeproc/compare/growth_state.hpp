@@ -15,6 +15,7 @@
 #include "libshapeproc/compare/free_space.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/proxy.hpp"
 
 namespace shapeproc::compare {
 
@@ -24,6 +25,11 @@ struct GrowthExemplar {
   SimilaritySets sets;                             // co(e), k per element
   std::vector<double> radius;                      // bounding radius per exemplar element
   std::vector<std::vector<FreeSpaceVector>> free;  // free(e)
+  // With exact overlaps: per exemplar shape, its proxy (2D or 3D) and bounding-circle radius.
+  bool exact = false;
+  std::vector<geometry::Proxy2> proxy2;
+  std::vector<geometry::Proxy3> proxy3;
+  std::vector<double> shape_radius;
 };
 
 class GrowthState {
@@ -41,6 +47,10 @@ class GrowthState {
   bool in_domain(const Vec3& p) const;
   // Whether an element's bounding circle overlaps one of `radius` at `p`.
   bool overlaps(const Vec3& p, double radius) const;
+  // Whether a copy of exemplar element `source` at `p` would overlap an element other than
+  // `skip`: bounding circles, or with exact overlaps the shapes' signed distance below 0
+  // (touching is allowed), as `stats` counts overlapping pairs.
+  bool collides(int source, const Vec3& p, int skip = -1) const;
   // Whether a free-space point overlaps a bounding circle of `radius` at `p` / lies within
   // `distance` of `p`.
   bool on_free_point(const Vec3& p, double radius) const;

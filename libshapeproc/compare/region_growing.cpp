@@ -117,7 +117,8 @@ void place_initial_patch(Growth& g, core::Random& random) {
   for (const geometry::Neighbour& n : em.near[static_cast<std::size_t>(c)]) {
     const Vec3 p = centre + n.offset;
     const double r = g.exemplar.radius[static_cast<std::size_t>(n.element)];
-    if (g.state.in_domain(p) && !g.state.overlaps(p, r)) push_horizon(g, g.state.add(n.element, p));
+    if (g.state.in_domain(p) && !g.state.collides(n.element, p))
+      push_horizon(g, g.state.add(n.element, p));
   }
 }
 
@@ -161,9 +162,12 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
     if (paired[i]) continue;
     const Vec3 p = g.domain.wrap(g.state.position(s) + near[i].offset);
     const double r = g.exemplar.radius[static_cast<std::size_t>(near[i].element)];
-    if (!g.state.in_domain(p) || !g.state.on_free_point(p, r) || g.state.overlaps(p, r)) continue;
-    bool clash = false;  // with the copies before it
+    if (!g.state.in_domain(p) || !g.state.on_free_point(p, r) ||
+        g.state.collides(near[i].element, p))
+      continue;
+    bool clash = false;  // with the copies before it (bounding circles)
     for (const auto& [e, q] : out) {
+      if (g.exemplar.exact) break;  // one exemplar neighbourhood's shapes do not overlap
       const double reach = r + g.exemplar.radius[static_cast<std::size_t>(e)];
       clash = clash || g.domain.minimum_image(q - p).squaredNorm() < reach * reach;
     }
@@ -283,18 +287,10 @@ double optimise(Growth& g) {
   const double still = 1e-3 * g.exemplar.em.spacing;  // smaller moves are not worth making
   for (std::size_t u = 0; u < movable; ++u) {
     if (d[u].norm() <= still) continue;
-    // A move out of the domain or onto another element's bounding circle is not taken.
+    // A move out of the domain or onto another element is not taken.
     const int e = unknowns[u];
-    const double r = g.exemplar.radius[static_cast<std::size_t>(g.state.source(e))];
-    bool clear = g.state.in_domain(positions[u] + d[u]);
-    for (const int o : g.state.elements_within(positions[u] + d[u], 2.0 * g.state.largest_radius()))
-      if (o != e) {
-        const double reach = r + g.exemplar.radius[static_cast<std::size_t>(g.state.source(o))];
-        clear = clear &&
-                g.domain.minimum_image(g.state.position(o) - positions[u] - d[u]).squaredNorm() >=
-                    reach * reach;
-      }
-    if (clear) g.state.move(e, positions[u] + d[u]);
+    const Vec3 to = positions[u] + d[u];
+    if (g.state.in_domain(to) && !g.state.collides(g.state.source(e), to, e)) g.state.move(e, to);
   }
   return energy;
 }
@@ -313,6 +309,18 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
   g.radius = bounding_radii(g.em, options.bounding_radius);
   g.free = free_space_vectors(g.em, g.sets, g.radius, options.cluster_eps * g.em.spacing,
                               std::min(options.cluster_min_points, options.k));
+  g.exact = options.exact_overlap;
+  geometry::ProxyOptions proxy;
+  proxy.tolerance = 0.002;  // as close to the drawn outlines as `stats` judges collisions
+  for (const geometry::Shape& shape : g.em.scene.shapes) {
+    g.shape_radius.push_back(0.5 * geometry::bounding_box(shape).sizes().norm());
+    if (!g.exact) continue;
+    if (g.em.scene.dimension == 3)
+      g.proxy3.push_back(geometry::make_proxy3(shape, proxy));
+    else
+      g.proxy2.push_back(geometry::make_proxy2(shape, proxy));
+  }
+  if (!g.exact) g.shape_radius.assign(g.shape_radius.size(), 0.0);
   return g;
 }
 
@@ -336,7 +344,8 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
           {"growth.ratio", number(options_.ratio)},
           {"growth.bounding_radius",
            options_.bounding_radius > 0 ? number(options_.bounding_radius) : "auto"},
-          {"growth.optimise", options_.optimise ? "yes" : "no"}};
+          {"growth.optimise", options_.optimise ? "yes" : "no"},
+          {"growth.overlap", options_.exact_overlap ? "shapes" : "circles"}};
 }
 
 synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,

@@ -52,6 +52,9 @@ struct GrowthOptions {
   int cluster_min_points = 2;    // DBSCAN core size
   double bounding_radius = 0.0;  // > 0: every element's bounding radius (units of the exemplar)
   bool optimise = true;
+  // Overlap test: bounding circles (spheres), as the paper; or, an option no published growth
+  // method has, the shapes themselves (the signed shape distance below 0; touching allowed).
+  bool exact_overlap = false;
   double frozen_weight = 0.1, anchor_weight = 100.0;
 };
 

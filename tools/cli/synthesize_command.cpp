@@ -134,8 +134,15 @@ struct GrowthFlags {
   double ratio = compare::GrowthOptions{}.ratio;
   double bounding_radius = 0.0;
   bool no_optimise = false;
+  std::string overlap = "circles";
 
   void add_to(CLI::App& command) {
+    command
+        .add_option("--overlap", overlap,
+                    "davison: overlap test of new elements: bounding circles (spheres), as the "
+                    "paper, or the shapes themselves")
+        ->check(CLI::IsMember({"circles", "shapes"}))
+        ->capture_default_str();
     command
         .add_option("--ratio", ratio,
                     "davison: a candidate that can grow is taken only within this ratio of the "
@@ -159,6 +166,7 @@ struct GrowthFlags {
     o.ratio = ratio;
     o.bounding_radius = bounding_radius;
     o.optimise = !no_optimise;
+    o.exact_overlap = overlap == "shapes";
     return o;
   }
 };
