@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The shape process beside the neighbourhood EM of Ma et al. 2011 and the region growing of
 # Davison et al. 2018 on a set of exemplars (docs/compare.md): for each exemplar, `synthesize`
-# with each method (2W x 2H, torus, seed 1; the EM also with its interleaved physics solver), then `stats OUTPUT --against EXEMPLAR` with
-# the same metrics for all. Pictures go to out/compare/NAME-VARIANT.png. Options after the files go to every synthesize and stats call
+# with each method (2W x 2H, torus, seed 1; the EM also with its interleaved physics solver,
+# growth also with `--overlap shapes`; VARIANTS="davison ..." picks some), then
+# `stats OUTPUT --against EXEMPLAR` with the same metrics for all. Pictures go to
+# out/compare/NAME-VARIANT.png. Options after the files go to every synthesize and stats call
 # (e.g. --tile for seamless tiles). Prints a markdown table.
 #   bash scripts/compare-methods.sh data/svg/*.svg
 #   bash scripts/compare-methods.sh --tile -- tiles/a.svg tiles/b.svg
