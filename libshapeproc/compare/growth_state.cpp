@@ -28,10 +28,10 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
 
 bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
 
-bool GrowthState::overlaps(const Vec3& p, double radius) const {
+bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
   bool hit = false;
   elements_.for_each_candidate(p, [&](int o) {
-    if (hit) return;
+    if (hit || o == skip) return;
     const double reach = radius + exemplar_.radius[static_cast<std::size_t>(source(o))];
     hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
   });
@@ -39,17 +39,8 @@ bool GrowthState::overlaps(const Vec3& p, double radius) const {
 }
 
 bool GrowthState::collides(int source, const Vec3& p, int skip) const {
-  const auto s = static_cast<std::size_t>(source);
-  if (!exemplar_.exact) {
-    const double r = exemplar_.radius[s];
-    bool hit = false;
-    elements_.for_each_candidate(p, [&](int o) {
-      if (hit || o == skip) return;
-      const double reach = r + exemplar_.radius[static_cast<std::size_t>(this->source(o))];
-      hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
-    });
-    return hit;
-  }
+  if (!exemplar_.exact)
+    return overlaps(p, exemplar_.radius[static_cast<std::size_t>(source)], skip);
   const auto& elements = exemplar_.em.scene.elements;
   const auto shape_of = [&](int sample) {
     const int element = exemplar_.em.samples.element[static_cast<std::size_t>(sample)];

@@ -45,8 +45,8 @@ class GrowthState {
   // Whether a bounding circle of `radius` at `p` lies where elements may be: anywhere on a torus,
   // else with its centre in the domain's box and mask.
   bool in_domain(const Vec3& p) const;
-  // Whether an element's bounding circle overlaps one of `radius` at `p`.
-  bool overlaps(const Vec3& p, double radius) const;
+  // Whether the bounding circle of an element other than `skip` overlaps one of `radius` at `p`.
+  bool overlaps(const Vec3& p, double radius, int skip = -1) const;
   // Whether a copy of exemplar element `source` at `p` would overlap an element other than
   // `skip`: bounding circles, or with exact overlaps the shapes' signed distance below 0
   // (touching is allowed), as `stats` counts overlapping pairs.

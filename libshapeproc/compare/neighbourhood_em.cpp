@@ -157,10 +157,7 @@ synthesis::SynthesisResult NeighbourhoodEm::synthesize(
       std::remove_if(placed.begin(), placed.end(),
                      [&](const geometry::Element& e) { return inside(domain_, e.position) < 0.5; }),
       placed.end());
-  result.record.boundary = domain_.boundary();
-  const Vec3 sizes = domain_.sizes();
-  result.record.size = {sizes.x(), sizes.y()};
-  if (domain_.dimension() == 3) result.record.size.push_back(sizes.z());
+  result.record.set_domain(domain_);
   result.record.options = record_options();
   result.record.iterations = std::to_string(options_.iterations);
   result.record.steps = done;

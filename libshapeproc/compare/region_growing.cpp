@@ -64,14 +64,14 @@ struct Growth {
   std::vector<int> horizon;
   std::vector<char> in_horizon;
   std::vector<int> attempts;  // per element: rounds it was abandoned as a seed
+  std::vector<char> seen;     // gather_candidates' scratch, one per exemplar element
   long long abandoned = 0, rounds = 0;
 };
 
-// The candidates of element e: co(source) ∪ co(match), each once.
-std::vector<int> candidates_of(const Growth& g, int e) {
-  std::vector<int> out = g.exemplar.sets.sets[static_cast<std::size_t>(g.state.source(e))];
-  for (const int m : g.exemplar.sets.sets[static_cast<std::size_t>(g.state.match(e))])
-    if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+// The candidates of element e: co(source) ∪ co(match), each once (k-coherence's gathering).
+std::vector<int> candidates_of(Growth& g, int e) {
+  std::vector<int> out;
+  gather_candidates(g.exemplar.sets, g.state.source(e), {g.state.match(e)}, g.seen, out);
   return out;
 }
 
@@ -116,7 +116,6 @@ void place_initial_patch(Growth& g, core::Random& random) {
   push_horizon(g, g.state.add(c, centre));
   for (const geometry::Neighbour& n : em.near[static_cast<std::size_t>(c)]) {
     const Vec3 p = centre + n.offset;
-    const double r = g.exemplar.radius[static_cast<std::size_t>(n.element)];
     if (g.state.in_domain(p) && !g.state.collides(n.element, p))
       push_horizon(g, g.state.add(n.element, p));
   }
@@ -350,7 +349,17 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
 
 synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                                                      const synthesis::ChainControl& control) const {
-  Growth g{exemplar_, domain_, options_, {}, GrowthState(exemplar_, domain_), {}, {}, {}, 0, 0};
+  Growth g{exemplar_,
+           domain_,
+           options_,
+           {},
+           GrowthState(exemplar_, domain_),
+           {},
+           {},
+           {},
+           std::vector<char>(exemplar_.em.samples.size(), 0),
+           0,
+           0};
   double mean_radius = 0.0;
   for (const double r : exemplar_.radius) mean_radius += r;
   mean_radius /= static_cast<double>(exemplar_.radius.size());
@@ -395,10 +404,7 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                g.state.position(static_cast<int>(e)));
   result.scene =
       reconstruct(exemplar_.em, output, domain_, OrientationField{}, Reconstruction::rigid);
-  result.record.boundary = domain_.boundary();
-  const Vec3 sizes = domain_.sizes();
-  result.record.size = {sizes.x(), sizes.y()};
-  if (domain_.dimension() == 3) result.record.size.push_back(sizes.z());
+  result.record.set_domain(domain_);
   result.record.options = record_options();
   result.record.iterations = std::to_string(g.rounds);
   result.record.steps = g.rounds;

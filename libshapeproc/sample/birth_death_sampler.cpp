@@ -328,9 +328,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   out.observations = std::move(sampled.observations);
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
-  record.boundary = domain_.boundary();
-  for (int axis = 0; axis < domain_.dimension(); ++axis)
-    record.size.push_back(domain_.sizes()[axis]);
+  record.set_domain(domain_);
   record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius_)}};

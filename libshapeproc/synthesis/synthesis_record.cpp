@@ -4,6 +4,12 @@
 
 namespace shapeproc::synthesis {
 
+void SynthesisRecord::set_domain(const geometry::Domain& domain) {
+  boundary = domain.boundary();
+  size.clear();
+  for (int axis = 0; axis < domain.dimension(); ++axis) size.push_back(domain.sizes()[axis]);
+}
+
 namespace {
 std::string find(const std::vector<std::pair<std::string, std::string>>& list,
                  const std::string& key) {

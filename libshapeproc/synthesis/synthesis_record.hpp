@@ -14,7 +14,7 @@
 namespace shapeproc::synthesis {
 
 struct SynthesisRecord {
-  std::string method;                  // "shape-process" (later "neighbourhood-em", "growth")
+  std::string method;                  // "shape-process", "neighbourhood-em", "region-growing"
   std::string command;                 // the subcommand that ran it ("sample", "synthesize")
   std::vector<std::string> arguments;  // the whole command line
   std::uint64_t seed = 1;              // the run's seed
@@ -31,6 +31,8 @@ struct SynthesisRecord {
   bool stationary = true;                 // false when an automatic stopping rule gave up
   double seconds = 0.0;  // wall time; kept in memory only, so the same seed writes the same bytes
 
+  // Takes the domain's boundary and box sizes.
+  void set_domain(const geometry::Domain& domain);
   // The value of option or input `key`, empty when absent.
   std::string option(const std::string& key) const;
   std::string input(const std::string& key) const;

@@ -1,8 +1,15 @@
-// Small scenes for the comparison methods' tests: lattices and scatters of rectangles.
+// Small scenes for the comparison methods' tests (lattices and scatters of rectangles), and
+// what their tests ask of the outputs.
 #pragma once
 
+#include <algorithm>
+#include <limits>
+#include <vector>
+
 #include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/synthesis/synthesizer.hpp"
 
 namespace shapeproc::testing {
 
@@ -49,6 +56,28 @@ inline geometry::Scene rectangle_scatter(int count, double size, double s, doubl
     if (free) scene.elements.push_back({0, 0, p});
   }
   return scene;
+}
+
+// One chain of `method` from `seed`.
+inline synthesis::SynthesisResult run(const synthesis::Synthesizer& method, std::uint64_t seed) {
+  core::Random random(seed);
+  return method.synthesize(random, synthesis::ChainControl{});
+}
+
+// Every element's distance to its nearest other (minimum image on a torus).
+inline std::vector<double> nearest_distances(const geometry::Scene& scene,
+                                             const geometry::Domain& domain) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < scene.elements.size(); ++j)
+      if (j != i)
+        best = std::min(
+            best,
+            domain.minimum_image(scene.elements[j].position - scene.elements[i].position).norm());
+    out.push_back(best);
+  }
+  return out;
 }
 
 }  // namespace shapeproc::testing

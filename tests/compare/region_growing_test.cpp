@@ -16,24 +16,8 @@ namespace {
 using geometry::Boundary;
 using geometry::Domain;
 
-synthesis::SynthesisResult run(const RegionGrowing& growth, std::uint64_t seed) {
-  core::Random random(seed);
-  return growth.synthesize(random, synthesis::ChainControl{});
-}
-
-std::vector<double> nearest_distances(const geometry::Scene& scene, const Domain& domain) {
-  std::vector<double> out;
-  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < scene.elements.size(); ++j)
-      if (j != i)
-        best = std::min(
-            best,
-            domain.minimum_image(scene.elements[j].position - scene.elements[i].position).norm());
-    out.push_back(best);
-  }
-  return out;
-}
+using testing::nearest_distances;
+using testing::run;
 
 TEST(FreeSpace, ALatticeGivesItsLatticeOffsets) {
   // A 6 x 6 lattice of spacing 10 on a torus: every neighbourhood is the same, so each element's
