@@ -54,24 +54,21 @@ double mean_nearest_distance(const std::vector<geometry::Element>& elements,
   }
 }
 
-namespace {
-
-void classify_elements(EmExemplar& ex) {
-  const geometry::Scene& scene = ex.scene;
+ElementClasses classify_elements(const geometry::Scene& scene) {
   model::ShapeProcessModel skeleton = fit::model_skeleton(scene, fit::FitOptions{});
   fit::assign_shape_classes(skeleton, scene);
   const int classes = std::max<int>(1, static_cast<int>(skeleton.shape_classes.size()) + 1);
+  ElementClasses out;
   for (const geometry::Element& e : scene.elements) {
     const int shape_class = skeleton.shapes.empty()
                                 ? -1
                                 : skeleton.shapes[static_cast<std::size_t>(e.shape)].shape_class;
-    ex.category.push_back(e.category);
-    ex.shape_class.push_back(shape_class);
-    ex.attribute.push_back(e.category * classes + shape_class + 1);
+    out.category.push_back(e.category);
+    out.shape_class.push_back(shape_class);
+    out.attribute.push_back(e.category * classes + shape_class + 1);
   }
+  return out;
 }
-
-}  // namespace
 
 EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary boundary, double rings,
                             const SampleOptions& options) {
@@ -91,7 +88,10 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
   const geometry::Domain domain(ex.scene.window, ex.scene.dimension, boundary);
   ex.templates = sample_templates(ex.scene, options);
   ex.samples = place_samples(ex.scene, ex.templates);
-  classify_elements(ex);
+  ElementClasses classes = classify_elements(ex.scene);
+  ex.category = std::move(classes.category);
+  ex.shape_class = std::move(classes.shape_class);
+  ex.attribute = std::move(classes.attribute);
   for (std::size_t s = 0; s < ex.samples.size(); ++s)
     ex.sample_attribute.push_back(ex.attribute[static_cast<std::size_t>(ex.samples.element[s])]);
   ex.spacing = mean_nearest_distance(ex.scene.elements, domain);

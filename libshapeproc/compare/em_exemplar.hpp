@@ -40,6 +40,13 @@ struct EmExemplar {
   const std::vector<int>& samples_with_key(int key) const;
 };
 
+// Per element: its category, shape class (identical shapes, or size groups: fit/shape_classes;
+// -1 when the scene has no shapes to class) and the attribute code that combines them.
+struct ElementClasses {
+  std::vector<int> category, shape_class, attribute;
+};
+ElementClasses classify_elements(const geometry::Scene& scene);
+
 // The mean distance from each element's reference position to its nearest other's (minimum image
 // on a torus); 0 for a single element.
 double mean_nearest_distance(const std::vector<geometry::Element>& elements,
