@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -38,6 +39,22 @@ inline geometry::Scene rectangle_lattice(int n, double a, double w, double h) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
       scene.elements.push_back({0, 0, geometry::Vec3((i + 0.5) * a, (j + 0.5) * a, 0)});
+  return scene;
+}
+
+// A hexagonal lattice of spacing a, `columns` x `rows` (rows even), of w x h rectangles: a
+// seamless tile of [0, columns a] x [0, rows a √3/2].
+inline geometry::Scene hexagonal_lattice(int columns, int rows, double a, double w, double h) {
+  const double row = a * std::sqrt(3.0) / 2.0;
+  geometry::Scene scene;
+  scene.window =
+      geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(columns * a, rows * row, 0));
+  scene.categories = {{"a"}};
+  scene.shapes = {rectangle(w, h)};
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i)
+      scene.elements.push_back(
+          {0, 0, geometry::Vec3((i + 0.25 + 0.5 * (j % 2)) * a, (j + 0.5) * row, 0)});
   return scene;
 }
 

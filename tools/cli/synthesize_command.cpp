@@ -1,14 +1,16 @@
-// shapeproc synthesize EXEMPLAR -o out.svg --size ... [--method shape-process|ma-em|davison]: the
-// shape process (fit, then sample), the neighbourhood EM of Ma et al. 2011 or the region growing
-// of Davison et al. 2018, through the same domain, chains, outputs and pictures.
+// shapeproc synthesize EXEMPLAR -o out.svg --size ... [--method shape-process|ma-em|davison|ijiri]:
+// the shape process (fit, then sample), the neighbourhood EM of Ma et al. 2011 or the region
+// growing of Davison et al. 2018, through the same domain, chains, outputs and pictures.
 #include <cmath>
 #include <memory>
 
 #include "libshapeproc/compare/neighbourhood_em.hpp"
 #include "libshapeproc/compare/region_growing.hpp"
+#include "libshapeproc/compare/seed_and_grow.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/model_io.hpp"
+#include "libshapeproc/io/number_rows.hpp"
 #include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -20,6 +22,21 @@
 namespace shapeproc::cli {
 
 namespace {
+
+// An orientation (flow) field from --orientation-field: none, a constant angle or a PNG.
+compare::OrientationField orientation_field(const std::string& orientation,
+                                            const geometry::Domain& domain) {
+  if (orientation.empty()) return {};
+  if (io::extension_of(orientation) == "png")
+    return compare::OrientationField::map(
+        std::make_shared<const geometry::Raster>(io::read_grayscale_png(orientation)),
+        domain.box());
+  const auto angle = io::parse_number_list(orientation);
+  if (!angle || angle->size() != 1)
+    throw core::UsageError("--orientation-field: expected an angle in degrees or a .png, got '" +
+                           orientation + "'");
+  return compare::OrientationField::constant((*angle)[0]);
+}
 
 // The neighbourhood EM's options (--method ma-em).
 struct EmFlags {
@@ -74,9 +91,6 @@ struct EmFlags {
                     "ma-em: how elements are rebuilt from their samples")
         ->check(CLI::IsMember({"rigid", "similarity", "tps", "tps-approx"}))
         ->capture_default_str();
-    command.add_option("--orientation-field", orientation,
-                       "ma-em, 2D: a constant angle in degrees, or a grayscale PNG stretched over "
-                       "--size (grey g turns the exemplar's frame by 360 g degrees)");
     CLI::Option* flag =
         command.add_flag("--physics", physics,
                          "ma-em: interleave rigid-body steps (Box2D in 2D, Bullet in 3D) that push "
@@ -87,6 +101,13 @@ struct EmFlags {
         ->check(CLI::Range(1, 1000))
         ->needs(flag)
         ->capture_default_str();
+  }
+
+  void add_orientation_to(CLI::App& command) {
+    command.add_option("--orientation-field", orientation,
+                       "ma-em, ijiri (2D): a constant angle in degrees, or a grayscale PNG "
+                       "stretched over --size (grey g turns the exemplar's frame by 360 g "
+                       "degrees); ijiri takes it with --rotation flow-field");
   }
 
   compare::EmOptions options(const geometry::Domain& domain, long long iterations) const {
@@ -110,21 +131,7 @@ struct EmFlags {
     o.physics_steps = physics ? physics_steps : 0;
     if (iterations > 10000) throw core::UsageError("--iterations: ma-em takes at most 10000");
     if (iterations > 0) o.iterations = static_cast<int>(iterations);
-    if (!orientation.empty()) {
-      if (io::extension_of(orientation) == "png") {
-        o.orientation = compare::OrientationField::map(
-            std::make_shared<const geometry::Raster>(io::read_grayscale_png(orientation)),
-            domain.box());
-      } else {
-        const auto angle = io::parse_number_list(orientation);
-        if (!angle || angle->size() != 1)
-          throw core::UsageError(
-              "--orientation-field: expected an angle in degrees or a .png, "
-              "got '" +
-              orientation + "'");
-        o.orientation = compare::OrientationField::constant((*angle)[0]);
-      }
-    }
+    o.orientation = orientation_field(orientation, domain);
     return o;
   }
 };
@@ -171,6 +178,85 @@ struct GrowthFlags {
   }
 };
 
+// Seed-and-grow's options (--method ijiri).
+struct IjiriFlags {
+  std::string rotation = "none", flips, seeds, priority, weights = "1,1,100";
+  bool no_relax = false;
+
+  void add_to(CLI::App& command) {
+    command
+        .add_option("--rotation", rotation,
+                    "ijiri: none (references keep their orientation), best (each match turned to "
+                    "fit) or flow-field (turned by --orientation-field)")
+        ->check(CLI::IsMember({"none", "best", "flow-field"}))
+        ->capture_default_str();
+    command.add_option("--edge-flips", flips,
+                       "ijiri: file of exemplar edges to flip, one 'i j' pair of element indices "
+                       "per line ('#' comments)");
+    command.add_option("--seeds", seeds,
+                       "ijiri: file of initial seed positions, one 'x y' per line (default: one "
+                       "seed at the centre)");
+    command.add_option("--priority", priority,
+                       "ijiri: seed priorities by exemplar category, NAME=P,... (higher grows "
+                       "first within 5 mean edge lengths)");
+    command.add_option("--weights", weights, "ijiri: w1,w2,w3 of eq. 2 (distance, symbol, sub-id)")
+        ->capture_default_str();
+    command.add_flag("--no-relax", no_relax, "ijiri: grow without the relaxation of eq. 5");
+  }
+
+  compare::SeedGrowthOptions options(const geometry::Scene& exemplar,
+                                     const std::string& orientation,
+                                     const geometry::Domain& domain) const {
+    compare::SeedGrowthOptions o;
+    o.rotation = compare::parse_rotation_mode(rotation);
+    o.field = orientation_field(orientation, domain);
+    if (o.rotation == compare::RotationMode::flow_field && o.field.empty())
+      throw core::UsageError("--rotation flow-field needs --orientation-field");
+    if (o.rotation != compare::RotationMode::flow_field && !o.field.empty())
+      throw core::UsageError(
+          "--orientation-field: --method ijiri takes it with --rotation "
+          "flow-field");
+    const auto w = io::parse_number_list(weights);
+    if (!w || w->size() != 3 || (*w)[0] < 0 || (*w)[1] < 0 || (*w)[2] < 0)
+      throw core::UsageError("--weights: expected three numbers >= 0 (w1,w2,w3), got '" + weights +
+                             "'");
+    o.w1 = (*w)[0];
+    o.w2 = (*w)[1];
+    o.w3 = (*w)[2];
+    o.relax = !no_relax;
+    if (!flips.empty())
+      for (const auto& row : io::read_number_rows(flips, 2)) {
+        if (row[0] != std::floor(row[0]) || row[1] != std::floor(row[1]) || row[0] < 0 ||
+            row[1] < 0 || row[0] >= 1e9 || row[1] >= 1e9)
+          throw core::UsageError(flips + ": element indices must be whole numbers >= 0");
+        o.flips.push_back({static_cast<int>(row[0]), static_cast<int>(row[1])});
+      }
+    if (!seeds.empty())
+      for (const auto& row : io::read_number_rows(seeds, 2))
+        o.seeds.emplace_back(row[0], row[1], 0.0);
+    if (!priority.empty()) {
+      o.priority.assign(exemplar.categories.size(), 0);
+      for (const std::string& item : io::split(priority, ',')) {
+        const auto equals = item.find('=');
+        const auto value =
+            equals == std::string::npos ? std::nullopt : io::parse_number(item.substr(equals + 1));
+        if (!value || *value != std::floor(*value))
+          throw core::UsageError("--priority: expected NAME=P with a whole P, got '" + item + "'");
+        const std::string name(io::trim(item.substr(0, equals)));
+        bool found = false;
+        for (std::size_t c = 0; c < exemplar.categories.size(); ++c)
+          if (exemplar.categories[c].name == name) {
+            o.priority[c] = static_cast<int>(*value);
+            found = true;
+          }
+        if (!found)
+          throw core::UsageError("--priority: the exemplar has no category '" + name + "'");
+      }
+    }
+    return o;
+  }
+};
+
 // The names of the options added to `command` since it had `before` of them.
 std::vector<std::string> options_since(const CLI::App& command, std::size_t before) {
   std::vector<std::string> names;
@@ -198,7 +284,8 @@ void add_synthesize_command(CLI::App& app, Action& action,
     SampleFlags sample;
     EmFlags em;
     GrowthFlags growth;
-    std::vector<std::string> fit_only, shared, em_only, growth_only;
+    IjiriFlags ijiri;
+    std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only;
   };
   auto args = std::make_shared<SynthesizeArguments>();
   CLI::App* command = app.add_subcommand(
@@ -209,9 +296,10 @@ void add_synthesize_command(CLI::App& app, Action& action,
   command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
   command
       ->add_option("--method", args->method,
-                   "shape-process, ma-em (the neighbourhood EM of Ma et al. 2011) or davison "
-                   "(region growing, Davison et al. 2018)")
-      ->check(CLI::IsMember({"shape-process", "ma-em", "davison"}))
+                   "shape-process, ma-em (the neighbourhood EM of Ma et al. 2011), davison "
+                   "(region growing, Davison et al. 2018) or ijiri (seed-and-grow, Ijiri et al. "
+                   "2008)")
+      ->check(CLI::IsMember({"shape-process", "ma-em", "davison", "ijiri"}))
       ->capture_default_str();
   std::size_t before = command->get_options().size();
   command->add_option("--model", args->model, "also write the fitted model (.json)");
@@ -237,6 +325,12 @@ void add_synthesize_command(CLI::App& app, Action& action,
   before = command->get_options().size();
   args->growth.add_to(*command);
   args->growth_only = options_since(*command, before);
+  before = command->get_options().size();
+  args->em.add_orientation_to(*command);
+  args->orientation = options_since(*command, before);
+  before = command->get_options().size();
+  args->ijiri.add_to(*command);
+  args->ijiri_only = options_since(*command, before);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false);
   command->callback([&action, args, arguments, command] {
@@ -246,6 +340,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
         reject_options(*command, args->fit_only, "shape-process");
       if (!em) reject_options(*command, args->em_only, "ma-em");
       if (!growth) reject_options(*command, args->growth_only, "davison");
+      const bool ijiri = args->method == "ijiri";
+      if (!ijiri) reject_options(*command, args->ijiri_only, "ijiri");
+      if (!em && !ijiri) reject_options(*command, args->orientation, "ma-em or ijiri");
       if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
@@ -255,6 +352,33 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.command = "synthesize";
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
+      if (ijiri) {
+        if (args->sample.iterations > 0)
+          throw core::UsageError(
+              "--iterations: --method ijiri grows until no seed is left; it takes no iteration "
+              "count");
+        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
+        args->sample.check(args->output, exemplar.dimension);
+        if (exemplar.dimension != 2)
+          throw core::UsageError(args->input + ": --method ijiri grows 2D exemplars only");
+        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
+        compare::SeedGrowthOptions options =
+            args->ijiri.options(exemplar, args->em.orientation, domain);
+        args->sample.verbosity.stage("analysing the exemplar");
+        const compare::SeedAndGrow method(
+            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
+            domain, std::move(options));
+        out << "seed-and-grow: " << exemplar.elements.size() << " exemplar elements, "
+            << method.exemplar().references.size() << " with closed rings, mean edge "
+            << core::format_number(method.exemplar().connectivity.mean_edge) << ' '
+            << exemplar.units << '\n';
+        if (!args->ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args->ijiri.flips);
+        if (!args->ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args->ijiri.seeds);
+        for (auto& pair : flatten_options("reader", args->reader.to_json()))
+          record.options.push_back(std::move(pair));
+        args->sample.verbosity.stage("growing");
+        return args->sample.run(method, args->output, std::move(record), out);
+      }
       if (growth) {
         if (args->sample.iterations > 0)
           throw core::UsageError(
