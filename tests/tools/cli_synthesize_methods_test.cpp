@@ -1,4 +1,5 @@
-// synthesize --method ma-em|davison: the neighbourhood EM and region growing through the same
+// synthesize --method ma-em|davison|ijiri: the neighbourhood EM, region growing and seed-and-grow
+// through the same
 // domain, chains, outputs, records and errors as the shape process.
 #include <gtest/gtest.h>
 
@@ -128,6 +129,52 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
   expect_one_line_error(
       run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3"}), 2,
       "--k is for --method ma-em or davison");
+}
+
+TEST(CliSynthesizeIjiri, GrowsATileWithFlipsSeedsAndItsRecord) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("seeded.svg").string();
+  const std::string seeds = dir.write("seeds.txt", "# spray\n150 150\n40,60\n").string();
+  const std::string tile = data("third-party/hero-patterns/bubbles.svg");
+  const Result r =
+      run_cli({"synthesize", tile, "--tile", "--method", "ijiri", "-o", out, "--size", "300,300",
+               "--seed", "2", "--seeds", seeds, "--rotation", "best", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string svg = testing::read_file(out);
+  for (const char* part : {"&quot;method&quot;:&quot;seed-and-grow&quot;", "ijiri.rotation",
+                           "&quot;ijiri.seeds&quot;,&quot;2&quot;"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  // 17 elements per 100 x 100 tile: 9 tiles' worth, and more where the two fronts meet out of
+  // phase.
+  const Result stats = run_cli({"stats", out, "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_NEAR(nlohmann::json::parse(stats.out).at("elements").get<double>(), 160.0, 16.0);
+}
+
+TEST(CliSynthesizeIjiri, BadFilesAndFlagsGetOneLine) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("x.svg").string();
+  const std::string exemplar = data("svg/dots-random.svg");
+  const std::string flips = dir.file("flips.txt").string();
+  const auto grow = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"synthesize", exemplar, "--method", "ijiri",
+                                     "-o",         out,      "--size",   "100,100"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args);
+  };
+  dir.write("flips.txt", "0 1\n2 x\n");
+  expect_one_line_error(grow({"--edge-flips", flips}), 2, "flips.txt:2:");
+  dir.write("flips.txt", "0 999\n");
+  expect_one_line_error(grow({"--edge-flips", flips}), 2, "0-999");
+  expect_one_line_error(grow({"--rotation", "flow-field"}), 2, "--orientation-field");
+  expect_one_line_error(grow({"--weights", "1,2"}), 2, "--weights");
+  expect_one_line_error(grow({"--priority", "nope=2"}), 2, "no category 'nope'");
+  expect_one_line_error(grow({"--ratio", "3"}), 2, "--ratio is for --method davison");
+  expect_one_line_error(grow({"--iterations", "5"}), 2, "--iterations");
+  EXPECT_FALSE(std::filesystem::exists(out));
+  expect_one_line_error(
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--rotation", "best"}), 2,
+      "--rotation is for --method ijiri");
 }
 
 }  // namespace
