@@ -195,6 +195,22 @@ Connectivity rings_of(const std::vector<Triangle>& triangles, const PointSet& se
 
 }  // namespace
 
+std::vector<std::pair<int, Vec3>> ring_edges(const Connectivity& connectivity) {
+  std::vector<std::pair<int, Vec3>> out;
+  for (std::size_t e = 0; e < connectivity.rings.size(); ++e) {
+    const Ring& ring = connectivity.rings[e];
+    for (std::size_t k = 0; k < ring.neighbour.size(); ++k) {
+      const auto other = static_cast<std::size_t>(ring.neighbour[k]);
+      const Vec3& o = ring.offset[k];
+      // Each edge is in both ends' rings: keep the end with the smaller index (for an element's
+      // own image, the offset pointing up or right).
+      if (other > e || (other == e && (o.y() > 0 || (o.y() == 0 && o.x() > 0))))
+        out.emplace_back(static_cast<int>(e), o);
+    }
+  }
+  return out;
+}
+
 Connectivity delaunay_connectivity(const std::vector<Vec3>& positions,
                                    const geometry::Domain& domain,
                                    const std::vector<EdgeFlip>& flips) {

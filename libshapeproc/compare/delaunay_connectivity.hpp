@@ -34,6 +34,10 @@ struct Connectivity {
   double shortest_edge = 0.0, mean_edge = 0.0;
 };
 
+// Every edge once, as (element, offset to the other end): from the rings, so that an edge across
+// a torus seam keeps its offset.
+std::vector<std::pair<int, Vec3>> ring_edges(const Connectivity& connectivity);
+
 // An edge flip a user asks for: the edge between elements `a` and `b` (exemplar order) becomes
 // the other diagonal of the two kept triangles it borders.
 struct EdgeFlip {

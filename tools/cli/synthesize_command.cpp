@@ -9,6 +9,7 @@
 #include "libshapeproc/compare/seed_and_grow.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/io/graph_svg_writer.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/number_rows.hpp"
 #include "libshapeproc/io/png_reader.hpp"
@@ -180,7 +181,7 @@ struct GrowthFlags {
 
 // Seed-and-grow's options (--method ijiri).
 struct IjiriFlags {
-  std::string rotation = "none", flips, seeds, priority, weights = "1,1,100";
+  std::string rotation = "none", flips, seeds, priority, weights = "1,1,100", show;
   bool no_relax = false;
 
   void add_to(CLI::App& command) {
@@ -202,6 +203,9 @@ struct IjiriFlags {
     command.add_option("--weights", weights, "ijiri: w1,w2,w3 of eq. 2 (distance, symbol, sub-id)")
         ->capture_default_str();
     command.add_flag("--no-relax", no_relax, "ijiri: grow without the relaxation of eq. 5");
+    command.add_option("--show-connectivity", show,
+                       "ijiri: also draw the exemplar's connectivity (after --edge-flips) to this "
+                       ".svg, elements labelled by index, border elements hollow");
   }
 
   compare::SeedGrowthOptions options(const geometry::Scene& exemplar,
@@ -256,6 +260,20 @@ struct IjiriFlags {
     return o;
   }
 };
+
+// The exemplar's connectivity as a picture (--show-connectivity).
+void show_connectivity(const compare::SeedGrowthExemplar& exemplar, const std::string& file) {
+  std::vector<geometry::Vec3> nodes;
+  std::vector<bool> open;
+  for (std::size_t e = 0; e < exemplar.scene.elements.size(); ++e) {
+    nodes.push_back(exemplar.domain.wrap(exemplar.scene.elements[e].position));
+    open.push_back(!exemplar.connectivity.rings[e].closed);
+  }
+  std::vector<io::GraphEdge> edges;
+  for (const auto& [first, offset] : compare::ring_edges(exemplar.connectivity))
+    edges.push_back({first, offset});
+  io::write_graph_svg(file, exemplar.scene.window, nodes, edges, open);
+}
 
 // The names of the options added to `command` since it had `before` of them.
 std::vector<std::string> options_since(const CLI::App& command, std::size_t before) {
@@ -368,6 +386,13 @@ void add_synthesize_command(CLI::App& app, Action& action,
         const compare::SeedAndGrow method(
             exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
             domain, std::move(options));
+        if (!args->ijiri.show.empty()) {
+          if (io::extension_of(args->ijiri.show) != "svg")
+            throw core::UsageError("--show-connectivity: expected an .svg file, got '" +
+                                   args->ijiri.show + "'");
+          show_connectivity(method.exemplar(), args->ijiri.show);
+          out << "wrote the connectivity to " << args->ijiri.show << '\n';
+        }
         out << "seed-and-grow: " << exemplar.elements.size() << " exemplar elements, "
             << method.exemplar().references.size() << " with closed rings, mean edge "
             << core::format_number(method.exemplar().connectivity.mean_edge) << ' '
