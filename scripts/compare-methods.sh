@@ -33,7 +33,7 @@ for file in "$@"; do
     method=${method%-shapes}
     extra=()
     [ "$variant" = ma-em-physics ] && extra=(--physics)
-    [ "$variant" = davison-shapes ] && extra=(--overlap shapes)
+    [ "$variant" = davison-shapes ] || [ "$variant" = ijiri-shapes ] && extra=(--overlap shapes)
     output="out/compare/$name-$variant.svg"
     start=$(date +%s.%N)
     if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" "${extra[@]}" \

@@ -73,7 +73,7 @@ double matching_error(const std::vector<TargetNeighbour>& target, const Referenc
 RingMatch best_match(const std::vector<TargetNeighbour>& target,
                      const std::vector<ReferenceRing>& references,
                      const std::vector<int>& candidates, RotationMode mode, double field_angle,
-                     const MatchWeights& weights, core::Random& random) {
+                     const MatchWeights& weights, core::Random& random, const MatchFilter& accept) {
   RingMatch best;
   int ties = 0;
   for (const int index : candidates) {
@@ -85,6 +85,8 @@ RingMatch best_match(const std::vector<TargetNeighbour>& target,
       if (mode == RotationMode::best) angle = best_rotation(target, reference, shift);
       if (mode == RotationMode::flow_field) angle = field_angle;
       const double error = matching_error(target, reference, shift, angle, weights);
+      if (error > best.error) continue;
+      if (accept && !accept(reference, angle)) continue;
       if (error < best.error) {
         best = {error, index, shift, angle};
         ties = 1;

@@ -13,6 +13,7 @@
 // References with fewer neighbours than the seed has are skipped, as the paper does.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -68,10 +69,14 @@ double matching_error(const std::vector<TargetNeighbour>& target, const Referenc
 
 // Eq. 1 and 3: the best matching over the references listed in `candidates` (indices into
 // `references`). `target` is already in partial_ring_order. Exact ties are broken by `random`
-// (the first seed, with no neighbour, ties every reference). No usable reference: error ∞.
+// (the first seed, with no neighbour, ties every reference). `accept`, when given, is asked
+// about a matching before it becomes the best (e.g. whether its copy would overlap), and a
+// refused one is passed over. No usable reference: error ∞.
+using MatchFilter = std::function<bool(const ReferenceRing& reference, double angle)>;
 RingMatch best_match(const std::vector<TargetNeighbour>& target,
                      const std::vector<ReferenceRing>& references,
                      const std::vector<int>& candidates, RotationMode mode, double field_angle,
-                     const MatchWeights& weights, core::Random& random);
+                     const MatchWeights& weights, core::Random& random,
+                     const MatchFilter& accept = {});
 
 }  // namespace shapeproc::compare

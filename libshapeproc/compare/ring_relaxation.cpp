@@ -19,7 +19,8 @@ std::vector<int> graph_neighbourhood(const GrowthGraph& graph, int centre, int h
   return out;
 }
 
-double relax_rings(GrowthGraph& graph, const std::vector<int>& nodes, int sweeps) {
+double relax_rings(GrowthGraph& graph, const std::vector<int>& nodes, int sweeps,
+                   const MoveFilter& allowed) {
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (const int k : nodes) {
       const GrowthNode& node = graph.node(k);
@@ -35,7 +36,7 @@ double relax_rings(GrowthGraph& graph, const std::vector<int>& nodes, int sweeps
       }
       shift /= 2.0 * static_cast<double>(graph.edges(k).size());
       const Vec3 target = node.position + shift;
-      if (graph.in_domain(target)) graph.move(k, target);
+      if (graph.in_domain(target) && (!allowed || allowed(k, target))) graph.move(k, target);
     }
   }
   double energy = 0.0;

@@ -10,6 +10,7 @@
 // nothing has changed, so the local sweeps lose little.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "libshapeproc/compare/growth_graph.hpp"
@@ -20,8 +21,10 @@ namespace shapeproc::compare {
 std::vector<int> graph_neighbourhood(const GrowthGraph& graph, int centre, int hops);
 
 // `sweeps` Gauss–Seidel sweeps of eq. 5 over `nodes`; a node stays put when it is fixed or when
-// its new place would leave the domain (GrowthGraph::in_domain). Returns the energy of
-// the swept nodes' terms after the last sweep.
-double relax_rings(GrowthGraph& graph, const std::vector<int>& nodes, int sweeps);
+// its new place would leave the domain (GrowthGraph::in_domain) or `allowed` (when given)
+// refuses it. Returns the energy of the swept nodes' terms after the last sweep.
+using MoveFilter = std::function<bool(int node, const Vec3& position)>;
+double relax_rings(GrowthGraph& graph, const std::vector<int>& nodes, int sweeps,
+                   const MoveFilter& allowed = {});
 
 }  // namespace shapeproc::compare

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <queue>
 
 #include "libshapeproc/compare/element_reconstruction.hpp"
@@ -11,6 +12,8 @@
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/geometry/overlap_depth.hpp"
+#include "libshapeproc/geometry/proxy.hpp"
 
 namespace shapeproc::compare {
 
@@ -45,6 +48,9 @@ struct Growth {
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
   Counters counters;
   long long elements = 0;
+  // With exact overlaps: proxies per (shape, turn step), made when first needed.
+  std::map<std::pair<int, long>, geometry::Proxy2> proxies;
+  double largest_radius = 0.0;
 
   int priority(int node) const {
     const int s = graph.node(node).symbol;
@@ -58,6 +64,48 @@ struct Growth {
     queue.emplace(key, node);
   }
 };
+
+constexpr double kTurnStep = core::kPi / 360.0;  // 0.5 degrees
+
+double snapped(const Growth& g, double angle) {
+  return g.options.exact_overlap ? std::round(angle / kTurnStep) * kTurnStep : angle;
+}
+
+const geometry::Proxy2& proxy_of(Growth& g, int shape, double angle) {
+  const auto step = static_cast<long>(std::lround(angle / kTurnStep)) % 720;
+  const std::pair<int, long> key{shape, step < 0 ? step + 720 : step};
+  auto found = g.proxies.find(key);
+  if (found != g.proxies.end()) return found->second;
+  geometry::ProxyOptions options;
+  options.tolerance = 0.002;  // as close to the drawn outlines as `stats` judges collisions
+  const geometry::Shape& drawn = g.exemplar.scene.shapes[static_cast<std::size_t>(shape)];
+  Similarity turn_only;
+  turn_only.linear = Eigen::AngleAxisd(static_cast<double>(key.second) * kTurnStep, Vec3::UnitZ())
+                         .toRotationMatrix();
+  return g.proxies
+      .emplace(key, geometry::make_proxy2(key.second == 0 ? drawn : map_shape(drawn, turn_only),
+                                          options))
+      .first->second;
+}
+
+// Whether a copy of exemplar element `source` turned by `angle` at `p` would overlap an element
+// other than `skip`.
+bool overlaps(Growth& g, int source, double angle, const Vec3& p, int skip) {
+  const int shape = g.exemplar.scene.elements[static_cast<std::size_t>(source)].shape;
+  const double radius = g.exemplar.shape_radius[static_cast<std::size_t>(shape)];
+  for (const int o : g.graph.within(g.graph.domain().wrap(p), radius + g.largest_radius)) {
+    const GrowthNode& other = g.graph.node(o);
+    if (o == skip || other.seed()) continue;
+    const int other_shape = g.exemplar.scene.elements[static_cast<std::size_t>(other.source)].shape;
+    const Vec3 offset = g.graph.domain().minimum_image(other.position - p);
+    const double reach = radius + g.exemplar.shape_radius[static_cast<std::size_t>(other_shape)];
+    if (offset.squaredNorm() >= reach * reach) continue;
+    if (geometry::overlap_depth(proxy_of(g, shape, angle), proxy_of(g, other_shape, other.angle),
+                                geometry::Vec2(offset.x(), offset.y())) > 0)
+      return true;
+  }
+  return false;
+}
 
 // Step 1: the next seed to grow, nearest the origins, or a seed of higher priority near it.
 int next_seed(Growth& g) {
@@ -98,8 +146,15 @@ RingMatch match_seed(Growth& g, int s, std::vector<int>& ring, core::Random& ran
   const double field = g.options.rotation == RotationMode::flow_field
                            ? g.options.field.angle_at(g.graph.node(s).position)
                            : 0.0;
+  MatchFilter accept;
+  if (g.options.exact_overlap) {
+    const Vec3 p = g.graph.node(s).position;
+    accept = [&g, p, s](const ReferenceRing& reference, double angle) {
+      return !overlaps(g, reference.element, snapped(g, angle), p, s);
+    };
+  }
   return best_match(ordered, g.exemplar.references, candidates, g.options.rotation, field,
-                    g.weights, random);
+                    g.weights, random, accept);
 }
 
 // The smallest angle between direction `d` and an edge of node s.
@@ -180,6 +235,15 @@ void join_ring(Growth& g, int s, const ReferenceRing& ref, const std::vector<int
   }
 }
 
+// With exact overlaps, the relaxation's moves must not make elements overlap.
+MoveFilter move_filter(Growth& g) {
+  if (!g.options.exact_overlap) return {};
+  return [&g](int n, const Vec3& p) {
+    const GrowthNode& node = g.graph.node(n);
+    return node.seed() || !overlaps(g, node.source, node.angle, p, n);
+  };
+}
+
 // One growth step at seed s; false when the seed had nothing to match and was dropped.
 bool grow(Growth& g, int s, core::Random& random) {
   std::vector<int> ring;
@@ -193,7 +257,7 @@ bool grow(Growth& g, int s, core::Random& random) {
   GrowthNode& node = g.graph.node(s);
   node.source = ref.element;
   node.symbol = ref.symbol;
-  node.angle = match.angle;
+  node.angle = snapped(g, match.angle);
   ++g.elements;
   const std::size_t m = ref.offset.size();
   std::vector<int> slot(m, -1);
@@ -209,8 +273,17 @@ bool grow(Growth& g, int s, core::Random& random) {
   join_ring(g, s, ref, slot);
   if (g.options.relax)
     relax_rings(g.graph, graph_neighbourhood(g.graph, s, g.options.relax_hops),
-                g.options.relax_sweeps);
+                g.options.relax_sweeps, move_filter(g));
   return true;
+}
+
+// The longest distance the graph is asked about: edges up to l_long, and with exact overlaps
+// two bounding circles.
+double graph_reach(const SeedGrowthExemplar& ex, const SeedGrowthOptions& o) {
+  double reach = 1.6 * ex.longest_edge;
+  if (o.exact_overlap)
+    for (const double r : ex.shape_radius) reach = std::max(reach, 2.0 * r);
+  return reach;
 }
 
 void check_options(const SeedGrowthOptions& o) {
@@ -249,7 +322,7 @@ SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
   if (exemplar.elements.size() < 3)
     throw core::ArgumentError("seed-and-grow", "the exemplar needs at least 3 elements");
   SeedGrowthExemplar ex{
-      exemplar, geometry::Domain(exemplar.window, 2, boundary), {}, {}, {}, {}, {}, 0.0, 0.0};
+      exemplar, geometry::Domain(exemplar.window, 2, boundary), {}, {}, {}, {}, {}, 0.0, 0.0, {}};
   std::vector<Vec3> positions;
   for (const geometry::Element& e : exemplar.elements)
     positions.push_back(ex.domain.wrap(e.position));
@@ -278,6 +351,8 @@ SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
                               "no element of the exemplar is surrounded by others (every ring is "
                               "open): there is nothing to grow from");
   ex.density = static_cast<double>(positions.size()) / ex.domain.measure();
+  for (const geometry::Shape& shape : exemplar.shapes)
+    ex.shape_radius.push_back(0.5 * geometry::bounding_box(shape).sizes().norm());
   return ex;
 }
 
@@ -326,7 +401,7 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
   const double l = exemplar_.connectivity.mean_edge;
   Growth g{exemplar_,
            options_,
-           GrowthGraph(domain_, 1.6 * exemplar_.longest_edge),
+           GrowthGraph(domain_, graph_reach(exemplar_, options_)),
            {},
            0.5 * exemplar_.connectivity.shortest_edge,
            5.0 * l,
@@ -335,8 +410,11 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
            {},
            {},
            {},
-           0};
+           0,
+           {},
+           0.0};
   g.weights = {options_.w1, options_.w2, options_.w3, l};
+  for (const double r : exemplar_.shape_radius) g.largest_radius = std::max(g.largest_radius, r);
   g.neighbourhood = std::min(5.0 * l, 3.2 * exemplar_.longest_edge);
   if (!options_.priority.empty()) {
     g.symbol_priority.assign(exemplar_.by_symbol.size(), 0);
@@ -370,7 +448,8 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
   std::vector<int> all;
   for (std::size_t n = 0; n < g.graph.size(); ++n)
     if (g.graph.node(static_cast<int>(n)).alive) all.push_back(static_cast<int>(n));
-  const double energy = options_.relax ? relax_rings(g.graph, all, options_.final_sweeps) : 0.0;
+  const double energy =
+      options_.relax ? relax_rings(g.graph, all, options_.final_sweeps, move_filter(g)) : 0.0;
   result.trace.push_back({g.counters.steps, static_cast<int>(g.elements), energy});
 
   geometry::Scene& scene = result.scene;
@@ -408,7 +487,9 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
                      {"seeds dropped by edge crossings", count(g.counters.crossing)},
                      {"seeds outside the domain", count(g.counters.outside)},
                      {"extra seeds (l_long)", count(g.counters.extra)},
-                     {"seeds left without a match", count(g.counters.dropped)}};
+                     {options_.exact_overlap ? "seeds left without a match that fits"
+                                             : "seeds left without a match",
+                      count(g.counters.dropped)}};
   if (g.elements > limit)
     result.counters.emplace_back("stopped", "at " + count(limit) + " elements (4x the expected)");
   return result;

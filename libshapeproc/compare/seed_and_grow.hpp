@@ -17,6 +17,7 @@
 //    their distance in the reference ring), an extra seed without symbol id goes between them on
 //    the bisector, as far out as the two on average;
 // 4. relaxes the rings near the step (ring_relaxation, eq. 5), the first element held.
+// With `exact_overlap`, steps 2 and 4 skip what would make shapes overlap (touching is allowed).
 // Growth ends when no seed is left; the rings are then relaxed over the whole output. A seed
 // whose partial ring is larger than every reference ring of its symbol (it is surrounded) is
 // dropped; the paper's "simply ignore such reference elements" leaves it nothing to match.
@@ -47,6 +48,11 @@ struct SeedGrowthOptions {
   std::vector<EdgeFlip> flips;
   std::vector<Vec3> seeds;    // empty: one seed at the domain's centre
   std::vector<int> priority;  // per exemplar category; empty: all alike
+  // Overlap test, an option the paper does not have: a copy whose shape would overlap an element
+  // already placed is passed over for the next best match, and the relaxation makes no move
+  // that overlaps. Turned copies are then turned in steps of 0.5 degrees, so that the shapes
+  // tested (kept per step) are the shapes drawn.
+  bool exact_overlap = false;
 };
 
 const char* to_string(RotationMode mode);
@@ -62,7 +68,8 @@ struct SeedGrowthExemplar {
   std::vector<std::vector<int>> by_symbol;  // reference indices per symbol
   std::vector<int> all;                     // every reference index
   double longest_edge = 0.0;
-  double density = 0.0;  // elements per unit area
+  double density = 0.0;              // elements per unit area
+  std::vector<double> shape_radius;  // per shape: its bounding circle
 };
 
 // Throws core::ArgumentError for a 3D exemplar, fewer than 3 elements, bad flips, or an exemplar

@@ -75,6 +75,37 @@ inline geometry::Scene rectangle_scatter(int count, double size, double s, doubl
   return scene;
 }
 
+// `count` horizontal bars 30 x 4 at random places of a 200 x 200 torus, none overlapping.
+inline geometry::Scene bar_scatter(int count, std::uint64_t seed) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(200, 200, 0));
+  scene.categories = {{"a"}};
+  scene.shapes = {rectangle(30.0, 4.0)};
+  const auto torus = geometry::Domain::from_sizes({200, 200}, geometry::Boundary::torus);
+  core::Random random(seed);
+  while (static_cast<int>(scene.elements.size()) < count) {
+    const geometry::Vec3 p(random.uniform(0, 200), random.uniform(0, 200), 0);
+    bool free = true;
+    for (const auto& e : scene.elements) {
+      const geometry::Vec3 d = torus.minimum_image(e.position - p);
+      free = free && !(std::abs(d.x()) < 31.0 && std::abs(d.y()) < 5.0);
+    }
+    if (free) scene.elements.push_back({0, 0, p});
+  }
+  return scene;
+}
+
+inline int overlapping_bars(const geometry::Scene& scene, const geometry::Domain& domain) {
+  int pairs = 0;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i)
+    for (std::size_t j = i + 1; j < scene.elements.size(); ++j) {
+      const geometry::Vec3 d =
+          domain.minimum_image(scene.elements[j].position - scene.elements[i].position);
+      pairs += std::abs(d.x()) < 30.0 - 1e-9 && std::abs(d.y()) < 4.0 - 1e-9;
+    }
+  return pairs;
+}
+
 // One chain of `method` from `seed`.
 inline synthesis::SynthesisResult run(const synthesis::Synthesizer& method, std::uint64_t seed) {
   core::Random random(seed);

@@ -93,48 +93,18 @@ TEST(RegionGrowing, RefusesBadOptions) {
 namespace shapeproc::compare {
 namespace {
 
-// `count` horizontal bars 30 x 4 at random places of a 200 x 200 torus, none overlapping.
-geometry::Scene bar_scatter(int count, std::uint64_t seed) {
-  geometry::Scene scene;
-  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(200, 200, 0));
-  scene.categories = {{"a"}};
-  scene.shapes = {testing::rectangle(30.0, 4.0)};
-  const Domain torus = Domain::from_sizes({200, 200}, Boundary::torus);
-  core::Random random(seed);
-  while (static_cast<int>(scene.elements.size()) < count) {
-    const geometry::Vec3 p(random.uniform(0, 200), random.uniform(0, 200), 0);
-    bool free = true;
-    for (const auto& e : scene.elements) {
-      const Vec3 d = torus.minimum_image(e.position - p);
-      free = free && !(std::abs(d.x()) < 31.0 && std::abs(d.y()) < 5.0);
-    }
-    if (free) scene.elements.push_back({0, 0, p});
-  }
-  return scene;
-}
-
-int overlapping_bars(const geometry::Scene& scene, const Domain& domain) {
-  int pairs = 0;
-  for (std::size_t i = 0; i < scene.elements.size(); ++i)
-    for (std::size_t j = i + 1; j < scene.elements.size(); ++j) {
-      const Vec3 d = domain.minimum_image(scene.elements[j].position - scene.elements[i].position);
-      pairs += std::abs(d.x()) < 30.0 - 1e-9 && std::abs(d.y()) < 4.0 - 1e-9;
-    }
-  return pairs;
-}
-
 TEST(RegionGrowing, ExactOverlapsKeepLongShapesApart) {
   // Bars much longer than half their nearest distance: bounding circles let them overlap, the
   // shapes' own distance does not.
-  const geometry::Scene exemplar = bar_scatter(60, 4);
+  const geometry::Scene exemplar = testing::bar_scatter(60, 4);
   const Domain domain = Domain::from_sizes({400, 400}, Boundary::torus);
   GrowthOptions options;
   const RegionGrowing circles(exemplar, Boundary::torus, domain, options);
   options.exact_overlap = true;
   const RegionGrowing shapes(exemplar, Boundary::torus, domain, options);
   const synthesis::SynthesisResult a = run(circles, 1), b = run(shapes, 1);
-  EXPECT_GT(overlapping_bars(a.scene, domain), 0);
-  EXPECT_EQ(overlapping_bars(b.scene, domain), 0);
+  EXPECT_GT(testing::overlapping_bars(a.scene, domain), 0);
+  EXPECT_EQ(testing::overlapping_bars(b.scene, domain), 0);
   EXPECT_GT(b.scene.elements.size(), 150u);  // still grown over the domain (4 x 60 at most)
 }
 

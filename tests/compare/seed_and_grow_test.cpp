@@ -179,5 +179,20 @@ TEST(SeedAndGrow, RefusesWhatItCannotGrow) {
       core::ArgumentError);
 }
 
+TEST(SeedAndGrow, ExactOverlapsKeepLongShapesApart) {
+  // Ijiri's growth has no overlap test: scattered bars grow onto each other. With the shapes
+  // tested, none overlaps and the domain is still grown over.
+  const geometry::Scene exemplar = testing::bar_scatter(60, 4);
+  const Domain domain = Domain::from_sizes({400, 400}, Boundary::torus);
+  SeedGrowthOptions options;
+  const SeedAndGrow plain(exemplar, Boundary::torus, domain, options);
+  options.exact_overlap = true;
+  const SeedAndGrow shapes(exemplar, Boundary::torus, domain, options);
+  const auto a = testing::run(plain, 1), b = testing::run(shapes, 1);
+  EXPECT_GT(testing::overlapping_bars(a.scene, domain), 0);
+  EXPECT_EQ(testing::overlapping_bars(b.scene, domain), 0);
+  EXPECT_GT(b.scene.elements.size(), 150u);  // 240 at the exemplar's density
+}
+
 }  // namespace
 }  // namespace shapeproc::compare

@@ -142,15 +142,19 @@ struct GrowthFlags {
   double ratio = compare::GrowthOptions{}.ratio;
   double bounding_radius = 0.0;
   bool no_optimise = false;
-  std::string overlap = "circles";
+  std::string overlap;
 
-  void add_to(CLI::App& command) {
+  // --overlap, which ijiri takes too.
+  void add_overlap_to(CLI::App& command) {
     command
         .add_option("--overlap", overlap,
-                    "davison: overlap test of new elements: bounding circles (spheres), as the "
-                    "paper, or the shapes themselves")
-        ->check(CLI::IsMember({"circles", "shapes"}))
-        ->capture_default_str();
+                    "davison, ijiri: overlap test of new elements: bounding circles (spheres; "
+                    "davison's default, as the paper), none (ijiri's default, as the paper) or "
+                    "the shapes themselves (ijiri: turns then snap to 0.5 degrees)")
+        ->check(CLI::IsMember({"circles", "shapes", "none"}));
+  }
+
+  void add_to(CLI::App& command) {
     command
         .add_option("--ratio", ratio,
                     "davison: a candidate that can grow is taken only within this ratio of the "
@@ -174,7 +178,6 @@ struct GrowthFlags {
     o.ratio = ratio;
     o.bounding_radius = bounding_radius;
     o.optimise = !no_optimise;
-    o.exact_overlap = overlap == "shapes";
     return o;
   }
 };
@@ -209,9 +212,12 @@ struct IjiriFlags {
   }
 
   compare::SeedGrowthOptions options(const geometry::Scene& exemplar,
-                                     const std::string& orientation,
+                                     const std::string& orientation, const std::string& overlap,
                                      const geometry::Domain& domain) const {
     compare::SeedGrowthOptions o;
+    if (overlap == "circles")
+      throw core::UsageError("--overlap circles: --method ijiri tests shapes or none");
+    o.exact_overlap = overlap == "shapes";
     o.rotation = compare::parse_rotation_mode(rotation);
     o.field = orientation_field(orientation, domain);
     if (o.rotation == compare::RotationMode::flow_field && o.field.empty())
@@ -303,7 +309,8 @@ void add_synthesize_command(CLI::App& app, Action& action,
     EmFlags em;
     GrowthFlags growth;
     IjiriFlags ijiri;
-    std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only;
+    std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only,
+        growth_overlap;
   };
   auto args = std::make_shared<SynthesizeArguments>();
   CLI::App* command = app.add_subcommand(
@@ -349,6 +356,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
   before = command->get_options().size();
   args->ijiri.add_to(*command);
   args->ijiri_only = options_since(*command, before);
+  before = command->get_options().size();
+  args->growth.add_overlap_to(*command);
+  args->growth_overlap = options_since(*command, before);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false);
   command->callback([&action, args, arguments, command] {
@@ -361,6 +371,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       const bool ijiri = args->method == "ijiri";
       if (!ijiri) reject_options(*command, args->ijiri_only, "ijiri");
       if (!em && !ijiri) reject_options(*command, args->orientation, "ma-em or ijiri");
+      if (!growth && !ijiri) reject_options(*command, args->growth_overlap, "davison or ijiri");
       if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
@@ -381,7 +392,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
           throw core::UsageError(args->input + ": --method ijiri grows 2D exemplars only");
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
         compare::SeedGrowthOptions options =
-            args->ijiri.options(exemplar, args->em.orientation, domain);
+            args->ijiri.options(exemplar, args->em.orientation, args->growth.overlap, domain);
         args->sample.verbosity.stage("analysing the exemplar");
         const compare::SeedAndGrow method(
             exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
