@@ -1,0 +1,72 @@
+// The options of the comparison methods of `synthesize` (--method ma-em, davison, ijiri): what
+// each flag means, its checks, and how the flags become the library's options.
+#pragma once
+
+#include <string>
+
+#include "libshapeproc/compare/neighbourhood_em.hpp"
+#include "libshapeproc/compare/region_growing.hpp"
+#include "libshapeproc/compare/seed_and_grow.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace shapeproc::cli {
+
+// The neighbourhood EM's options (--method ma-em), and the shared --neighbourhood, --k, --alpha
+// and --orientation-field.
+struct EmFlags {
+  double rings = compare::EmOptions{}.rings;
+  int k = compare::EmOptions{}.k;
+  double alpha = compare::EmOptions{}.alpha;
+  double lambda = compare::EmOptions{}.lambda;
+  std::string samples = "auto";
+  std::string initialisation = "patch-copy";
+  std::string search = "k-coherence";
+  std::string reconstruction = "rigid";
+  std::string orientation;
+  bool physics = false;
+  int physics_steps = compare::kPhysicsSubSteps;
+
+  // The options both neighbourhood methods (ma-em, davison) take.
+  void add_shared_to(CLI::App& command);
+
+  void add_to(CLI::App& command);
+
+  void add_orientation_to(CLI::App& command);
+
+  compare::EmOptions options(const geometry::Domain& domain, long long iterations) const;
+};
+
+// Region growing's options (--method davison), and --overlap, which ijiri takes too.
+struct GrowthFlags {
+  double ratio = compare::GrowthOptions{}.ratio;
+  double bounding_radius = 0.0;
+  bool no_optimise = false;
+  std::string overlap;
+
+  // --overlap, which ijiri takes too.
+  void add_overlap_to(CLI::App& command);
+
+  void add_to(CLI::App& command);
+
+  compare::GrowthOptions options(const EmFlags& shared) const;
+};
+
+// Seed-and-grow's options (--method ijiri).
+struct IjiriFlags {
+  std::string rotation = "none", flips, seeds, priority, weights = "1,1,100", show;
+  bool no_relax = false;
+
+  void add_to(CLI::App& command);
+
+  compare::SeedGrowthOptions options(const geometry::Scene& exemplar,
+                                     const std::string& orientation, const std::string& overlap,
+                                     const geometry::Domain& domain) const;
+};
+
+// Draws the exemplar's connectivity to an .svg (--show-connectivity).
+void show_connectivity(const compare::SeedGrowthExemplar& exemplar, const std::string& file);
+
+}  // namespace shapeproc::cli
