@@ -34,6 +34,8 @@ for file in "$@"; do
     extra=()
     [ "$variant" = ma-em-physics ] && extra=(--physics)
     [ "$variant" = davison-shapes ] || [ "$variant" = ijiri-shapes ] && extra=(--overlap shapes)
+    [ "$variant" = ijiri-circles ] && extra=(--overlap circles)
+    method=${method%-circles}
     output="out/compare/$name-$variant.svg"
     start=$(date +%s.%N)
     if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" "${extra[@]}" \

@@ -48,6 +48,17 @@ const geometry::Proxy2& proxy_of(Growth& g, int shape, double angle) {
 // Whether a copy of exemplar element `source` turned by `angle` at `p` would overlap an element
 // other than `skip`.
 bool overlaps(Growth& g, int source, double angle, const Vec3& p, int skip) {
+  if (g.options.circle_overlap) {
+    const double r = g.exemplar.circle_radius[static_cast<std::size_t>(source)];
+    for (const int o : g.graph.within(g.graph.domain().wrap(p), r + g.largest_circle)) {
+      const GrowthNode& other = g.graph.node(o);
+      if (o == skip || other.seed()) continue;
+      const double reach = r + g.exemplar.circle_radius[static_cast<std::size_t>(other.source)];
+      if (g.graph.domain().minimum_image(other.position - p).squaredNorm() < reach * reach)
+        return true;
+    }
+    return false;
+  }
   const int shape = g.exemplar.scene.elements[static_cast<std::size_t>(source)].shape;
   const double radius = g.exemplar.shape_radius[static_cast<std::size_t>(shape)];
   for (const int o : g.graph.within(g.graph.domain().wrap(p), radius + g.largest_radius)) {
@@ -85,7 +96,7 @@ RingMatch match_seed(Growth& g, int s, std::vector<int>& ring, core::Random& ran
                            ? g.options.field.angle_at(g.graph.node(s).position)
                            : 0.0;
   MatchFilter accept;
-  if (g.options.exact_overlap) {
+  if (g.options.exact_overlap || g.options.circle_overlap) {
     const Vec3 p = g.graph.node(s).position;
     accept = [&g, p, s](const ReferenceRing& reference, double angle) {
       return !overlaps(g, reference.element, snapped(g, angle), p, s);
@@ -196,7 +207,7 @@ int next_seed(Growth& g) {
 
 // With exact overlaps, the relaxation's moves must not make elements overlap.
 MoveFilter move_filter(Growth& g) {
-  if (!g.options.exact_overlap) return {};
+  if (!g.options.exact_overlap && !g.options.circle_overlap) return {};
   return [&g](int n, const Vec3& p) {
     const GrowthNode& node = g.graph.node(n);
     return node.seed() || !overlaps(g, node.source, node.angle, p, n);

@@ -39,7 +39,8 @@ struct Growth {
   long long elements = 0;
   // With exact overlaps: proxies per (shape, turn step), made when first needed.
   std::map<std::pair<int, long>, geometry::Proxy2> proxies;
-  double largest_radius = 0.0;
+  double largest_radius = 0.0;  // of the shapes' bounding circles
+  double largest_circle = 0.0;  // of the elements' circles of the circle overlap test
 
   int priority(int node) const {
     const int s = graph.node(node).symbol;

@@ -58,7 +58,8 @@ SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
   if (exemplar.elements.size() < 3)
     throw core::ArgumentError("seed-and-grow", "the exemplar needs at least 3 elements");
   SeedGrowthExemplar ex{
-      exemplar, geometry::Domain(exemplar.window, 2, boundary), {}, {}, {}, {}, {}, 0.0, 0.0, {}};
+      exemplar, geometry::Domain(exemplar.window, 2, boundary), {}, {}, {}, {}, {}, 0.0, 0.0, {},
+      {}};
   std::vector<Vec3> positions;
   for (const geometry::Element& e : exemplar.elements)
     positions.push_back(ex.domain.wrap(e.position));
@@ -89,6 +90,11 @@ SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
   ex.density = static_cast<double>(positions.size()) / ex.domain.measure();
   for (const geometry::Shape& shape : exemplar.shapes)
     ex.shape_radius.push_back(0.5 * geometry::bounding_box(shape).sizes().norm());
+  for (std::size_t e = 0; e < positions.size(); ++e) {
+    double r = ex.shape_radius[static_cast<std::size_t>(exemplar.elements[e].shape)];
+    for (const Vec3& o : ex.connectivity.rings[e].offset) r = std::min(r, 0.5 * o.norm());
+    ex.circle_radius.push_back(r);
+  }
   return ex;
 }
 
@@ -148,9 +154,11 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
            {},
            0,
            {},
+           0.0,
            0.0};
   g.weights = {options_.w1, options_.w2, options_.w3, l};
   for (const double r : exemplar_.shape_radius) g.largest_radius = std::max(g.largest_radius, r);
+  for (const double r : exemplar_.circle_radius) g.largest_circle = std::max(g.largest_circle, r);
   g.neighbourhood = std::min(5.0 * l, 3.2 * exemplar_.longest_edge);
   if (!options_.priority.empty()) {
     g.symbol_priority.assign(exemplar_.by_symbol.size(), 0);
@@ -217,15 +225,16 @@ synthesis::SynthesisResult SeedAndGrow::synthesize(core::Random& random,
   result.record.steps = g.counters.steps;
   result.record.stationary = true;
   const auto count = [](long long v) { return std::to_string(v); };
-  result.counters = {{"growth steps", count(g.counters.steps)},
-                     {"seeds merged (l_short)", count(g.counters.merged)},
-                     {"seeds dropped by the angle test", count(g.counters.angle)},
-                     {"seeds dropped by edge crossings", count(g.counters.crossing)},
-                     {"seeds outside the domain", count(g.counters.outside)},
-                     {"extra seeds (l_long)", count(g.counters.extra)},
-                     {options_.exact_overlap ? "seeds left without a match that fits"
-                                             : "seeds left without a match",
-                      count(g.counters.dropped)}};
+  result.counters = {
+      {"growth steps", count(g.counters.steps)},
+      {"seeds merged (l_short)", count(g.counters.merged)},
+      {"seeds dropped by the angle test", count(g.counters.angle)},
+      {"seeds dropped by edge crossings", count(g.counters.crossing)},
+      {"seeds outside the domain", count(g.counters.outside)},
+      {"extra seeds (l_long)", count(g.counters.extra)},
+      {options_.exact_overlap || options_.circle_overlap ? "seeds left without a match that fits"
+                                                         : "seeds left without a match",
+       count(g.counters.dropped)}};
   if (g.elements > limit)
     result.counters.emplace_back("stopped", "at " + count(limit) + " elements (4x the expected)");
   return result;

@@ -17,7 +17,7 @@
 //    their distance in the reference ring), an extra seed without symbol id goes between them on
 //    the bisector, as far out as the two on average;
 // 4. relaxes the rings near the step (ring_relaxation, eq. 5), the first element held.
-// With `exact_overlap`, steps 2 and 4 skip what would make shapes overlap (touching is allowed).
+// With an overlap test, steps 2 and 4 skip what would make elements overlap.
 // Growth ends when no seed is left; the rings are then relaxed over the whole output. A seed
 // whose partial ring is larger than every reference ring of its symbol (it is surrounded) is
 // dropped; the paper's "simply ignore such reference elements" leaves it nothing to match.
@@ -53,6 +53,9 @@ struct SeedGrowthOptions {
   // that overlaps. Turned copies are then turned in steps of 0.5 degrees, so that the shapes
   // tested (kept per step) are the shapes drawn.
   bool exact_overlap = false;
+  // Or, as region growing's default: bounding circles of half each exemplar element's nearest
+  // ring distance (the exemplar itself then has no overlap).
+  bool circle_overlap = false;
 };
 
 const char* to_string(RotationMode mode);
@@ -68,8 +71,10 @@ struct SeedGrowthExemplar {
   std::vector<std::vector<int>> by_symbol;  // reference indices per symbol
   std::vector<int> all;                     // every reference index
   double longest_edge = 0.0;
-  double density = 0.0;              // elements per unit area
-  std::vector<double> shape_radius;  // per shape: its bounding circle
+  double density = 0.0;               // elements per unit area
+  std::vector<double> shape_radius;   // per shape: its bounding circle
+  std::vector<double> circle_radius;  // per element: half its nearest ring distance  // per shape:
+                                      // its bounding circle
 };
 
 // Throws core::ArgumentError for a 3D exemplar, fewer than 3 elements, bad flips, or an exemplar

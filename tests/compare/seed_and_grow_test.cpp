@@ -194,5 +194,38 @@ TEST(SeedAndGrow, ExactOverlapsKeepLongShapesApart) {
   EXPECT_GT(b.scene.elements.size(), 150u);  // 240 at the exemplar's density
 }
 
+TEST(SeedAndGrow, CircleOverlapsKeepBoundingCirclesApart) {
+  // With circles, no two elements come closer than their radii (half each exemplar element's
+  // nearest ring distance) allow; without, dots-random grows some that do.
+  const geometry::Scene exemplar = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  const Domain domain = Domain::from_sizes({400, 400}, Boundary::torus);
+  const auto too_close = [&](const SeedAndGrow& method, const geometry::Scene& scene) {
+    // Output elements keep their exemplar shape; a shape may be shared by several exemplar
+    // elements, so take the smallest circle of its shape.
+    std::vector<double> radius(exemplar.shapes.size(), 1e300);
+    for (std::size_t e = 0; e < exemplar.elements.size(); ++e) {
+      double& r = radius[static_cast<std::size_t>(exemplar.elements[e].shape)];
+      r = std::min(r, method.exemplar().circle_radius[e]);
+    }
+    int pairs = 0;
+    for (std::size_t i = 0; i < scene.elements.size(); ++i)
+      for (std::size_t j = i + 1; j < scene.elements.size(); ++j) {
+        const double d =
+            domain.minimum_image(scene.elements[j].position - scene.elements[i].position).norm();
+        pairs += d < radius[static_cast<std::size_t>(scene.elements[i].shape)] +
+                         radius[static_cast<std::size_t>(scene.elements[j].shape)] - 1e-6;
+      }
+    return pairs;
+  };
+  SeedGrowthOptions options;
+  const SeedAndGrow plain(exemplar, Boundary::open, domain, options);
+  options.circle_overlap = true;
+  const SeedAndGrow circles(exemplar, Boundary::open, domain, options);
+  const auto a = testing::run(plain, 1), b = testing::run(circles, 1);
+  EXPECT_GT(too_close(plain, a.scene), 0);
+  EXPECT_EQ(too_close(circles, b.scene), 0);
+  EXPECT_GT(b.scene.elements.size(), 60u);  // 120 at the exemplar's density
+}
+
 }  // namespace
 }  // namespace shapeproc::compare

@@ -169,7 +169,7 @@ TEST(CliSynthesizeIjiri, BadFilesAndFlagsGetOneLine) {
   expect_one_line_error(grow({"--rotation", "flow-field"}), 2, "--orientation-field");
   expect_one_line_error(grow({"--weights", "1,2"}), 2, "--weights");
   expect_one_line_error(grow({"--show-connectivity", "c.png"}), 2, "--show-connectivity");
-  expect_one_line_error(grow({"--overlap", "circles"}), 2, "--overlap circles");
+  expect_one_line_error(grow({"--overlap", "round"}), 2, "--overlap");
   expect_one_line_error(grow({"--priority", "nope=2"}), 2, "no category 'nope'");
   expect_one_line_error(grow({"--ratio", "3"}), 2, "--ratio is for --method davison");
   expect_one_line_error(grow({"--iterations", "5"}), 2, "--iterations");

@@ -117,8 +117,9 @@ void GrowthFlags::add_overlap_to(CLI::App& command) {
   command
       .add_option("--overlap", overlap,
                   "davison, ijiri: overlap test of new elements: bounding circles (spheres; "
-                  "davison's default, as the paper), none (ijiri's default, as the paper) or "
-                  "the shapes themselves (ijiri: turns then snap to 0.5 degrees)")
+                  "davison's default, as the paper; half each exemplar element's nearest "
+                  "distance), none (ijiri's default, as the paper) or the shapes themselves "
+                  "(ijiri: turns then snap to 0.5 degrees)")
       ->check(CLI::IsMember({"circles", "shapes", "none"}));
 }
 
@@ -178,9 +179,8 @@ compare::SeedGrowthOptions IjiriFlags::options(const geometry::Scene& exemplar,
                                                const std::string& overlap,
                                                const geometry::Domain& domain) const {
   compare::SeedGrowthOptions o;
-  if (overlap == "circles")
-    throw core::UsageError("--overlap circles: --method ijiri tests shapes or none");
   o.exact_overlap = overlap == "shapes";
+  o.circle_overlap = overlap == "circles";
   o.rotation = compare::parse_rotation_mode(rotation);
   o.field = orientation_field(orientation, domain);
   if (o.rotation == compare::RotationMode::flow_field && o.field.empty())
