@@ -62,19 +62,20 @@ void BM_EmIteration(benchmark::State& state, const char* file, const char* categ
                                                 benchmark::Counter::kInvert);
 }
 
-// Region growing (Davison et al. 2018) of a square torus holding about 10,000 elements at the
-// exemplar's density; the paper reports 1,100 to 3,200 elements per second, the target is 10,000.
-void BM_RegionGrowing(benchmark::State& state, const char* file, bool tile, bool optimise) {
+// Growth of a square torus holding about 10,000 elements at the exemplar's density, one core:
+// region growing (Davison et al. 2018; the paper reports 1,100 to 3,200 elements per second, the
+// target is 10,000) and seed-and-grow (Ijiri et al. 2008; the paper: 1,000 elements in about 5 s,
+// the target is 5,000).
+template <class Method, class Options>
+void grow_torus(benchmark::State& state, const char* file, bool tile, const Options& options) {
   io::ReaderOptions reader;
   reader.tile = tile;
   const geometry::Scene exemplar = io::read_scene(data(file), reader);
   const double side = std::sqrt(10000.0 * exemplar.window_measure() /
                                 static_cast<double>(exemplar.elements.size()));
   const auto domain = geometry::Domain::from_sizes({side, side}, geometry::Boundary::torus);
-  compare::GrowthOptions options;
-  options.optimise = optimise;
-  const compare::RegionGrowing growth(
-      exemplar, tile ? geometry::Boundary::torus : geometry::Boundary::open, domain, options);
+  const Method growth(exemplar, tile ? geometry::Boundary::torus : geometry::Boundary::open, domain,
+                      options);
   double elements = 0.0;
   for (auto _ : state) {
     core::Random random(1);
@@ -85,28 +86,16 @@ void BM_RegionGrowing(benchmark::State& state, const char* file, bool tile, bool
       benchmark::Counter(elements, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// Seed-and-grow (Ijiri et al. 2008) of a square torus holding about 10,000 elements at the
-// exemplar's density; the paper: 1,000 elements in about 5 s (1 s without relaxation). Target
-// 5,000 elements per second.
+void BM_RegionGrowing(benchmark::State& state, const char* file, bool tile, bool optimise) {
+  compare::GrowthOptions options;
+  options.optimise = optimise;
+  grow_torus<compare::RegionGrowing>(state, file, tile, options);
+}
+
 void BM_SeedAndGrow(benchmark::State& state, const char* file, bool tile, bool relax) {
-  io::ReaderOptions reader;
-  reader.tile = tile;
-  const geometry::Scene exemplar = io::read_scene(data(file), reader);
-  const double side = std::sqrt(10000.0 * exemplar.window_measure() /
-                                static_cast<double>(exemplar.elements.size()));
-  const auto domain = geometry::Domain::from_sizes({side, side}, geometry::Boundary::torus);
   compare::SeedGrowthOptions options;
   options.relax = relax;
-  const compare::SeedAndGrow growth(
-      exemplar, tile ? geometry::Boundary::torus : geometry::Boundary::open, domain, options);
-  double elements = 0.0;
-  for (auto _ : state) {
-    core::Random random(1);
-    elements = static_cast<double>(growth.synthesize(random, {}).scene.elements.size());
-  }
-  state.counters["elements"] = elements;
-  state.counters["elements_per_s"] =
-      benchmark::Counter(elements, benchmark::Counter::kIsIterationInvariantRate);
+  grow_torus<compare::SeedAndGrow>(state, file, tile, options);
 }
 
 }  // namespace

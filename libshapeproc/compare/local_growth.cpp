@@ -4,18 +4,13 @@
 #include <cmath>
 
 #include "libshapeproc/compare/element_reconstruction.hpp"
+#include "libshapeproc/compare/orientation_field.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/overlap_depth.hpp"
 
 namespace shapeproc::compare {
 
 namespace {
-
-Vec3 turn(const Vec3& v, double angle) {
-  if (angle == 0.0) return v;
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0.0};
-}
 
 // The smaller angle between two directions, in [0, π].
 double angle_between(const Vec3& a, const Vec3& b) {
@@ -118,7 +113,7 @@ double smallest_edge_angle(const Growth& g, int s, const Vec3& d) {
 // node within l_short, or -1 when a heuristic drops it).
 int place_ring_member(Growth& g, int s, const ReferenceRing& ref, std::size_t j, double angle) {
   const std::size_t m = ref.offset.size();
-  const Vec3 want = turn(ref.offset[j], angle);
+  const Vec3 want = turn_about_z(ref.offset[j], angle);
   const Vec3 q = g.graph.node(s).position + want;
   if (!g.graph.in_domain(q)) {
     ++g.counters.outside;
@@ -234,7 +229,7 @@ bool grow(Growth& g, int s, core::Random& random) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const std::size_t j = (static_cast<std::size_t>(match.shift) + i) % m;
     slot[j] = ring[i];
-    g.graph.set_desired(s, ring[i], turn(ref.offset[j], match.angle));
+    g.graph.set_desired(s, ring[i], turn_about_z(ref.offset[j], match.angle));
   }
   for (std::size_t i = ring.size(); i < m; ++i) {
     const std::size_t j = (static_cast<std::size_t>(match.shift) + i) % m;
