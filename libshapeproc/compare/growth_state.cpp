@@ -22,7 +22,7 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
       domain_(domain),
       largest_radius_(largest(exemplar.radius)),
       reach_(std::max(
-          {exemplar.em.radius, 2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius)})),
+          {largest(exemplar.reach), 2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius)})),
       elements_(domain.box(), domain.dimension(), reach_, domain.periodic()),
       free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
 
@@ -139,7 +139,7 @@ void GrowthState::consume_free_points(int e) {
 
 geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
   geometry::Neighbourhood out;
-  const double r2 = exemplar_.em.radius * exemplar_.em.radius;
+  const double r2 = exemplar_.reach_of(source(e)) * exemplar_.reach_of(source(e));
   elements_.for_each_candidate(position(e), [&](int o) {
     if (o == e) return;
     const Vec3 offset = domain_.minimum_image(position(o) - position(e));

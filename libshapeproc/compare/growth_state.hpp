@@ -19,17 +19,27 @@
 
 namespace shapeproc::compare {
 
-// What growth learns from the exemplar once.
+// What growth learns from the exemplar once. Every exemplar element carries its own parameters
+// (Davison §4.1), so that exemplars of different scales can grow together from one palette
+// (growth_palette.hpp): `em`'s global radius and spacing are those of the first exemplar only.
 struct GrowthExemplar {
   EmExemplar em;                                   // single-sample elements, neighbourhoods
   SimilaritySets sets;                             // co(e), k per element
-  std::vector<double> radius;                      // bounding radius per exemplar element
+  std::vector<double> radius;                      // bounding radius r_e per exemplar element
+  std::vector<double> reach;                       // neighbourhood radius r̄_e per element
+  std::vector<double> spacing;                     // its exemplar's mean nearest distance d̄
+  std::vector<int> part;                           // its exemplar's index in the palette
+  std::vector<double> part_density;                // per palette exemplar: elements per area
   std::vector<std::vector<FreeSpaceVector>> free;  // free(e)
   // With exact overlaps: per exemplar shape, its proxy (2D or 3D) and bounding-circle radius.
   bool exact = false;
   std::vector<geometry::Proxy2> proxy2;
   std::vector<geometry::Proxy3> proxy3;
   std::vector<double> shape_radius;
+
+  double reach_of(int e) const { return reach[static_cast<std::size_t>(e)]; }
+  double spacing_of(int e) const { return spacing[static_cast<std::size_t>(e)]; }
+  std::size_t parts() const { return part_density.size(); }
 };
 
 class GrowthState {
@@ -63,10 +73,10 @@ class GrowthState {
   // Moves element e to `p` (wrapped) and makes its free-space points again.
   void move(int e, const Vec3& p);
 
-  // Output elements within the neighbourhood radius of element e (itself excluded), as the
-  // neighbourhood metric takes them.
+  // Output elements within the neighbourhood radius of element e's source (itself excluded), as
+  // the neighbourhood metric takes them.
   geometry::Neighbourhood neighbourhood(int e) const;
-  // Indices of the elements within `distance` (at most the neighbourhood radius) of `p`.
+  // Indices of the elements within `distance` (at most the largest neighbourhood radius) of `p`.
   std::vector<int> elements_within(const Vec3& p, double distance) const;
 
  private:
@@ -83,7 +93,7 @@ class GrowthState {
   const GrowthExemplar& exemplar_;
   const geometry::Domain& domain_;
   double largest_radius_;
-  double reach_;  // the neighbourhood radius, at least twice the largest bounding radius
+  double reach_;  // the largest neighbourhood radius, at least twice the largest bounding radius
   std::vector<Vec3> position_;
   std::vector<int> source_, match_;
   std::vector<std::vector<int>> owned_;  // per element: its free-space points

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "libshapeproc/compare/element_reconstruction.hpp"
+#include "libshapeproc/compare/growth_palette.hpp"
 #include "libshapeproc/compare/position_assignment.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -49,9 +50,9 @@ std::vector<double> bounding_radii(const EmExemplar& em, double fixed) {
 
 constexpr int kAttempts = 2;
 
+// Per palette exemplar: the pairing threshold of generation, twice its mean bounding radius.
 struct Settings {
-  double alpha = 0.0;      // in the exemplar's units
-  double threshold = 0.0;  // pairing threshold of generation: twice the mean bounding radius
+  std::vector<double> threshold;
 };
 
 // The growing output, its horizon and what one chain needs.
@@ -81,12 +82,13 @@ double distance_to(const Growth& g, int e, const geometry::Neighbourhood& hood, 
                    std::vector<std::pair<int, int>>* pairs = nullptr,
                    double bound = std::numeric_limits<double>::infinity()) {
   const EmExemplar& em = g.exemplar.em;
+  const double alpha = g.options.alpha * g.exemplar.spacing_of(m) * g.exemplar.spacing_of(m);
   const double centre = em.sample_attribute[static_cast<std::size_t>(g.state.source(e))] !=
                                 em.sample_attribute[static_cast<std::size_t>(m)]
-                            ? g.settings.alpha
+                            ? alpha
                             : 0.0;
   return centre + geometry::neighbourhood_distance(hood, em.wide[static_cast<std::size_t>(m)],
-                                                   em.radius, g.settings.alpha, bound, pairs);
+                                                   g.exemplar.reach_of(m), alpha, bound, pairs);
 }
 
 void push_horizon(Growth& g, int e) {
@@ -99,12 +101,13 @@ void push_horizon(Growth& g, int e) {
   g.horizon.push_back(e);
 }
 
-// Step 0: the exemplar's most surrounded element and its neighbours, at the domain's centre.
-void place_initial_patch(Growth& g, core::Random& random) {
+// Step 0: exemplar `part`'s most surrounded element and its neighbours, at `centre`.
+void place_initial_patch(Growth& g, core::Random& random, int part, const Vec3& centre) {
   const EmExemplar& em = g.exemplar.em;
   std::vector<int> best;
   std::size_t most = 0;
   for (std::size_t s = 0; s < em.near.size(); ++s) {
+    if (g.exemplar.part[s] != part) continue;
     if (em.near[s].size() > most) best.clear();
     if (em.near[s].size() >= most) {
       most = em.near[s].size();
@@ -112,7 +115,7 @@ void place_initial_patch(Growth& g, core::Random& random) {
     }
   }
   const int c = best[random.index(best.size())];
-  const Vec3 centre = g.domain.box().center();
+  if (!g.state.in_domain(centre) || g.state.collides(c, centre)) return;
   push_horizon(g, g.state.add(c, centre));
   for (const geometry::Neighbour& n : em.near[static_cast<std::size_t>(c)]) {
     const Vec3 p = centre + n.offset;
@@ -125,7 +128,7 @@ void place_initial_patch(Growth& g, core::Random& random) {
 void prune_horizon(Growth& g) {
   std::vector<int> kept;
   for (const int h : g.horizon) {
-    if (g.state.free_point_within(g.state.position(h), g.exemplar.em.radius))
+    if (g.state.free_point_within(g.state.position(h), g.exemplar.reach_of(g.state.source(h))))
       kept.push_back(h);
     else
       g.in_horizon[static_cast<std::size_t>(h)] = 0;
@@ -137,13 +140,13 @@ void prune_horizon(Growth& g) {
 std::vector<int> select_seeds(const Growth& g, core::Random& random) {
   std::vector<int> order = g.horizon;
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.index(i)]);
-  const double apart = g.options.seed_separation * g.exemplar.em.radius;
+  const auto reach = [&](int e) { return g.exemplar.reach_of(g.state.source(e)); };
   std::vector<int> seeds;
   for (const int h : order) {
     bool free = true;
     for (const int s : seeds)
-      free =
-          free && g.domain.minimum_image(g.state.position(s) - g.state.position(h)).norm() >= apart;
+      free = free && g.domain.minimum_image(g.state.position(s) - g.state.position(h)).norm() >=
+                         g.options.seed_separation * std::max(reach(s), reach(h));
     if (free) seeds.push_back(h);
   }
   return seeds;
@@ -154,7 +157,9 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
                                             const geometry::Neighbourhood& hood, int m) {
   const geometry::Neighbourhood& near = g.exemplar.em.near[static_cast<std::size_t>(m)];
   std::vector<char> paired(near.size(), 0);
-  for (const auto& [a, b] : geometry::match_neighbourhoods(hood, near, g.settings.threshold))
+  const double threshold =
+      g.settings.threshold[static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)])];
+  for (const auto& [a, b] : geometry::match_neighbourhoods(hood, near, threshold))
     paired[static_cast<std::size_t>(b)] = 1;
   std::vector<std::pair<int, Vec3>> out;
   for (std::size_t i = 0; i < near.size(); ++i) {
@@ -181,7 +186,7 @@ int generate(Growth& g, int s) {
   // A candidate is a bad suggestion beyond c times the best distance; that distance is 0 where
   // the seed's neighbourhood is an exact copy, so (tolerance d̄)² per neighbour is added. The
   // limit only falls as candidates come, so each is measured only as far as it.
-  const double spacing = g.exemplar.em.spacing;
+  const double spacing = g.exemplar.spacing_of(g.state.source(s));
   const double slack = static_cast<double>(std::max<std::size_t>(hood.size(), 1)) *
                        g.options.tolerance * g.options.tolerance * spacing * spacing;
   double limit = std::numeric_limits<double>::infinity();
@@ -223,7 +228,6 @@ void gaussian_weights(std::vector<Prediction>& predictions, const std::vector<Ve
 
 // Step 4: least squares over the horizon and the elements near it.
 double optimise(Growth& g) {
-  const double r = g.exemplar.em.radius;
   std::vector<int> local(g.state.size(), -1);
   std::vector<int> unknowns;
   std::vector<double> anchors;
@@ -240,7 +244,8 @@ double optimise(Growth& g) {
   };
   for (const int h : g.horizon) enter(h, 0.0);
   for (const int h : g.horizon)
-    for (const int o : g.state.elements_within(g.state.position(h), r))
+    for (const int o :
+         g.state.elements_within(g.state.position(h), g.exemplar.reach_of(g.state.source(h))))
       enter(o, g.options.anchor_weight);
   const std::size_t movable = unknowns.size();
   std::vector<Prediction> predictions;
@@ -278,16 +283,17 @@ double optimise(Growth& g) {
                              offset, frozen ? g.options.frozen_weight : 1.0});
       moves.push_back(offset - o.offset);
     }
-    gaussian_weights(predictions, moves, g.exemplar.em.spacing * g.exemplar.em.spacing);
+    const double spacing = g.exemplar.spacing_of(g.state.source(e));
+    gaussian_weights(predictions, moves, spacing * spacing);
   }
   std::vector<Vec3> positions;
   for (const int e : unknowns) positions.push_back(g.state.position(e));
   const std::vector<Vec3> d = solve_positions(positions, predictions, g.domain, anchors);
-  const double still = 1e-3 * g.exemplar.em.spacing;  // smaller moves are not worth making
   for (std::size_t u = 0; u < movable; ++u) {
-    if (d[u].norm() <= still) continue;
-    // A move out of the domain or onto another element is not taken.
+    // Moves below a thousandth of the spacing are not worth making; a move out of the domain or
+    // onto another element is not taken.
     const int e = unknowns[u];
+    if (d[u].norm() <= 1e-3 * g.exemplar.spacing_of(g.state.source(e))) continue;
     const Vec3 to = positions[u] + d[u];
     if (g.state.in_domain(to) && !g.state.collides(g.state.source(e), to, e)) g.state.move(e, to);
   }
@@ -320,24 +326,56 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
       g.proxy2.push_back(geometry::make_proxy2(shape, proxy));
   }
   if (!g.exact) g.shape_radius.assign(g.shape_radius.size(), 0.0);
+  g.reach.assign(g.em.samples.size(), g.em.radius);
+  g.spacing.assign(g.em.samples.size(), g.em.spacing);
+  g.part.assign(g.em.samples.size(), 0);
+  g.part_density = {g.em.density};
   return g;
 }
 
+namespace {
+
+GrowthExemplar analyse_palette(const std::vector<GrowthSource>& sources,
+                               const GrowthOptions& options, int dimension) {
+  if (sources.empty()) throw core::ArgumentError("region growing", "no exemplar to grow from");
+  std::vector<GrowthExemplar> parts;
+  for (const GrowthSource& source : sources) {
+    if (source.scene.dimension != dimension)
+      throw core::ArgumentError("region growing",
+                                "an exemplar is " + std::to_string(source.scene.dimension) +
+                                    "D but the domain is " + std::to_string(dimension) + "D");
+    GrowthOptions own = options;
+    if (source.rings > 0) own.rings = source.rings;
+    if (source.bounding_radius >= 0) own.bounding_radius = source.bounding_radius;
+    parts.push_back(analyse_growth_exemplar(source.scene, source.boundary, own));
+  }
+  return parts.size() == 1 ? std::move(parts.front()) : merge_palette(std::move(parts));
+}
+
+}  // namespace
+
 RegionGrowing::RegionGrowing(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
                              geometry::Domain domain, GrowthOptions options)
-    : exemplar_(analyse_growth_exemplar(exemplar, exemplar_boundary, options)),
+    : RegionGrowing(std::vector<GrowthSource>{{exemplar, exemplar_boundary}}, std::move(domain),
+                    options) {}
+
+RegionGrowing::RegionGrowing(const std::vector<GrowthSource>& palette, geometry::Domain domain,
+                             GrowthOptions options)
+    : exemplar_(analyse_palette(palette, options, domain.dimension())),
       domain_(std::move(domain)),
-      options_(options) {
-  if (exemplar.dimension != domain_.dimension())
-    throw core::ArgumentError(
-        "region growing", "the exemplar is " + std::to_string(exemplar.dimension) +
-                              "D but the domain is " + std::to_string(domain_.dimension()) + "D");
-}
+      options_(options) {}
 
 std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options() const {
   const auto number = [](double v) { return core::format_number(v); };
-  return {{"growth.neighbourhood_rings", number(options_.rings)},
-          {"growth.radius", number(exemplar_.em.radius)},
+  // Per palette exemplar: its neighbourhood radius, the first sample of each part giving it.
+  std::string radii;
+  for (std::size_t s = 0, part = 0; s < exemplar_.part.size(); ++s) {
+    if (static_cast<std::size_t>(exemplar_.part[s]) != part) continue;
+    radii += (part++ ? "," : "") + number(exemplar_.reach[s]);
+  }
+  return {{"growth.palette", std::to_string(exemplar_.parts())},
+          {"growth.neighbourhood_rings", number(options_.rings)},
+          {"growth.radius", radii},
           {"growth.k", std::to_string(options_.k)},
           {"growth.alpha", number(options_.alpha)},
           {"growth.ratio", number(options_.ratio)},
@@ -360,15 +398,29 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
            std::vector<char>(exemplar_.em.samples.size(), 0),
            0,
            0};
-  double mean_radius = 0.0;
-  for (const double r : exemplar_.radius) mean_radius += r;
-  mean_radius /= static_cast<double>(exemplar_.radius.size());
-  g.settings.alpha = options_.alpha * exemplar_.em.spacing * exemplar_.em.spacing;
-  g.settings.threshold = 2.0 * mean_radius;
-  const double expected = exemplar_.em.density * domain_.measure();
+  const std::size_t parts = exemplar_.parts();
+  std::vector<double> sum(parts, 0.0), count(parts, 0.0);
+  for (std::size_t s = 0; s < exemplar_.radius.size(); ++s) {
+    sum[static_cast<std::size_t>(exemplar_.part[s])] += exemplar_.radius[s];
+    count[static_cast<std::size_t>(exemplar_.part[s])] += 1.0;
+  }
+  double expected = 0.0;
+  for (std::size_t p = 0; p < parts; ++p) {
+    g.settings.threshold.push_back(2.0 * sum[p] / count[p]);
+    expected += exemplar_.part_density[p] * domain_.measure() / static_cast<double>(parts);
+  }
 
   synthesis::SynthesisResult result;
-  place_initial_patch(g, random);
+  // One initial patch per palette exemplar, spread along the domain's longest axis.
+  const geometry::Box3& box = domain_.box();
+  int axis = 0;
+  box.sizes().maxCoeff(&axis);
+  for (std::size_t p = 0; p < parts; ++p) {
+    Vec3 centre = box.center();
+    centre[axis] = box.min()[axis] +
+                   (static_cast<double>(p) + 0.5) / static_cast<double>(parts) * box.sizes()[axis];
+    place_initial_patch(g, random, static_cast<int>(p), centre);
+  }
   for (;;) {
     if (control.cancelled()) throw core::Cancelled();
     prune_horizon(g);

@@ -35,6 +35,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "libshapeproc/compare/growth_state.hpp"
 #include "libshapeproc/synthesis/synthesizer.hpp"
@@ -63,10 +64,23 @@ struct GrowthOptions {
 GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
                                        const GrowthOptions& options);
 
+// One exemplar of a palette, with its own parameters where they differ from the options'.
+struct GrowthSource {
+  geometry::Scene scene;
+  geometry::Boundary boundary = geometry::Boundary::open;
+  double rings = 0.0;             // > 0: its neighbourhood in rings of its own spacing
+  double bounding_radius = -1.0;  // >= 0: its elements' bounding radius (0: automatic)
+};
+
 class RegionGrowing : public synthesis::Synthesizer {
  public:
   RegionGrowing(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
                 geometry::Domain domain, GrowthOptions options);
+  // Davison's example palette: each exemplar grows from its own initial patch (spread along the
+  // domain's longest axis) with its own per-element parameters, and the regions meet where they
+  // run into each other. Throws core::ArgumentError for an exemplar of another dimension.
+  RegionGrowing(const std::vector<GrowthSource>& palette, geometry::Domain domain,
+                GrowthOptions options);
 
   std::string method() const override { return "region-growing"; }
   synthesis::SynthesisResult synthesize(core::Random& random,

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
+#include "libshapeproc/compare/growth_palette.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "tests/compare/compare_scenes.hpp"
@@ -61,6 +63,66 @@ TEST(RegionGrowing, FillsAnOpenDomainWithoutOverlapsAndRepeats) {
     EXPECT_EQ(a.scene.elements[i].position, b.scene.elements[i].position);
   EXPECT_FALSE(a.scene.elements.size() == c.scene.elements.size() &&
                a.scene.elements.back().position == c.scene.elements.back().position);
+}
+
+TEST(GrowthPalette, EachExemplarKeepsItsOwnParameters) {
+  // Lattices of spacing 10 and 25: every element keeps its own exemplar's neighbourhood radius
+  // (2.5 spacings), spacing and bounding radius, and its candidates stay in its own exemplar.
+  const GrowthExemplar small = analyse_growth_exemplar(
+      testing::rectangle_lattice(6, 10.0, 3.0, 3.0), Boundary::torus, GrowthOptions{});
+  const GrowthExemplar large = analyse_growth_exemplar(
+      testing::rectangle_lattice(4, 25.0, 8.0, 8.0), Boundary::torus, GrowthOptions{});
+  const std::size_t n = small.em.samples.size();
+  const GrowthExemplar palette = merge_palette({small, large});
+  ASSERT_EQ(palette.parts(), 2u);
+  ASSERT_EQ(palette.em.samples.size(), n + large.em.samples.size());
+  ASSERT_EQ(palette.em.scene.categories.size(), 2u);
+  EXPECT_EQ(palette.em.scene.categories[1].name, "a #2");
+  for (std::size_t s = 0; s < palette.em.samples.size(); ++s) {
+    const bool second = s >= n;
+    EXPECT_EQ(palette.part[s], second ? 1 : 0);
+    EXPECT_DOUBLE_EQ(palette.reach[s], second ? 62.5 : 25.0);
+    EXPECT_DOUBLE_EQ(palette.spacing[s], second ? 25.0 : 10.0);
+    EXPECT_DOUBLE_EQ(palette.radius[s], second ? 12.5 : 5.0);
+    EXPECT_EQ(
+        palette.em.scene.elements[static_cast<std::size_t>(palette.em.samples.element[s])].category,
+        second ? 1 : 0);
+    for (const int m : palette.sets.sets[s]) EXPECT_EQ(static_cast<std::size_t>(m) >= n, second);
+    for (const geometry::Neighbour& o : palette.em.wide[s].neighbours())
+      EXPECT_EQ(static_cast<std::size_t>(o.element) >= n, second);
+    EXPECT_EQ(palette.free[s].size(), (second ? large : small).free[second ? s - n : s].size());
+  }
+  EXPECT_NE(palette.em.attribute.front(), palette.em.attribute.back());
+}
+
+TEST(RegionGrowing, APaletteGrowsTwoLatticesAtTheirOwnScales) {
+  const Domain domain = Domain::from_sizes({300, 150}, Boundary::open);
+  const std::vector<GrowthSource> palette{
+      {testing::rectangle_lattice(6, 10.0, 3.0, 3.0), Boundary::torus},
+      {testing::rectangle_lattice(4, 25.0, 8.0, 8.0), Boundary::torus}};
+  const RegionGrowing growth(palette, domain, GrowthOptions{});
+  const geometry::Scene out = run(growth, 4).scene;
+  std::vector<std::vector<Vec3>> by_part(2);
+  for (const geometry::Element& e : out.elements)
+    by_part[static_cast<std::size_t>(e.category)].push_back(e.position);
+  // Each grew over a good part of its half of the domain.
+  EXPECT_GT(by_part[0].size(), 0.3 * 150 * 150 / 100.0);
+  EXPECT_GT(by_part[1].size(), 0.3 * 150 * 150 / 625.0);
+  // Each is a lattice of its own spacing: nearest same-part distances within 5% of it.
+  for (std::size_t p = 0; p < 2; ++p) {
+    const double spacing = p == 0 ? 10.0 : 25.0;
+    int on = 0;
+    for (std::size_t i = 0; i < by_part[p].size(); ++i) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < by_part[p].size(); ++j)
+        if (j != i) nearest = std::min(nearest, (by_part[p][j] - by_part[p][i]).norm());
+      on += std::abs(nearest - spacing) < 0.05 * spacing;
+    }
+    EXPECT_GE(on, 0.9 * static_cast<double>(by_part[p].size())) << "part " << p;
+  }
+  // Where the two meet, their bounding circles (5 and 12.5) do not overlap.
+  for (const Vec3& a : by_part[0])
+    for (const Vec3& b : by_part[1]) EXPECT_GE((a - b).norm(), 17.5 - 1e-9);
 }
 
 TEST(RegionGrowing, GrowsIn3D) {

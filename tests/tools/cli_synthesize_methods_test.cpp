@@ -131,6 +131,36 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
       "--k is for --method ma-em or davison");
 }
 
+TEST(CliSynthesizeDavison, APaletteGrowsTwoExemplarsSideBySide) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("palette.svg").string();
+  const std::string crescents = data("svg/crescents-grid.svg");
+  const std::string dots = data("svg/dots-random.svg");
+  const auto grow = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"synthesize", crescents, "--method", "davison", "-o",
+                                     out,          "--size",  "600,300",  "--seed",  "1"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args);
+  };
+  const Result r = grow({"--palette", dots, "--palette-neighbourhood", "1.5", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // Each exemplar's neighbourhood radius at its own spacing and rings.
+  EXPECT_NE(r.out.find("region growing: 25 exemplar elements"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("palette: 30 exemplar elements"), std::string::npos) << r.out;
+  const std::string svg = testing::read_file(out);
+  for (const char* part : {"&quot;palette&quot;", "growth.palette&quot;,&quot;2", "dots-random"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  const Result stats = run_cli({"stats", out, "--category-by", "fill", "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_GT(nlohmann::json::parse(stats.out).at("elements").get<double>(), 100.0);
+
+  expect_one_line_error(grow({"--palette-neighbourhood", "2"}), 2, "they need --palette");
+  expect_one_line_error(grow({"--palette", dir.write("bad.svg", "<svg").string()}), 2, "bad.svg");
+  expect_one_line_error(
+      run_cli({"synthesize", crescents, "-o", out, "--size", "100,100", "--palette", dots}), 2,
+      "--palette is for --method davison");
+}
+
 TEST(CliSynthesizeIjiri, GrowsATileWithFlipsSeedsAndItsRecord) {
   const testing::TempDir dir;
   const std::string out = dir.file("seeded.svg").string();

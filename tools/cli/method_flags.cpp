@@ -137,6 +137,19 @@ void GrowthFlags::add_to(CLI::App& command) {
       ->check(non_negative_number());
   command.add_flag("--no-optimise", no_optimise,
                    "davison: grow without the least-squares relaxation of the front");
+  command.add_option("--palette", palette,
+                     "davison: a second exemplar (read as the first) grown beside it, each with "
+                     "its own neighbourhood and bounding radii, from the two halves of the "
+                     "domain's longest axis until they meet (Davison's example palette)");
+  command
+      .add_option("--palette-neighbourhood", palette_rings,
+                  "davison: the second exemplar's neighbourhood in rings of its own spacing "
+                  "(default: --neighbourhood)")
+      ->check(CLI::Range(1e-9, 10.0));
+  command
+      .add_option("--palette-bounding-radius", palette_bounding_radius,
+                  "davison: the second exemplar's bounding radius (default: automatic)")
+      ->check(non_negative_number());
 }
 
 compare::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {

@@ -45,6 +45,9 @@ struct GrowthFlags {
   double bounding_radius = 0.0;
   bool no_optimise = false;
   std::string overlap;
+  // A second exemplar grown beside the first (Davison's palette), with its own parameters.
+  std::string palette;
+  double palette_rings = 0.0, palette_bounding_radius = -1.0;
 
   // --overlap, which ijiri takes too.
   void add_overlap_to(CLI::App& command);

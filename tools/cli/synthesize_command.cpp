@@ -3,6 +3,7 @@
 // of Davison et al. 2018 or the seed-and-grow of Ijiri et al. 2008, through the same domain,
 // chains, outputs and pictures. The methods' own flags are in method_flags.
 #include <memory>
+#include <vector>
 
 #include "libshapeproc/compare/neighbourhood_em.hpp"
 #include "libshapeproc/compare/region_growing.hpp"
@@ -161,16 +162,39 @@ void add_synthesize_command(CLI::App& app, Action& action,
           throw core::UsageError(
               "--iterations: --method davison grows until the domain is full; it takes no "
               "iteration count");
-        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
+        const geometry::Boundary boundary =
+            args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open;
+        std::vector<compare::GrowthSource> palette;
+        palette.reserve(2);  // `exemplar` stays valid
+        palette.push_back({io::read_scene(args->input, args->reader.options()), boundary});
+        const geometry::Scene& exemplar = palette.front().scene;
         args->sample.check(args->output, exemplar.dimension);
+        if (args->growth.palette.empty() &&
+            (args->growth.palette_rings > 0 || args->growth.palette_bounding_radius >= 0))
+          throw core::UsageError(
+              "--palette-neighbourhood, --palette-bounding-radius: they need --palette");
+        if (!args->growth.palette.empty()) {
+          palette.push_back({io::read_scene(args->growth.palette, args->reader.options()), boundary,
+                             args->growth.palette_rings, args->growth.palette_bounding_radius});
+          if (palette.back().scene.dimension != exemplar.dimension)
+            throw core::UsageError(args->growth.palette + ": --palette is " +
+                                   std::to_string(palette.back().scene.dimension) +
+                                   "D but the exemplar is " + std::to_string(exemplar.dimension) +
+                                   "D");
+          record.inputs.emplace_back("palette", args->growth.palette);
+        }
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
         args->sample.verbosity.stage("analysing the exemplar");
-        const compare::RegionGrowing method(
-            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
-            domain, args->growth.options(args->em));
-        out << "region growing: " << exemplar.elements.size()
-            << " exemplar elements, neighbourhood radius "
-            << core::format_number(method.exemplar().em.radius) << ' ' << exemplar.units << '\n';
+        const compare::RegionGrowing method(palette, domain, args->growth.options(args->em));
+        const compare::GrowthExemplar& grown = method.exemplar();
+        for (std::size_t s = 0, part = 0; s < grown.part.size(); ++s) {
+          if (static_cast<std::size_t>(grown.part[s]) != part) continue;
+          const std::size_t count = palette[part].scene.elements.size();
+          out << (part == 0 ? "region growing: " : "palette: ") << count
+              << " exemplar elements, neighbourhood radius " << core::format_number(grown.reach[s])
+              << ' ' << palette[part].scene.units << '\n';
+          ++part;
+        }
         for (auto& pair : flatten_options("reader", args->reader.to_json()))
           record.options.push_back(std::move(pair));
         args->sample.verbosity.stage("growing");
