@@ -23,14 +23,19 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
       largest_radius_(largest(exemplar.radius)),
       reach_(std::max(
           {largest(exemplar.reach), 2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius)})),
+      contact_(std::max(2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius))),
       elements_(domain.box(), domain.dimension(), reach_, domain.periodic()),
+      // No finer than a quarter neighbourhood radius: tiny bounding radii must not make a 3D grid
+      // of 256³ cells.
+      contacts_(domain.box(), domain.dimension(), std::max(contact_, 0.25 * reach_),
+                domain.periodic()),
       free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
 
 bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
 
 bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
   bool hit = false;
-  elements_.for_each_candidate(p, [&](int o) {
+  contacts_.for_each_candidate(p, [&](int o) {
     if (hit || o == skip) return;
     const double reach = radius + exemplar_.radius[static_cast<std::size_t>(source(o))];
     hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
@@ -48,7 +53,7 @@ bool GrowthState::collides(int source, const Vec3& p, int skip) const {
   };
   const std::size_t shape = shape_of(source);
   bool hit = false;
-  elements_.for_each_candidate(p, [&](int o) {
+  contacts_.for_each_candidate(p, [&](int o) {
     if (hit || o == skip) return;
     const auto other =
         static_cast<std::size_t>(elements[static_cast<std::size_t>(this->source(o))].shape);
@@ -91,6 +96,7 @@ int GrowthState::add(int source, const Vec3& p) {
   match_.push_back(source);
   owned_.emplace_back();
   elements_.insert(e, position_.back());
+  contacts_.insert(e, position_.back());
   consume_free_points(e);
   add_free_points(e);
   return e;
@@ -99,8 +105,10 @@ int GrowthState::add(int source, const Vec3& p) {
 void GrowthState::move(int e, const Vec3& p) {
   const auto i = static_cast<std::size_t>(e);
   elements_.remove(e, position_[i]);
+  contacts_.remove(e, position_[i]);
   position_[i] = domain_.wrap(p);
   elements_.insert(e, position_[i]);
+  contacts_.insert(e, position_[i]);
   for (const int v : owned_[i]) kill(static_cast<std::size_t>(v));
   owned_[i].clear();
   consume_free_points(e);
@@ -111,6 +119,7 @@ void GrowthState::kill(std::size_t point) {
   if (!points_[point].alive) return;
   points_[point].alive = false;
   --alive_;
+  free_.remove(static_cast<int>(point), points_[point].position);  // queries skip the dead
 }
 
 void GrowthState::add_free_points(int e) {
@@ -129,12 +138,14 @@ void GrowthState::add_free_points(int e) {
 void GrowthState::consume_free_points(int e) {
   const Vec3& p = position(e);
   const double r = exemplar_.radius[static_cast<std::size_t>(source(e))];
+  std::vector<int> covered;  // killed after the walk, which removes them from the grid
   free_.for_each_candidate(p, [&](int id) {
     const FreePoint& v = points_[static_cast<std::size_t>(id)];
     if (v.alive &&
         domain_.minimum_image(v.position - p).squaredNorm() < (v.radius + r) * (v.radius + r))
-      kill(static_cast<std::size_t>(id));
+      covered.push_back(id);
   });
+  for (const int id : covered) kill(static_cast<std::size_t>(id));
 }
 
 geometry::Neighbourhood GrowthState::neighbourhood(int e) const {

@@ -93,13 +93,16 @@ class GrowthState {
   const GrowthExemplar& exemplar_;
   const geometry::Domain& domain_;
   double largest_radius_;
-  double reach_;  // the largest neighbourhood radius, at least twice the largest bounding radius
+  double reach_;    // the largest neighbourhood radius, at least twice the largest bounding radius
+  double contact_;  // the farthest two elements can be apart and still overlap
   std::vector<Vec3> position_;
   std::vector<int> source_, match_;
   std::vector<std::vector<int>> owned_;  // per element: its free-space points
   std::vector<FreePoint> points_;
   std::size_t alive_ = 0;
-  geometry::NeighbourGrid elements_, free_;
+  // Elements by neighbourhood radius (neighbourhoods) and by contact distance (overlap tests,
+  // which then visit a few elements, not a neighbourhood's worth); free-space points.
+  geometry::NeighbourGrid elements_, contacts_, free_;
 };
 
 }  // namespace shapeproc::compare

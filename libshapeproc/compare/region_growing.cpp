@@ -22,6 +22,8 @@ void check_options(const GrowthOptions& o) {
   if (o.k < 1 || o.k > 100) throw core::ArgumentError("--k", "expected 1 to 100");
   if (!(o.alpha >= 0)) throw core::ArgumentError("--alpha", "the weight must be >= 0");
   if (!(o.ratio > 1.0)) throw core::ArgumentError("--ratio", "the ratio must be > 1");
+  if (!(o.seed_separation > 0 && o.seed_separation <= 1))
+    throw core::ArgumentError("region growing", "the seed separation must be in (0, 1]");
   if (!(o.bounding_radius >= 0))
     throw core::ArgumentError("--bounding-radius", "expected a radius >= 0");
 }
@@ -142,12 +144,20 @@ std::vector<int> select_seeds(const Growth& g, core::Random& random) {
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.index(i)]);
   const auto reach = [&](int e) { return g.exemplar.reach_of(g.state.source(e)); };
   std::vector<int> seeds;
+  std::vector<char> seed(g.state.size(), 0);
+  const double apart = g.options.seed_separation *
+                       *std::max_element(g.exemplar.reach.begin(), g.exemplar.reach.end());
   for (const int h : order) {
+    // Separations are at most the largest neighbourhood radius: the seeds to check are near.
     bool free = true;
-    for (const int s : seeds)
+    for (const int s : g.state.elements_within(g.state.position(h), apart)) {
+      if (!seed[static_cast<std::size_t>(s)]) continue;
       free = free && g.domain.minimum_image(g.state.position(s) - g.state.position(h)).norm() >=
                          g.options.seed_separation * std::max(reach(s), reach(h));
-    if (free) seeds.push_back(h);
+    }
+    if (!free) continue;
+    seeds.push_back(h);
+    seed[static_cast<std::size_t>(h)] = 1;
   }
   return seeds;
 }
