@@ -11,6 +11,7 @@
 #include "libshapeproc/io/svg_reader.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
+#include "tests/metrics/metric_scenes.hpp"
 
 namespace shapeproc::metrics {
 namespace {
@@ -24,31 +25,9 @@ io::ReaderOptions each_drawable() {
 }
 
 using geometry::Vec3;
-
-geometry::Scene point_scene(const std::vector<Vec3>& points, double width, double height) {
-  geometry::Scene scene;
-  scene.window = geometry::Box3(Vec3(0, 0, 0), Vec3(width, height, 0));
-  scene.categories.push_back({"default"});
-  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  for (const Vec3& p : points) scene.elements.push_back({0, 0, p});
-  return scene;
-}
-
-geometry::Scene lattice(double spacing, int columns, int rows) {
-  std::vector<Vec3> points;
-  for (int y = 0; y < rows; ++y)
-    for (int x = 0; x < columns; ++x)
-      points.emplace_back((x + 0.5) * spacing, (y + 0.5) * spacing, 0.0);
-  return point_scene(points, columns * spacing, rows * spacing);
-}
-
-geometry::Scene poisson(double width, double height, int count, std::uint64_t seed) {
-  core::Random random(seed);
-  std::vector<Vec3> points;
-  for (int i = 0; i < count; ++i)
-    points.emplace_back(random.uniform(0, width), random.uniform(0, height), 0.0);
-  return point_scene(points, width, height);
-}
+using testing::lattice;
+using testing::point_scene;
+using testing::poisson;
 
 StatisticsOptions torus(double range) {
   StatisticsOptions o;

@@ -1,0 +1,103 @@
+#include "libshapeproc/metrics/bond_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <vector>
+
+#include "libshapeproc/geometry/neighbour_grid.hpp"
+
+namespace shapeproc::metrics {
+
+namespace {
+
+using Complex = std::complex<double>;
+
+// The offsets to each element's `count` nearest others, nearest first: a grid whose cell holds
+// about 4 elements, searched again with larger cells for the few elements it leaves short.
+std::vector<std::vector<geometry::Vec3>> nearest_offsets(const std::vector<geometry::Vec3>& points,
+                                                         const geometry::Domain& domain,
+                                                         std::size_t count) {
+  std::vector<std::vector<geometry::Vec3>> out(points.size());
+  std::vector<std::size_t> short_of;
+  for (std::size_t i = 0; i < points.size(); ++i) short_of.push_back(i);
+  double cell =
+      2.0 * std::sqrt(domain.sizes().x() * domain.sizes().y() / static_cast<double>(points.size()));
+  const double largest = domain.sizes().head<2>().norm();
+  while (!short_of.empty()) {
+    geometry::NeighbourGrid grid(domain.box(), 2, cell, domain.periodic());
+    for (std::size_t i = 0; i < points.size(); ++i) grid.insert(static_cast<int>(i), points[i]);
+    std::vector<std::size_t> still;
+    for (const std::size_t i : short_of) {
+      std::vector<std::pair<double, geometry::Vec3>> near;
+      grid.for_each_candidate(points[i], [&](int j) {
+        if (static_cast<std::size_t>(j) == i) return;
+        const geometry::Vec3 d =
+            domain.minimum_image(points[static_cast<std::size_t>(j)] - points[i]);
+        near.emplace_back(d.squaredNorm(), d);
+      });
+      std::sort(near.begin(), near.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      // Only neighbours within the cell are sure to be the nearest.
+      std::size_t sure = 0;
+      while (sure < near.size() && near[sure].first <= cell * cell) ++sure;
+      if (sure < count && cell < largest) {
+        still.push_back(i);
+        continue;
+      }
+      for (std::size_t k = 0; k < std::min(count, near.size()); ++k)
+        out[i].push_back(near[k].second);
+    }
+    short_of = std::move(still);
+    cell *= 2.0;
+  }
+  return out;
+}
+
+}  // namespace
+
+BondOrder bond_order(const geometry::Scene& scene, geometry::Boundary boundary) {
+  if (!(scene.window.sizes().x() > 0 && scene.window.sizes().y() > 0))
+    throw std::invalid_argument("bond order: the scene's window is empty");
+  BondOrder out;
+  if (scene.elements.size() < 7) return out;
+  geometry::Box3 plane = scene.window;
+  plane.min().z() = plane.max().z() = 0.0;
+  const geometry::Domain domain(plane, 2, boundary);
+  std::vector<geometry::Vec3> points;
+  for (const geometry::Element& e : scene.elements)
+    points.push_back(domain.wrap(geometry::Vec3(e.position.x(), e.position.y(), 0.0)));
+  const auto near = nearest_offsets(points, domain, 6);
+  const auto measure = [&](std::size_t symmetry, double& global, double& local) {
+    // In an open window, an element nearer the edge than its n-th neighbour may miss nearer
+    // neighbours beyond it: it is no centre (unless no element is far enough in).
+    std::vector<std::size_t> centres;
+    for (std::size_t i = 0; i < near.size(); ++i) {
+      const geometry::Vec3& p = points[i];
+      const double edge = std::min({p.x() - plane.min().x(), plane.max().x() - p.x(),
+                                    p.y() - plane.min().y(), plane.max().y() - p.y()});
+      if (domain.periodic() || near[i][symmetry - 1].norm() <= edge) centres.push_back(i);
+    }
+    if (centres.empty())
+      for (std::size_t i = 0; i < near.size(); ++i) centres.push_back(i);
+    Complex sum = 0.0;
+    double magnitudes = 0.0;
+    for (const std::size_t i : centres) {
+      Complex psi = 0.0;
+      for (std::size_t k = 0; k < symmetry; ++k)
+        psi += std::polar(
+            1.0, static_cast<double>(symmetry) * std::atan2(near[i][k].y(), near[i][k].x()));
+      psi /= static_cast<double>(symmetry);
+      sum += psi;
+      magnitudes += std::abs(psi);
+    }
+    global = std::abs(sum) / static_cast<double>(centres.size());
+    local = magnitudes / static_cast<double>(centres.size());
+  };
+  measure(4, out.global4, out.local4);
+  measure(6, out.global6, out.local6);
+  return out;
+}
+
+}  // namespace shapeproc::metrics
