@@ -15,7 +15,7 @@ declare -A allowed=(
   [fit]="core geometry model synthesis sample"
   [sample]="core geometry model synthesis"
   [metrics]="core geometry"
-  [report]="core geometry model synthesis render io metrics"
+  [report]="core geometry model synthesis render io metrics evaluation"
   [evaluation]="core geometry model synthesis sample fit metrics"
   [compare]="core geometry model synthesis fit"
 )

@@ -109,6 +109,58 @@ std::string strip_xml_declaration(const std::string& svg) {
   return start == std::string::npos ? svg : svg.substr(start);
 }
 
+// Each output's one-line summary, and a table of every check with its verdict per output.
+void write_verdicts(const Report& report, std::ostringstream& html) {
+  std::vector<std::string> metrics, rules;  // in order of first appearance
+  bool any = false;
+  for (const ReportScene& o : report.outputs) {
+    if (!o.verdicts) continue;
+    any = true;
+    for (const evaluation::Verdict& v : *o.verdicts)
+      if (std::find(metrics.begin(), metrics.end(), v.metric) == metrics.end()) {
+        metrics.push_back(v.metric);
+        rules.push_back(v.rule);
+      }
+  }
+  if (!any) return;
+  html << "<h2>Verdicts</h2>\n<ul>\n";
+  for (std::size_t i = 0; i < report.outputs.size(); ++i) {
+    const ReportScene& o = report.outputs[i];
+    if (!o.verdicts) continue;
+    const std::string line = evaluation::summary(*o.verdicts);
+    const bool fails = line.rfind("fails", 0) == 0;
+    html << "<li>output " << i + 1 << " (" << escape(o.label)
+         << "): " << (fails ? "<span class=\"bad\">" : "<span class=\"good\">") << escape(line)
+         << "</span></li>\n";
+  }
+  html << "</ul>\n<table>\n<tr><th>check</th><th>rule</th>";
+  for (std::size_t i = 0; i < report.outputs.size(); ++i) html << "<th>output " << i + 1 << "</th>";
+  html << "</tr>\n";
+  for (std::size_t m = 0; m < metrics.size(); ++m) {
+    html << "<tr><td>" << escape(metrics[m]) << "</td><td>" << escape(rules[m]) << "</td>";
+    for (const ReportScene& o : report.outputs) {
+      const evaluation::Verdict* found = nullptr;
+      if (o.verdicts)
+        for (const evaluation::Verdict& v : *o.verdicts)
+          if (v.metric == metrics[m]) found = &v;
+      if (!found) {
+        html << "<td>–</td>";
+        continue;
+      }
+      const char* mark = found->outcome == evaluation::Outcome::fail   ? "bad"
+                         : found->outcome == evaluation::Outcome::pass ? "good"
+                                                                       : "shown";
+      html << "<td class=\"" << mark << "\">" << escape(found->shown)
+           << (found->outcome == evaluation::Outcome::fail   ? " ✗ " + escape(found->problem)
+               : found->outcome == evaluation::Outcome::pass ? std::string(" ✓")
+                                                             : std::string())
+           << "</td>";
+    }
+    html << "</tr>\n";
+  }
+  html << "</table>\n<p>Each check's scale and rule: docs/metrics.md, \"Verdicts\".</p>\n";
+}
+
 void require(const ReportScene& s) {
   if (!s.scene || !s.statistics)
     throw core::ArgumentError("report", "a scene or its statistics are missing");
@@ -160,12 +212,15 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
           "#ddd; padding: 3px 10px; text-align: right; }\n"
        << "th:first-child, td:first-child { text-align: left; } .charts svg { margin: 0 1em 1em 0; "
           "}\n"
-       << ".bad { color: #c00; font-weight: bold; } .legend { font-size: 90%; } code { font-size: "
+       << ".bad { color: #c00; font-weight: bold; } .good { color: #070; } .legend { font-size: "
+          "90%; } code { font-size: "
           "90%; }\n"
        << "</style>\n</head>\n<body>\n";
   html << "<h1>" << escape(report.exemplar.label) << " and " << report.outputs.size() << " output"
        << (report.outputs.size() == 1 ? "" : "s") << "</h1>\n";
   if (!report.command.empty()) html << "<p><code>" << escape(report.command) << "</code></p>\n";
+
+  write_verdicts(report, html);
 
   html << "<h2>Pictures</h2>\n<p>One scale for all (" << num(scale, 3) << " px per " << escape(unit)
        << "); elements in a collision (shape distance 0) are drawn in red.</p>\n";

@@ -1,4 +1,5 @@
 // A self-contained HTML report comparing an exemplar with synthesised outputs (docs/report.md):
+// each output's verdicts (evaluation/verdicts.hpp) and a one-line summary at the top,
 // pictures at one scale with colliding elements in red, the interaction function, per-axis
 // distance CDFs, G(r) and g(r), a metrics table and timings. No network: charts are inline SVG,
 // pictures are PNGs beside index.html (rendered with Cairo).
@@ -9,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
@@ -23,6 +25,7 @@ struct ReportScene {
   const metrics::Comparison* comparison = nullptr;                // outputs only
   const metrics::NeighbourhoodDistance* neighbourhood = nullptr;  // outputs only
   std::string note;  // how it was made (seed, steps, boundary), when known
+  const std::vector<evaluation::Verdict>* verdicts = nullptr;  // outputs only, optional
 };
 
 struct Report {

@@ -6,6 +6,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/report/html_report.hpp"
 #include "tools/cli/commands.hpp"
@@ -58,13 +59,21 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
         evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
       }
 
+      std::vector<std::vector<evaluation::Verdict>> verdicts;
+      for (std::size_t i = 0; i < outputs.size(); ++i)
+        verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
+            exemplar.scene, exemplar.boundary, exemplar_eval.statistics, outputs[i].scene,
+            outputs[i].boundary, evals[i].statistics, *evals[i].comparison,
+            &*evals[i].neighbourhood)));
+
       report::Report r;
       r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics,
                     nullptr,        nullptr,         ""};
       for (std::size_t i = 0; i < outputs.size(); ++i) {
         r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics,
                              &*evals[i].comparison, &*evals[i].neighbourhood,
-                             outputs[i].record ? outputs[i].record->summary() : std::string()});
+                             outputs[i].record ? outputs[i].record->summary() : std::string(),
+                             &verdicts[i]});
       }
       r.model = model.get();
       r.model_label = args->model;
@@ -86,8 +95,21 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
       nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
                                 {"outputs", nlohmann::json::array()},
                                 {"options", flags.to_json()}};
-      for (std::size_t i = 0; i < outputs.size(); ++i)
-        metrics["outputs"].push_back(evaluation_json(outputs[i], evals[i]));
+      for (std::size_t i = 0; i < outputs.size(); ++i) {
+        nlohmann::json entry = evaluation_json(outputs[i], evals[i]);
+        entry["summary"] = evaluation::summary(verdicts[i]);
+        for (const evaluation::Verdict& v : verdicts[i])
+          entry["verdicts"].push_back(
+              {{"check", v.metric},
+               {"value", v.value},
+               {"shown", v.shown},
+               {"rule", v.rule},
+               {"outcome", v.outcome == evaluation::Outcome::pass   ? "pass"
+                           : v.outcome == evaluation::Outcome::fail ? "fail"
+                                                                    : "shown"},
+               {"problem", v.problem}});
+        metrics["outputs"].push_back(std::move(entry));
+      }
       std::filesystem::create_directories(args->directory);
       core::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
                                   [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
@@ -95,6 +117,9 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
           "reading and metrics, in total",
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       report::write_report(r, args->directory);
+      // The verdicts first: what a person would notice, one line per output.
+      for (std::size_t i = 0; i < outputs.size(); ++i)
+        out << args->outputs[i] << ": " << evaluation::summary(verdicts[i]) << '\n';
       out << "wrote " << (std::filesystem::path(args->directory) / "index.html").string() << " ("
           << outputs.size() + 1 << " pictures, metrics.json)\n";
       for (std::size_t i = 0; i < outputs.size(); ++i) {

@@ -1,0 +1,131 @@
+#include "libshapeproc/evaluation/shape_mix.hpp"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+#include "libshapeproc/evaluation/fidelity.hpp"
+#include "libshapeproc/fit/fit_thresholds.hpp"
+#include "libshapeproc/fit/shape_classes.hpp"
+#include "libshapeproc/geometry/path.hpp"
+
+namespace shapeproc::evaluation {
+
+namespace {
+
+// The size of a shape, unchanged by turning it: its radius about the centroid of its outline
+// points (vertices in 3D) and its filled area (2D; 0 in 3D and for points).
+struct Size {
+  double radius = 0.0, area = 0.0;
+};
+
+Size size_of(const geometry::Shape& shape) {
+  std::vector<geometry::Vec3> points;
+  double area = 0.0;
+  std::visit(
+      [&](const auto& g) {
+        using T = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<T, geometry::PlanarShape>) {
+          const double tolerance = 1e-3 * geometry::bounding_box(shape).sizes().norm();
+          for (const geometry::Drawable2& d : g.parts)
+            for (const geometry::Path2& path : d.paths) {
+              const std::vector<geometry::Vec2> line = geometry::flatten(path, tolerance);
+              for (const geometry::Vec2& p : line) points.emplace_back(p.x(), p.y(), 0.0);
+              if (d.filled()) area += geometry::signed_area(line);
+            }
+        } else if constexpr (std::is_same_v<T, geometry::MeshShape>) {
+          points = g.mesh.vertices;
+        }
+      },
+      shape.geometry);
+  Size s;
+  s.area = std::abs(area);
+  if (points.empty()) return s;
+  geometry::Vec3 centroid = geometry::Vec3::Zero();
+  for (const geometry::Vec3& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  for (const geometry::Vec3& p : points) s.radius = std::max(s.radius, (p - centroid).norm());
+  return s;
+}
+
+double size_distance(const Size& a, const Size& b) {
+  const double tiny = 1e-12;
+  return std::abs(std::log((a.radius + tiny) / (b.radius + tiny))) +
+         std::abs(std::log((a.area + tiny) / (b.area + tiny)));
+}
+
+}  // namespace
+
+ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& output) {
+  model::ShapeProcessModel skeleton = fit::model_skeleton(exemplar, fit::FitOptions{});
+  fit::assign_shape_classes(skeleton, exemplar);
+  // Classes: the exemplar's shape classes, or one per category where it has none.
+  ShapeMix mix;
+  std::vector<int> class_of_shape(exemplar.shapes.size(), -1);
+  std::vector<int> category_class(exemplar.categories.size(), -1);
+  if (!skeleton.shape_classes.empty()) {
+    for (const model::ShapeClass& c : skeleton.shape_classes)
+      mix.classes.push_back(exemplar.categories[static_cast<std::size_t>(c.category)].name +
+                            (c.label.empty() ? "" : ": " + c.label));
+    for (std::size_t s = 0; s < exemplar.shapes.size() && s < skeleton.shapes.size(); ++s)
+      class_of_shape[s] = skeleton.shapes[s].shape_class;
+  }
+  std::vector<int> element_class;
+  for (const geometry::Element& e : exemplar.elements) {
+    int c = class_of_shape[static_cast<std::size_t>(e.shape)];
+    if (c < 0) {  // a category of one class
+      int& own = category_class[static_cast<std::size_t>(e.category)];
+      if (own < 0) {
+        own = static_cast<int>(mix.classes.size());
+        mix.classes.push_back(exemplar.categories[static_cast<std::size_t>(e.category)].name);
+      }
+      c = own;
+    }
+    element_class.push_back(c);
+  }
+  mix.exemplar.assign(mix.classes.size(), 0);
+  mix.output.assign(mix.classes.size(), 0);
+  for (const int c : element_class) ++mix.exemplar[static_cast<std::size_t>(c)];
+
+  // Each exemplar shape's size, once; output shapes measured once each.
+  std::vector<Size> exemplar_size;
+  for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(size_of(s));
+  std::vector<Size> output_size;
+  for (const geometry::Shape& s : output.shapes) output_size.push_back(size_of(s));
+  for (const geometry::Element& o : output.elements) {
+    const std::string& name = output.categories[static_cast<std::size_t>(o.category)].name;
+    double best = std::numeric_limits<double>::infinity();
+    int chosen = -1;
+    for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
+      const geometry::Element& e = exemplar.elements[i];
+      if (exemplar.categories[static_cast<std::size_t>(e.category)].name != name) continue;
+      const double d = size_distance(output_size[static_cast<std::size_t>(o.shape)],
+                                     exemplar_size[static_cast<std::size_t>(e.shape)]);
+      if (d < best) {
+        best = d;
+        chosen = element_class[i];
+      }
+    }
+    if (chosen < 0)
+      ++mix.unmatched;
+    else
+      ++mix.output[static_cast<std::size_t>(chosen)];
+  }
+
+  // Pearson's chi-square of the output's counts against the exemplar's shares.
+  int total = 0;
+  for (const int n : mix.output) total += n;
+  const double exemplar_total = static_cast<double>(exemplar.elements.size());
+  if (mix.classes.size() < 2 || total == 0) return mix;
+  for (std::size_t c = 0; c < mix.classes.size(); ++c) {
+    const double expected = total * mix.exemplar[c] / exemplar_total;
+    const double gap = mix.output[c] - expected;
+    mix.chi_square += gap * gap / expected;
+  }
+  mix.degrees = static_cast<int>(mix.classes.size()) - 1;
+  mix.p_value = chi_square_upper_tail(mix.chi_square, mix.degrees);
+  return mix;
+}
+
+}  // namespace shapeproc::evaluation

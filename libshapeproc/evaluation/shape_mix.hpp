@@ -1,0 +1,27 @@
+// The shape mix of an output against its exemplar's (docs/metrics.md): does the output keep the
+// exemplar's shares of its kinds of shape? The kinds are the exemplar's shape classes, as a fit
+// makes them (fit/shape_classes.hpp: identical shapes, or size groups), within each category.
+// An output element, whatever method made it and however it was turned, joins the class of its
+// category whose shapes are nearest its own in size: the size of a shape is its radius about its
+// centroid and its filled area (2D), both unchanged by turning and moving it. The output's class
+// counts are then tested against the exemplar's shares by Pearson's chi-square.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "libshapeproc/geometry/scene.hpp"
+
+namespace shapeproc::evaluation {
+
+struct ShapeMix {
+  std::vector<std::string> classes;   // "category" or "category: class label"
+  std::vector<int> exemplar, output;  // elements per class
+  int unmatched = 0;                  // output elements of a category the exemplar does not have
+  double chi_square = 0.0, p_value = 1.0;
+  int degrees = 0;  // classes − 1; 0: nothing to test (a single class)
+};
+
+ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& output);
+
+}  // namespace shapeproc::evaluation

@@ -1,0 +1,180 @@
+#include "libshapeproc/evaluation/verdicts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace shapeproc::evaluation {
+
+namespace {
+
+std::string number(double v, int digits = 2) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+double total_intensity(const metrics::SceneStatistics& s) {
+  double sum = 0.0;
+  for (const double v : s.intensity) sum += v;
+  return sum;
+}
+
+Verdict density(const std::string& metric, double ratio) {
+  Verdict v{metric, ratio, "×" + number(ratio), "×0.8 to ×1.25", Outcome::pass, ""};
+  if (!(ratio >= 0.8)) v.problem = "too sparse";
+  if (ratio > 1.25) v.problem = "too dense";
+  if (!v.problem.empty()) v.outcome = Outcome::fail;
+  return v;
+}
+
+double overlap_share(const metrics::SceneStatistics& s) {
+  return s.elements() > 0 ? static_cast<double>(s.collisions.elements) / s.elements() : 0.0;
+}
+
+double touching_per_element(const metrics::SceneStatistics& s) {
+  return s.elements() > 0 ? static_cast<double>(s.collisions.touching.size()) / s.elements() : 0.0;
+}
+
+}  // namespace
+
+Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
+                            const metrics::SceneStatistics& exemplar_statistics,
+                            const geometry::Scene& output, geometry::Boundary output_boundary,
+                            const metrics::SceneStatistics& output_statistics,
+                            const metrics::Comparison& comparison,
+                            const metrics::NeighbourhoodDistance* neighbourhood) {
+  Judged j;
+  j.exemplar = &exemplar_statistics;
+  j.output = &output_statistics;
+  j.comparison = &comparison;
+  j.neighbourhood = neighbourhood;
+  j.exemplar_order = metrics::bond_order(exemplar, exemplar_boundary);
+  j.output_order = metrics::bond_order(output, output_boundary);
+  j.mix = shape_mix(exemplar, output);
+  return j;
+}
+
+std::vector<Verdict> judge(const Judged& j) {
+  std::vector<Verdict> out;
+  const metrics::SceneStatistics& ex = *j.exemplar;
+  const metrics::SceneStatistics& o = *j.output;
+
+  // Density, overall and per category (where there are several).
+  const double exemplar_total = total_intensity(ex);
+  out.push_back(density("density", exemplar_total > 0 ? total_intensity(o) / exemplar_total : 0));
+  if (o.categories.size() > 1 || ex.categories.size() > 1)
+    for (std::size_t c = 0; c < o.categories.size(); ++c)
+      if (c < j.comparison->intensity_ratio.size())
+        out.push_back(density("density: " + o.categories[c], j.comparison->intensity_ratio[c]));
+
+  // The shape mix.
+  if (j.mix.degrees > 0) {
+    Verdict v{"shape mix", j.mix.p_value, "p = " + number(j.mix.p_value, 3),
+              "p ≥ 0.01",  Outcome::pass, ""};
+    if (!(j.mix.p_value >= 0.01)) {
+      v.outcome = Outcome::fail;
+      v.problem = "the mix of shapes drifts";
+    }
+    // Name the class that drifted most.
+    double worst = 0.0;
+    int total = 0, exemplar_total_count = 0;
+    for (std::size_t c = 0; c < j.mix.classes.size(); ++c) {
+      total += j.mix.output[c];
+      exemplar_total_count += j.mix.exemplar[c];
+    }
+    for (std::size_t c = 0; c < j.mix.classes.size() && total > 0; ++c) {
+      const double share = static_cast<double>(j.mix.output[c]) / total;
+      const double wanted = static_cast<double>(j.mix.exemplar[c]) / exemplar_total_count;
+      if (std::abs(share - wanted) > worst) {
+        worst = std::abs(share - wanted);
+        v.shown = "p = " + number(j.mix.p_value, 3) + " (" + j.mix.classes[c] + " " +
+                  number(100 * share, 0) + "% against " + number(100 * wanted, 0) + "%)";
+      }
+    }
+    out.push_back(v);
+  }
+
+  // Overlaps and touching pairs.
+  {
+    const double share = overlap_share(o), wanted = overlap_share(ex);
+    Verdict v{"overlaps",
+              share,
+              number(100 * share, 1) + "% of elements",
+              "at most the exemplar's " + number(100 * wanted, 1) + "% + 1",
+              Outcome::pass,
+              ""};
+    if (share > wanted + 0.01) {
+      v.outcome = Outcome::fail;
+      v.problem = "elements overlap";
+    }
+    out.push_back(v);
+  }
+  {
+    const double per = touching_per_element(o), wanted = touching_per_element(ex);
+    const double slack = std::max(0.1, 0.5 * wanted);
+    Verdict v{"touching",
+              per,
+              number(per) + " pairs per element",
+              number(wanted) + " ± " + number(slack),
+              Outcome::pass,
+              ""};
+    if (std::abs(per - wanted) > slack) {
+      v.outcome = Outcome::fail;
+      v.problem = per > wanted ? "elements touch more often" : "contacts are lost";
+    }
+    out.push_back(v);
+  }
+
+  // Long-range order.
+  {
+    const double order = j.output_order.order(), wanted = j.exemplar_order.order();
+    Verdict v{"order",
+              order,
+              number(order) + " (ψ" + std::to_string(j.output_order.symmetry()) + ")",
+              number(wanted) + " ± 0.2",
+              Outcome::pass,
+              ""};
+    if (std::abs(order - wanted) > 0.2) {
+      v.outcome = Outcome::fail;
+      v.problem =
+          order < wanted ? "loses the exemplar's lattice" : "more regular than the exemplar";
+    }
+    out.push_back(v);
+  }
+
+  // Spacing: W1 of the nearest-neighbour distributions.
+  {
+    const double w1 = j.comparison->all.nearest;
+    Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, ""};
+    if (!(w1 <= 0.15)) {
+      v.outcome = Outcome::fail;
+      v.problem = "nearest distances differ";
+    }
+    out.push_back(v);
+  }
+
+  if (j.neighbourhood)
+    out.push_back({"neighbourhood", j.neighbourhood->normalised,
+                   number(j.neighbourhood->normalised) + " a²", "shown (lower is closer)",
+                   Outcome::shown, ""});
+  return out;
+}
+
+std::string summary(const std::vector<Verdict>& verdicts) {
+  std::string line;
+  int checks = 0, failures = 0;
+  for (const Verdict& v : verdicts) {
+    if (v.outcome == Outcome::shown) continue;
+    ++checks;
+    if (v.outcome != Outcome::fail) continue;
+    if (++failures > 3) continue;
+    if (!line.empty()) line += "; ";
+    line += v.metric + " " + v.shown + " (wanted " + v.rule + "): " + v.problem;
+  }
+  if (failures == 0) return "passes all " + std::to_string(checks) + " checks";
+  if (failures > 3) line += "; and " + std::to_string(failures - 3) + " more";
+  return "fails " + std::to_string(failures) + " of " + std::to_string(checks) + " checks: " + line;
+}
+
+}  // namespace shapeproc::evaluation

@@ -1,0 +1,66 @@
+// Verdicts on an output against its exemplar (docs/metrics.md#verdicts): what a person would
+// notice, each as a measured figure on a documented scale with a pass/fail rule, computed the
+// same way for every synthesis method.
+//
+//   density        output elements per unit area / the exemplar's, overall and per category:
+//                  passes within ×0.8 to ×1.25 ("too dense", "too sparse");
+//   shape mix      Pearson's chi-square of the output's shape-class counts against the
+//                  exemplar's shares (shape_mix.hpp): passes at p ≥ 0.01;
+//   overlaps       share of elements in an overlapping pair (shape-exact): passes at most one
+//                  percentage point above the exemplar's;
+//   touching       touching pairs per element: passes within ±max(0.1, half the exemplar's);
+//   order          long-range order max(|⟨ψ4⟩|, |⟨ψ6⟩|) (metrics/bond_order.hpp): passes within
+//                  ±0.2 of the exemplar's ("loses the exemplar's lattice", "more regular");
+//   spacing        W1 of the nearest-neighbour distributions over the exemplar's mean nearest
+//                  distance: passes at most 0.15;
+//   neighbourhood  Ma's average neighbourhood distance (Davison et al. eq. 5) in a², shown with
+//                  no rule: it has no scale that holds across exemplars (0 for a copy).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "libshapeproc/evaluation/shape_mix.hpp"
+#include "libshapeproc/metrics/bond_order.hpp"
+#include "libshapeproc/metrics/neighbourhood_distance.hpp"
+#include "libshapeproc/metrics/scene_statistics.hpp"
+
+namespace shapeproc::evaluation {
+
+enum class Outcome { pass, fail, shown };
+
+struct Verdict {
+  std::string metric;  // "density", "density: red", "shape mix", …
+  double value = 0.0;  // the figure the rule reads
+  std::string shown;   // the figure as the page shows it ("×1.46", "p = 0.003")
+  std::string rule;    // the rule, in words ("×0.8 to ×1.25")
+  Outcome outcome = Outcome::shown;
+  std::string problem;  // what a failure means, for the summary ("too dense")
+};
+
+// What the verdicts read: both scenes' statistics (the output's compared with the exemplar's),
+// their long-range order and the shape mix.
+struct Judged {
+  const metrics::SceneStatistics* exemplar = nullptr;
+  const metrics::SceneStatistics* output = nullptr;
+  const metrics::Comparison* comparison = nullptr;
+  const metrics::NeighbourhoodDistance* neighbourhood = nullptr;  // optional
+  metrics::BondOrder exemplar_order, output_order;
+  ShapeMix mix;
+};
+
+// Measures what the statistics do not hold (order, shape mix) and judges.
+Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
+                            const metrics::SceneStatistics& exemplar_statistics,
+                            const geometry::Scene& output, geometry::Boundary output_boundary,
+                            const metrics::SceneStatistics& output_statistics,
+                            const metrics::Comparison& comparison,
+                            const metrics::NeighbourhoodDistance* neighbourhood);
+
+std::vector<Verdict> judge(const Judged& judged);
+
+// One line for the top of a report: the failures, worst first ("density ×1.46 the exemplar's:
+// too dense; order 0.12 against 0.96: loses the exemplar's lattice"), or "passes all N checks".
+std::string summary(const std::vector<Verdict>& verdicts);
+
+}  // namespace shapeproc::evaluation

@@ -1,0 +1,109 @@
+// Verdicts on hand-made outputs whose faults are known: twice the density, a shape mix moved
+// from 25/25/25/25 to 100/0/0/0, a lattice turned into a random scatter.
+#include "libshapeproc/evaluation/verdicts.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "libshapeproc/core/random.hpp"
+#include "tests/compare/compare_scenes.hpp"
+
+namespace shapeproc::evaluation {
+namespace {
+
+using geometry::Boundary;
+using geometry::Vec3;
+
+// An n x n lattice of spacing a in a window of side `side`, its squares of sides 2, 3, 4 and 5
+// taken in turn (or all of side 2 with `smallest_only`), or at random positions with `scatter`.
+geometry::Scene squares(int n, double a, double side, bool smallest_only = false,
+                        bool scatter = false) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(Vec3(0, 0, 0), Vec3(side, side, 0));
+  scene.categories = {{"a"}};
+  for (const double s : {2.0, 3.0, 4.0, 5.0}) scene.shapes.push_back(testing::rectangle(s, s));
+  core::Random random(11);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int shape = smallest_only ? 0 : (i + j * n) % 4;
+      const Vec3 p = scatter ? Vec3(random.uniform(0, side), random.uniform(0, side), 0)
+                             : Vec3((i + 0.5) * a, (j + 0.5) * a, 0);
+      scene.elements.push_back({shape, 0, p});
+    }
+  return scene;
+}
+
+struct Judgement {
+  std::vector<Verdict> verdicts;
+  std::string line;
+  const Verdict& operator[](const std::string& metric) const {
+    for (const Verdict& v : verdicts)
+      if (v.metric == metric) return v;
+    throw std::out_of_range(metric);
+  }
+};
+
+Judgement judge_against(const geometry::Scene& exemplar, const geometry::Scene& output) {
+  metrics::StatisticsOptions options;
+  options.measurement.periodic = true;
+  const metrics::SceneStatistics ex =
+      metrics::compute_statistics(exemplar, options, core::Random(1));
+  options.range = ex.range;
+  const metrics::SceneStatistics out =
+      metrics::compute_statistics(output, options, core::Random(1));
+  const metrics::Comparison comparison = metrics::compare(out, ex);
+  const Judged judged = measure_for_verdicts(exemplar, Boundary::torus, ex, output, Boundary::torus,
+                                             out, comparison, nullptr);
+  Judgement j;
+  j.verdicts = judge(judged);
+  j.line = summary(j.verdicts);
+  return j;
+}
+
+TEST(Verdicts, TheExemplarItselfPassesEveryCheck) {
+  const geometry::Scene exemplar = squares(20, 10.0, 200.0);
+  const Judgement j = judge_against(exemplar, exemplar);
+  for (const Verdict& v : j.verdicts)
+    EXPECT_NE(v.outcome, Outcome::fail) << v.metric << " " << v.shown;
+  EXPECT_EQ(j.line, "passes all 6 checks");
+  EXPECT_DOUBLE_EQ(j["density"].value, 1.0);
+  EXPECT_NEAR(j["shape mix"].value, 1.0, 1e-12);  // 100 of each: χ² = 0
+  EXPECT_NEAR(j["order"].value, 1.0, 1e-9);
+}
+
+TEST(Verdicts, TwiceTheDensityIsTooDense) {
+  // 28 x 28 squares at spacing 200/28 in the same window: ×1.96.
+  const Judgement j = judge_against(squares(20, 10.0, 200.0), squares(28, 200.0 / 28, 200.0));
+  EXPECT_NEAR(j["density"].value, 784.0 / 400.0, 1e-12);
+  EXPECT_EQ(j["density"].outcome, Outcome::fail);
+  EXPECT_EQ(j["density"].problem, "too dense");
+  EXPECT_EQ(j["order"].outcome, Outcome::pass);  // still a lattice
+  EXPECT_NE(j.line.find("density ×1.96 (wanted ×0.8 to ×1.25): too dense"), std::string::npos)
+      << j.line;
+}
+
+TEST(Verdicts, AShapeMixMovedToOneShapeFailsItsChiSquare) {
+  // 400 elements all of the smallest class against shares of 1/4: χ² = 3 · 100 + 300²/100 = 1200.
+  const Judgement j = judge_against(squares(20, 10.0, 200.0), squares(20, 10.0, 200.0, true));
+  EXPECT_EQ(j["shape mix"].outcome, Outcome::fail);
+  EXPECT_LT(j["shape mix"].value, 1e-100);
+  EXPECT_NE(j["shape mix"].shown.find("100% against 25%"), std::string::npos)
+      << j["shape mix"].shown;
+  EXPECT_EQ(j["density"].outcome, Outcome::pass);
+}
+
+TEST(Verdicts, ALatticeTurnedIntoAScatterLosesItsOrder) {
+  const Judgement j =
+      judge_against(squares(20, 10.0, 200.0), squares(20, 10.0, 200.0, false, true));
+  EXPECT_EQ(j["order"].outcome, Outcome::fail);
+  EXPECT_EQ(j["order"].problem, "loses the exemplar's lattice");
+  EXPECT_LT(j["order"].value, 0.2);
+  EXPECT_EQ(j["density"].outcome, Outcome::pass);
+  // A random scatter of squares at this density overlaps, and its spacing spreads.
+  EXPECT_EQ(j["overlaps"].outcome, Outcome::fail);
+  EXPECT_EQ(j.line.rfind("fails ", 0), 0u) << j.line;
+}
+
+}  // namespace
+}  // namespace shapeproc::evaluation
