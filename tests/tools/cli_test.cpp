@@ -383,6 +383,12 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   ASSERT_TRUE(plot.load_file((report / "interaction.svg").c_str()));
   const nlohmann::json metrics = nlohmann::json::parse(testing::read_file(report / "metrics.json"));
   EXPECT_EQ(metrics["outputs"].size(), 1u);
+  // The verdicts: a one-line summary first, on the page and in metrics.json.
+  const std::string summary = metrics["outputs"][0]["summary"].get<std::string>();
+  EXPECT_EQ(r.out.find(out + ": " + summary + "\n"), 0u) << r.out;
+  EXPECT_TRUE(summary.rfind("passes all", 0) == 0 || summary.rfind("fails", 0) == 0) << summary;
+  EXPECT_GE(metrics["outputs"][0]["verdicts"].size(), 6u);  // density (3), mix, overlaps, …
+  EXPECT_TRUE(html.select_node("//h2[text()='Verdicts']"));
 
   // A missing output: one line naming it, and no report.
   const std::filesystem::path other = dir.file("other");
@@ -543,6 +549,47 @@ TEST(CliFit, MaximumLikelihoodMatchesTheExemplarsCount) {
       nlohmann::json::parse(testing::read_file(border))["fit"]["estimator"];
   EXPECT_TRUE(b_estimator["converged"].get<bool>());
   EXPECT_LE(std::abs(b_estimator["z"][0].get<double>()), b_estimator["tolerance"].get<double>());
+}
+
+TEST(CliCompare, EveryMethodOnOnePageWithVerdictsAndTimes) {
+  const testing::TempDir dir;
+  const std::filesystem::path page = dir.file("compare");
+  const Result r = run_cli({"compare", data("svg/crescents-grid.svg"), "--methods", "davison,ijiri",
+                            "--size", "400,400", "--seed", "2", "-o", page.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // Progress per method, then each method's one-line verdict.
+  EXPECT_NE(r.out.find("[1/2] davison\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[2/2] ijiri\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\ndavison: "), std::string::npos) << r.out;
+  // Each output is written where `synthesize` would have put it, with its record.
+  for (const char* method : {"davison", "ijiri"}) {
+    const std::string svg = testing::read_file(page / (std::string(method) + ".svg"));
+    EXPECT_NE(svg.find("&quot;seed&quot;:2"), std::string::npos) << method;
+  }
+  pugi::xml_document html;
+  ASSERT_TRUE(html.load_file((page / "index.html").c_str()));
+  std::vector<std::string> images;
+  for (const pugi::xpath_node& n : html.select_nodes("//img"))
+    images.push_back(n.node().attribute("src").value());
+  ASSERT_EQ(images, (std::vector<std::string>{"exemplar.png", "output-1.png", "output-2.png"}));
+  for (const std::string& image : images) EXPECT_GT(grey_spread(page / image), 0.05) << image;
+  // Nothing the page needs comes from the network.
+  const std::string text = testing::read_file(page / "index.html");
+  EXPECT_EQ(text.find("http://"), text.find("http://www.w3.org/"));
+  EXPECT_EQ(text.find("https://"), std::string::npos);
+  EXPECT_TRUE(html.select_node("//h2[text()='Verdicts']"));
+  EXPECT_TRUE(html.select_node("//td[text()='davison']"));  // its time, among the timings
+  const nlohmann::json metrics = nlohmann::json::parse(testing::read_file(page / "metrics.json"));
+  ASSERT_EQ(metrics["outputs"].size(), 2u);
+
+  expect_one_line_error(run_cli({"compare", data("svg/crescents-grid.svg"), "--methods",
+                                 "davison,magic", "--size", "400,400", "-o", page.string()}),
+                        2, "unknown method 'magic'");
+  const std::filesystem::path none = dir.file("none");
+  expect_one_line_error(run_cli({"compare", dir.file("missing.svg").string(), "--size", "400,400",
+                                 "-o", none.string()}),
+                        2, "missing.svg");
+  EXPECT_FALSE(std::filesystem::exists(none));
 }
 
 }  // namespace

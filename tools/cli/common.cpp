@@ -39,6 +39,24 @@ void ReaderFlags::add_to(CLI::App& command) {
                      "xmin,xmax,ymin,ymax[,zmin,zmax]: required for CSV, optional for meshes");
 }
 
+std::vector<std::string> ReaderFlags::arguments() const {
+  // Only what differs from the defaults, so that no flag meets one it excludes.
+  const ReaderFlags defaults;
+  std::vector<std::string> out;
+  const auto add = [&](const char* flag, const std::string& value, const std::string& standard) {
+    if (value != standard) out.insert(out.end(), {flag, value});
+  };
+  add("--elements", elements, defaults.elements);
+  add("--nested", nested, defaults.nested);
+  add("--groups", groups, defaults.groups);
+  add("--category-by", category_by, defaults.category_by);
+  add("--split", split, defaults.split);
+  if (tile) out.push_back("--tile");
+  if (split_subpaths) out.push_back("--split-subpaths");
+  if (!window.empty()) out.insert(out.end(), {"--window", window});
+  return out;
+}
+
 io::ReaderOptions ReaderFlags::options() const {
   io::ReaderOptions options;
   options.elements = elements == "visual"     ? io::ElementRule::visual

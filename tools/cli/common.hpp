@@ -27,6 +27,8 @@ struct ReaderFlags {
   void add_to(CLI::App& command);
   io::ReaderOptions options() const;  // throws core::UsageError
   nlohmann::json to_json() const;
+  // The flags as they would be typed again (for commands that run others: `compare`).
+  std::vector<std::string> arguments() const;
 };
 
 // The exemplar a fit learns from: the file as read, or, for a --tile of few elements, the tile

@@ -1,5 +1,7 @@
 // shapeproc report EXEMPLAR OUTPUT... -o DIR [--model model.json]: index.html, pictures and
 // metrics.json comparing outputs with their exemplar.
+#include "tools/cli/report_command.hpp"
+
 #include <chrono>
 #include <memory>
 #include <sstream>
@@ -14,17 +16,107 @@
 
 namespace shapeproc::cli {
 
+int write_report(const ReportRequest& request, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<model::ShapeProcessModel> model;
+  MetricFlags flags = request.metrics;
+  if (!request.model.empty()) {
+    model = std::make_unique<model::ShapeProcessModel>(io::read_model(request.model));
+    if (flags.directions == 0) flags.directions = model->measurement.directions;
+    if (flags.direction == "gravitation" &&
+        model->measurement.direction == geometry::DirectionKind::centroid) {
+      flags.direction = "centroid";
+    }
+  }
+  if (std::filesystem::exists(request.directory) &&
+      !std::filesystem::is_directory(request.directory)) {
+    throw core::UsageError(request.directory + ": exists and is not a directory");
+  }
+  const EvaluatedScene exemplar = read_exemplar(request.exemplar, request.reader, flags);
+  const Evaluation exemplar_eval = evaluate(exemplar, flags);
+  std::vector<EvaluatedScene> outputs;
+  std::vector<Evaluation> evals;
+  for (const std::string& file : request.outputs) {
+    outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
+    evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
+  }
+
+  std::vector<std::vector<evaluation::Verdict>> verdicts;
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
+        exemplar.scene, exemplar.boundary, exemplar_eval.statistics, outputs[i].scene,
+        outputs[i].boundary, evals[i].statistics, *evals[i].comparison, &*evals[i].neighbourhood)));
+
+  report::Report r;
+  r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics, nullptr, nullptr, ""};
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    r.outputs.push_back(
+        {request.labels.empty() ? request.outputs[i] : request.labels[i], &outputs[i].scene,
+         &evals[i].statistics, &*evals[i].comparison, &*evals[i].neighbourhood,
+         outputs[i].record ? outputs[i].record->summary() : std::string(), &verdicts[i]});
+  }
+  r.model = model.get();
+  r.model_label = request.model;
+  r.command = request.command;
+  if (model && !model->fit_json.empty()) {
+    const nlohmann::json fit = nlohmann::json::parse(model->fit_json, nullptr, false);
+    if (fit.is_object() && fit.contains("seconds") && fit["seconds"].is_object()) {
+      for (const auto& [stage, seconds] : fit["seconds"].items()) {
+        if (seconds.is_number()) r.timings.emplace_back("fit: " + stage, seconds.get<double>());
+      }
+    }
+  }
+  for (const auto& timing : request.timings) r.timings.push_back(timing);
+  r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);
+  for (std::size_t i = 0; i < evals.size(); ++i) {
+    r.timings.emplace_back("metrics: output " + std::to_string(i + 1), evals[i].statistics.seconds);
+  }
+
+  nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
+                            {"outputs", nlohmann::json::array()},
+                            {"options", flags.to_json()}};
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    nlohmann::json entry = evaluation_json(outputs[i], evals[i]);
+    entry["summary"] = evaluation::summary(verdicts[i]);
+    for (const evaluation::Verdict& v : verdicts[i])
+      entry["verdicts"].push_back({{"check", v.metric},
+                                   {"value", v.value},
+                                   {"shown", v.shown},
+                                   {"rule", v.rule},
+                                   {"outcome", v.outcome == evaluation::Outcome::pass   ? "pass"
+                                               : v.outcome == evaluation::Outcome::fail ? "fail"
+                                                                                        : "shown"},
+                                   {"problem", v.problem}});
+    metrics["outputs"].push_back(std::move(entry));
+  }
+  std::filesystem::create_directories(request.directory);
+  core::write_file_atomically(std::filesystem::path(request.directory) / "metrics.json",
+                              [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
+  r.timings.emplace_back(
+      "reading and metrics, in total",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  report::write_report(r, request.directory);
+  // The verdicts first: what a person would notice, one line per output.
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    out << (request.labels.empty() ? request.outputs[i] : request.labels[i]) << ": "
+        << evaluation::summary(verdicts[i]) << '\n';
+  out << "wrote " << (std::filesystem::path(request.directory) / "index.html").string() << " ("
+      << outputs.size() + 1 << " pictures, metrics.json)\n";
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const Evaluation& e = evals[i];
+    out << "  " << request.outputs[i] << ": " << e.statistics.elements() << " elements, "
+        << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest "
+        << e.comparison->all.nearest << ", W1 pairs " << e.comparison->all.pairs
+        << ", neighbourhood distance " << e.neighbourhood->normalised << " a²\n";
+  }
+  return 0;
+}
+
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
-  struct ReportArguments {
-    std::string exemplar, directory, model;
-    std::vector<std::string> outputs;
-    MetricFlags metrics;
-    ReaderFlags reader;
-  };
-  auto args = std::make_shared<ReportArguments>();
+  auto args = std::make_shared<ReportRequest>();
   CLI::App* command = app.add_subcommand("report",
                                          "Write DIR/index.html (self-contained) with pictures, "
-                                         "distance charts and metrics comparing outputs "
+                                         "verdicts, distance charts and metrics comparing outputs "
                                          "with their exemplar, and DIR/metrics.json");
   command->add_option("EXEMPLAR", args->exemplar, "the exemplar")->required();
   command->add_option("OUTPUTS", args->outputs, "outputs to compare with it")->required();
@@ -35,101 +127,8 @@ void add_report_command(CLI::App& app, Action& action, const std::vector<std::st
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      const auto start = std::chrono::steady_clock::now();
-      std::unique_ptr<model::ShapeProcessModel> model;
-      MetricFlags flags = args->metrics;
-      if (!args->model.empty()) {
-        model = std::make_unique<model::ShapeProcessModel>(io::read_model(args->model));
-        if (flags.directions == 0) flags.directions = model->measurement.directions;
-        if (flags.direction == "gravitation" &&
-            model->measurement.direction == geometry::DirectionKind::centroid) {
-          flags.direction = "centroid";
-        }
-      }
-      if (std::filesystem::exists(args->directory) &&
-          !std::filesystem::is_directory(args->directory)) {
-        throw core::UsageError(args->directory + ": exists and is not a directory");
-      }
-      const EvaluatedScene exemplar = read_exemplar(args->exemplar, args->reader, flags);
-      const Evaluation exemplar_eval = evaluate(exemplar, flags);
-      std::vector<EvaluatedScene> outputs;
-      std::vector<Evaluation> evals;
-      for (const std::string& file : args->outputs) {
-        outputs.push_back(read_evaluated_scene(file, args->reader, flags.boundary));
-        evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
-      }
-
-      std::vector<std::vector<evaluation::Verdict>> verdicts;
-      for (std::size_t i = 0; i < outputs.size(); ++i)
-        verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
-            exemplar.scene, exemplar.boundary, exemplar_eval.statistics, outputs[i].scene,
-            outputs[i].boundary, evals[i].statistics, *evals[i].comparison,
-            &*evals[i].neighbourhood)));
-
-      report::Report r;
-      r.exemplar = {args->exemplar, &exemplar.scene, &exemplar_eval.statistics,
-                    nullptr,        nullptr,         ""};
-      for (std::size_t i = 0; i < outputs.size(); ++i) {
-        r.outputs.push_back({args->outputs[i], &outputs[i].scene, &evals[i].statistics,
-                             &*evals[i].comparison, &*evals[i].neighbourhood,
-                             outputs[i].record ? outputs[i].record->summary() : std::string(),
-                             &verdicts[i]});
-      }
-      r.model = model.get();
-      r.model_label = args->model;
-      r.command = command_line(arguments);
-      if (model && !model->fit_json.empty()) {
-        const nlohmann::json fit = nlohmann::json::parse(model->fit_json, nullptr, false);
-        if (fit.is_object() && fit.contains("seconds") && fit["seconds"].is_object()) {
-          for (const auto& [stage, seconds] : fit["seconds"].items()) {
-            if (seconds.is_number()) r.timings.emplace_back("fit: " + stage, seconds.get<double>());
-          }
-        }
-      }
-      r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);
-      for (std::size_t i = 0; i < evals.size(); ++i) {
-        r.timings.emplace_back("metrics: output " + std::to_string(i + 1),
-                               evals[i].statistics.seconds);
-      }
-
-      nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
-                                {"outputs", nlohmann::json::array()},
-                                {"options", flags.to_json()}};
-      for (std::size_t i = 0; i < outputs.size(); ++i) {
-        nlohmann::json entry = evaluation_json(outputs[i], evals[i]);
-        entry["summary"] = evaluation::summary(verdicts[i]);
-        for (const evaluation::Verdict& v : verdicts[i])
-          entry["verdicts"].push_back(
-              {{"check", v.metric},
-               {"value", v.value},
-               {"shown", v.shown},
-               {"rule", v.rule},
-               {"outcome", v.outcome == evaluation::Outcome::pass   ? "pass"
-                           : v.outcome == evaluation::Outcome::fail ? "fail"
-                                                                    : "shown"},
-               {"problem", v.problem}});
-        metrics["outputs"].push_back(std::move(entry));
-      }
-      std::filesystem::create_directories(args->directory);
-      core::write_file_atomically(std::filesystem::path(args->directory) / "metrics.json",
-                                  [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
-      r.timings.emplace_back(
-          "reading and metrics, in total",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      report::write_report(r, args->directory);
-      // The verdicts first: what a person would notice, one line per output.
-      for (std::size_t i = 0; i < outputs.size(); ++i)
-        out << args->outputs[i] << ": " << evaluation::summary(verdicts[i]) << '\n';
-      out << "wrote " << (std::filesystem::path(args->directory) / "index.html").string() << " ("
-          << outputs.size() + 1 << " pictures, metrics.json)\n";
-      for (std::size_t i = 0; i < outputs.size(); ++i) {
-        const Evaluation& e = evals[i];
-        out << "  " << args->outputs[i] << ": " << e.statistics.elements() << " elements, "
-            << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest "
-            << e.comparison->all.nearest << ", W1 pairs " << e.comparison->all.pairs
-            << ", neighbourhood distance " << e.neighbourhood->normalised << " a²\n";
-      }
-      return 0;
+      args->command = command_line(arguments);
+      return write_report(*args, out);
     };
   });
 }
