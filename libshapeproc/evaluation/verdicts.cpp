@@ -76,6 +76,7 @@ std::vector<Verdict> judge(const Judged& j) {
       v.outcome = Outcome::fail;
       v.problem = "the mix of shapes drifts";
     }
+    v.brief = "p " + number(j.mix.p_value, 3);
     // Name the class that drifted most.
     double worst = 0.0;
     int total = 0, exemplar_total_count = 0;
@@ -108,6 +109,7 @@ std::vector<Verdict> judge(const Judged& j) {
       v.outcome = Outcome::fail;
       v.problem = "elements overlap";
     }
+    v.brief = number(100 * share, 1) + "%";
     out.push_back(v);
   }
   {
@@ -123,6 +125,7 @@ std::vector<Verdict> judge(const Judged& j) {
       v.outcome = Outcome::fail;
       v.problem = per > wanted ? "elements touch more often" : "contacts are lost";
     }
+    v.brief = number(per);
     out.push_back(v);
   }
 
@@ -140,6 +143,7 @@ std::vector<Verdict> judge(const Judged& j) {
       v.problem =
           order < wanted ? "loses the exemplar's lattice" : "more regular than the exemplar";
     }
+    v.brief = number(order);
     out.push_back(v);
   }
 
@@ -147,6 +151,7 @@ std::vector<Verdict> judge(const Judged& j) {
   {
     const double w1 = j.comparison->all.nearest;
     Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, ""};
+    v.brief = number(w1);
     if (!(w1 <= 0.15)) {
       v.outcome = Outcome::fail;
       v.problem = "nearest distances differ";
@@ -158,6 +163,11 @@ std::vector<Verdict> judge(const Judged& j) {
     out.push_back({"neighbourhood", j.neighbourhood->normalised,
                    number(j.neighbourhood->normalised) + " a²", "shown (lower is closer)",
                    Outcome::shown, ""});
+  // The figure alone: what `shown` starts with, up to any explanation in brackets.
+  for (Verdict& v : out) {
+    if (!v.brief.empty()) continue;
+    v.brief = v.shown.substr(0, v.shown.find(" ("));
+  }
   return out;
 }
 

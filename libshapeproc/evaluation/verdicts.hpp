@@ -36,6 +36,7 @@ struct Verdict {
   std::string rule;    // the rule, in words ("×0.8 to ×1.25")
   Outcome outcome = Outcome::shown;
   std::string problem;  // what a failure means, for the summary ("too dense")
+  std::string brief;    // the figure alone, for tables ("×1.46", "p 0.003")
 };
 
 // What the verdicts read: both scenes' statistics (the output's compared with the exemplar's),

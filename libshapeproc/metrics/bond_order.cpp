@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::metrics {
 
@@ -57,10 +58,21 @@ std::vector<std::vector<geometry::Vec3>> nearest_offsets(const std::vector<geome
 
 }  // namespace
 
-BondOrder bond_order(const geometry::Scene& scene, geometry::Boundary boundary) {
-  if (!(scene.window.sizes().x() > 0 && scene.window.sizes().y() > 0))
+BondOrder bond_order(const geometry::Scene& tile_or_scene, geometry::Boundary boundary) {
+  if (!(tile_or_scene.window.sizes().x() > 0 && tile_or_scene.window.sizes().y() > 0))
     throw std::invalid_argument("bond order: the scene's window is empty");
   BondOrder out;
+  // A torus of few elements is a seamless tile: repeated until it holds 7 or more, each element's
+  // periodic images count as the neighbours they are.
+  geometry::Scene repeated;
+  const bool few = boundary == geometry::Boundary::torus && !tile_or_scene.elements.empty() &&
+                   tile_or_scene.elements.size() < 7;
+  if (few) {
+    int times = 2;
+    while (static_cast<std::size_t>(times * times) * tile_or_scene.elements.size() < 7) ++times;
+    repeated = geometry::repeat_tile(tile_or_scene, times);
+  }
+  const geometry::Scene& scene = few ? repeated : tile_or_scene;
   if (scene.elements.size() < 7) return out;
   geometry::Box3 plane = scene.window;
   plane.min().z() = plane.max().z() = 0.0;

@@ -24,8 +24,9 @@ struct BondOrder {
   int symmetry() const { return global4 > global6 ? 4 : 6; }
 };
 
-// Zero for fewer than 7 elements (ψ6 needs 6 neighbours). Throws std::invalid_argument when the
-// scene's window is empty.
+// A torus of fewer than 7 elements is taken as a seamless tile and repeated until it has 7 (ψ6
+// needs 6 neighbours); an open window of fewer than 7 has no measure (0). Throws
+// std::invalid_argument when the scene's window is empty.
 BondOrder bond_order(const geometry::Scene& scene, geometry::Boundary boundary);
 
 }  // namespace shapeproc::metrics

@@ -11,6 +11,7 @@
 #include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/report/html_report.hpp"
+#include "libshapeproc/report/verdict_markdown.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/stats_command.hpp"
 
@@ -96,12 +97,13 @@ int write_report(const ReportRequest& request, std::ostream& out) {
       "reading and metrics, in total",
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   report::write_report(r, request.directory);
+  report::write_verdict_markdown(r, std::filesystem::path(request.directory) / "verdicts.md");
   // The verdicts first: what a person would notice, one line per output.
   for (std::size_t i = 0; i < outputs.size(); ++i)
     out << (request.labels.empty() ? request.outputs[i] : request.labels[i]) << ": "
         << evaluation::summary(verdicts[i]) << '\n';
   out << "wrote " << (std::filesystem::path(request.directory) / "index.html").string() << " ("
-      << outputs.size() + 1 << " pictures, metrics.json)\n";
+      << outputs.size() + 1 << " pictures, metrics.json, verdicts.md)\n";
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const Evaluation& e = evals[i];
     out << "  " << request.outputs[i] << ": " << e.statistics.elements() << " elements, "
