@@ -49,10 +49,48 @@ Size size_of(const geometry::Shape& shape) {
   return s;
 }
 
+// Sizes closer than this (in summed log ratios: about 1%) are one size.
+constexpr double kSameSize = 0.01;
+
 double size_distance(const Size& a, const Size& b) {
   const double tiny = 1e-12;
   return std::abs(std::log((a.radius + tiny) / (b.radius + tiny))) +
          std::abs(std::log((a.area + tiny) / (b.area + tiny)));
+}
+
+// Classes whose elements cannot be told apart by size (a stroke and its turned copy, identical
+// shapes of two classes) are one kind here: an output element could not say which it is.
+void merge_classes_of_one_size(const geometry::Scene& exemplar, const std::vector<Size>& sizes,
+                               std::vector<std::string>& classes, std::vector<int>& element_class) {
+  std::vector<int> parent(classes.size());
+  for (std::size_t c = 0; c < parent.size(); ++c) parent[c] = static_cast<int>(c);
+  const auto root = [&](int c) {
+    while (parent[static_cast<std::size_t>(c)] != c) c = parent[static_cast<std::size_t>(c)];
+    return c;
+  };
+  const auto& elements = exemplar.elements;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    for (std::size_t j = i + 1; j < elements.size(); ++j) {
+      if (elements[i].category != elements[j].category) continue;
+      const int a = root(element_class[i]), b = root(element_class[j]);
+      if (a == b) continue;
+      if (size_distance(sizes[static_cast<std::size_t>(elements[i].shape)],
+                        sizes[static_cast<std::size_t>(elements[j].shape)]) < kSameSize)
+        parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  std::vector<int> renumbered(classes.size(), -1);
+  std::vector<std::string> merged;
+  for (std::size_t c = 0; c < classes.size(); ++c) {
+    const int r = root(static_cast<int>(c));
+    if (renumbered[static_cast<std::size_t>(r)] < 0) {
+      renumbered[static_cast<std::size_t>(r)] = static_cast<int>(merged.size());
+      merged.push_back(classes[static_cast<std::size_t>(r)]);
+    } else if (r != static_cast<int>(c)) {
+      merged[static_cast<std::size_t>(renumbered[static_cast<std::size_t>(r)])] += " + " + classes[c];
+    }
+  }
+  for (int& c : element_class) c = renumbered[static_cast<std::size_t>(root(c))];
+  classes = std::move(merged);
 }
 
 }  // namespace
@@ -84,13 +122,14 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
     }
     element_class.push_back(c);
   }
+  // Each exemplar shape's size, once; output shapes measured once each.
+  std::vector<Size> exemplar_size;
+  for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(size_of(s));
+  merge_classes_of_one_size(exemplar, exemplar_size, mix.classes, element_class);
   mix.exemplar.assign(mix.classes.size(), 0);
   mix.output.assign(mix.classes.size(), 0);
   for (const int c : element_class) ++mix.exemplar[static_cast<std::size_t>(c)];
 
-  // Each exemplar shape's size, once; output shapes measured once each.
-  std::vector<Size> exemplar_size;
-  for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(size_of(s));
   std::vector<Size> output_size;
   for (const geometry::Shape& s : output.shapes) output_size.push_back(size_of(s));
   for (const geometry::Element& o : output.elements) {

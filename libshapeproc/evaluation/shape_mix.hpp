@@ -4,7 +4,9 @@
 // An output element, whatever method made it and however it was turned, joins the class of its
 // category whose shapes are nearest its own in size: the size of a shape is its radius about its
 // centroid and its filled area (2D), both unchanged by turning and moving it. The output's class
-// counts are then tested against the exemplar's shares by Pearson's chi-square.
+// counts are then tested against the exemplar's shares by Pearson's chi-square. Classes whose
+// shapes have one size (a stroke and its turned copy) are one kind here, since no output element
+// could tell which of them it is.
 #pragma once
 
 #include <string>
