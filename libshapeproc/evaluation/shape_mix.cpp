@@ -86,7 +86,8 @@ void merge_classes_of_one_size(const geometry::Scene& exemplar, const std::vecto
       renumbered[static_cast<std::size_t>(r)] = static_cast<int>(merged.size());
       merged.push_back(classes[static_cast<std::size_t>(r)]);
     } else if (r != static_cast<int>(c)) {
-      merged[static_cast<std::size_t>(renumbered[static_cast<std::size_t>(r)])] += " + " + classes[c];
+      merged[static_cast<std::size_t>(renumbered[static_cast<std::size_t>(r)])] +=
+          " + " + classes[c];
     }
   }
   for (int& c : element_class) c = renumbered[static_cast<std::size_t>(root(c))];

@@ -240,25 +240,43 @@ Raster rasterize_filled(const Scene& scene, const Box3& box, int width, int heig
   return raster;
 }
 
-void write_png(const Scene& scene, const std::filesystem::path& path,
-               const RenderOptions& options) {
-  Box3 box = scene.window;
-  if (box.isEmpty()) {
+namespace {
+
+// What a scene's picture covers (its window, or its shapes' bounds without one) and its size in
+// pixels.
+struct View {
+  Box3 box;
+  double scale = 0.0;
+  int width = 0, height = 0;
+};
+
+View view_of(const Scene& scene, const RenderOptions& options) {
+  View v;
+  v.box = scene.window;
+  if (v.box.isEmpty()) {
     for (std::size_t i = 0; i < scene.elements.size(); ++i)
-      box.extend(geometry::bounding_box(scene.placed_shape(i)));
+      v.box.extend(geometry::bounding_box(scene.placed_shape(i)));
   }
-  const Vec3 size = box.sizes();
+  const Vec3 size = v.box.sizes();
   const double longest = std::max(size.x(), size.y());
   if (!(longest > 0)) throw core::ArgumentError("render", "the scene has an empty window");
-  const double scale = options.scale > 0 ? options.scale : options.long_side / longest;
-  const int width = std::max(1, static_cast<int>(std::lround(scale * size.x())));
-  const int height = std::max(1, static_cast<int>(std::lround(scale * size.y())));
-  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
-  Context cr(cairo_create(surface.get()));
-  cairo_set_source_rgb(cr.get(), 1, 1, 1);
-  cairo_paint(cr.get());
-  set_view(cr.get(), box, width, height);
-  const double pixel = 1.0 / scale;
+  v.scale = options.scale > 0 ? options.scale : options.long_side / longest;
+  v.width = std::max(1, static_cast<int>(std::lround(v.scale * size.x())));
+  v.height = std::max(1, static_cast<int>(std::lround(v.scale * size.y())));
+  return v;
+}
+
+// Draws the scene over the view, whose top-left corner is the context's current origin.
+void draw_scene(cairo_t* context, const Scene& scene, const RenderOptions& options,
+                const View& view) {
+  cairo_save(context);
+  Context cr(cairo_reference(context));
+  const Box3& box = view.box;
+  const Vec3 size = box.sizes();
+  cairo_rectangle(cr.get(), 0, 0, view.width, view.height);  // nothing drawn beyond the view
+  cairo_clip(cr.get());
+  set_view(cr.get(), box, view.width, view.height);
+  const double pixel = 1.0 / view.scale;
   if (scene.dimension == 3)
     draw_3d(cr.get(), scene, options, pixel);
   else
@@ -282,15 +300,103 @@ void write_png(const Scene& scene, const std::filesystem::path& path,
     cairo_set_line_width(cr.get(), 2 * pixel);
     cairo_stroke(cr.get());
   }
-  cairo_surface_flush(surface.get());
+  cairo_restore(context);
+}
+
+std::string png_bytes(cairo_surface_t* surface) {
+  cairo_surface_flush(surface);
   std::ostringstream bytes;
-  const cairo_status_t status =
-      cairo_surface_write_to_png_stream(surface.get(), write_to_stream, &bytes);
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, write_to_stream, &bytes);
   if (status != CAIRO_STATUS_SUCCESS)
     throw std::runtime_error(std::string("render: ") + cairo_status_to_string(status));
-  const std::string png =
-      options.text.empty() ? bytes.str() : add_png_text(bytes.str(), options.text);
+  return bytes.str();
+}
+
+// Words of `text` broken into lines of at most about `characters`.
+std::vector<std::string> wrap(const std::string& text, std::size_t characters) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string line;
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > characters) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+void write_png(const Scene& scene, const std::filesystem::path& path,
+               const RenderOptions& options) {
+  const View view = view_of(scene, options);
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, view.width, view.height));
+  Context cr(cairo_create(surface.get()));
+  cairo_set_source_rgb(cr.get(), 1, 1, 1);
+  cairo_paint(cr.get());
+  draw_scene(cr.get(), scene, options, view);
+  const std::string bytes = png_bytes(surface.get());
+  const std::string png = options.text.empty() ? bytes : add_png_text(bytes, options.text);
   core::write_file_atomically(path, [&](std::ostream& out) { out << png; });
 }
 
+void write_contact_sheet(const std::vector<SheetPanel>& panels, double scale,
+                         const std::filesystem::path& path) {
+  if (panels.empty()) throw core::ArgumentError("render", "a contact sheet needs a picture");
+  constexpr int kMargin = 16, kTitle = 26, kLine = 17;
+  std::vector<View> views;
+  std::vector<std::vector<std::string>> captions;
+  int width = kMargin, height = 0;
+  for (const SheetPanel& p : panels) {
+    RenderOptions options = p.options;
+    options.scale = scale;
+    views.push_back(view_of(*p.scene, options));
+    std::vector<std::string> lines;
+    for (const std::string& c : p.caption) {
+      const auto more = wrap(c, static_cast<std::size_t>(std::max(24, views.back().width / 7)));
+      lines.insert(lines.end(), more.begin(), more.end());
+    }
+    captions.push_back(lines);
+    width += views.back().width + kMargin;
+    height =
+        std::max(height, kTitle + views.back().height + 6 + static_cast<int>(lines.size()) * kLine);
+  }
+  height += 2 * kMargin;
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+  Context cr(cairo_create(surface.get()));
+  cairo_set_source_rgb(cr.get(), 1, 1, 1);
+  cairo_paint(cr.get());
+  cairo_select_font_face(cr.get(), "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  int x = kMargin;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    cairo_set_source_rgb(cr.get(), 0.1, 0.1, 0.1);
+    cairo_set_font_size(cr.get(), 17);
+    cairo_move_to(cr.get(), x, kMargin + 17);
+    cairo_show_text(cr.get(), panels[i].title.c_str());
+    cairo_save(cr.get());
+    cairo_translate(cr.get(), x, kMargin + kTitle);
+    RenderOptions options = panels[i].options;
+    options.scale = scale;
+    draw_scene(cr.get(), *panels[i].scene, options, views[i]);
+    cairo_restore(cr.get());
+    cairo_set_font_size(cr.get(), 13);
+    for (std::size_t l = 0; l < captions[i].size(); ++l) {
+      const bool bad =
+          captions[i][l].rfind("fails", 0) == 0 || (l > 0 && captions[i][0].rfind("fails", 0) == 0);
+      if (bad)
+        cairo_set_source_rgb(cr.get(), 0.75, 0.1, 0.1);
+      else
+        cairo_set_source_rgb(cr.get(), 0.25, 0.25, 0.25);
+      cairo_move_to(cr.get(), x,
+                    kMargin + kTitle + views[i].height + 6 + static_cast<int>(l + 1) * kLine - 4);
+      cairo_show_text(cr.get(), captions[i][l].c_str());
+    }
+    x += views[i].width + kMargin;
+  }
+  const std::string png = png_bytes(surface.get());
+  core::write_file_atomically(path, [&](std::ostream& out) { out << png; });
+}
 }  // namespace shapeproc::render

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "libshapeproc/geometry/raster.hpp"
@@ -29,5 +30,19 @@ struct RenderOptions {
 // opacity), 3D as an orthographic view along −z with a painter's algorithm and flat shading.
 void write_png(const geometry::Scene& scene, const std::filesystem::path& path,
                const RenderOptions& options = {});
+
+// One picture of a contact sheet: a title above the scene, caption lines below it (wrapped to its
+// width; a caption starting "fails" is drawn in red with the lines after it).
+struct SheetPanel {
+  const geometry::Scene* scene = nullptr;
+  std::string title;
+  std::vector<std::string> caption;
+  RenderOptions options;  // its scale is replaced by the sheet's
+};
+
+// Several scenes side by side at one scale (pixels per unit length), in one PNG written
+// atomically: `compare`'s overview picture.
+void write_contact_sheet(const std::vector<SheetPanel>& panels, double scale,
+                         const std::filesystem::path& path);
 
 }  // namespace shapeproc::render

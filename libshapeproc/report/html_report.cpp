@@ -161,6 +161,23 @@ void write_verdicts(const Report& report, std::ostringstream& html) {
   html << "</table>\n<p>Each check's scale and rule: docs/metrics.md, \"Verdicts\".</p>\n";
 }
 
+// Every picture in one PNG, each output titled with its label and captioned with its verdict.
+void write_overview(const Report& report, double scale, const std::filesystem::path& file) {
+  std::vector<render::SheetPanel> panels;
+  const auto panel = [&](const ReportScene& s, const std::string& title) {
+    render::SheetPanel p;
+    p.scene = s.scene;
+    p.title = title;
+    p.caption.push_back(std::to_string(s.statistics->elements()) + " elements");
+    if (s.verdicts) p.caption.push_back(evaluation::summary(*s.verdicts));
+    p.options.highlight = s.statistics->collisions.colliding;
+    panels.push_back(std::move(p));
+  };
+  panel(report.exemplar, "exemplar");
+  for (const ReportScene& o : report.outputs) panel(o, o.label);
+  render::write_contact_sheet(panels, scale, file);
+}
+
 void require(const ReportScene& s) {
   if (!s.scene || !s.statistics)
     throw core::ArgumentError("report", "a scene or its statistics are missing");
@@ -197,6 +214,7 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     pictures.push_back(name);
   }
   if (report.model) render::write_interaction_plot(*report.model, directory / "interaction.svg");
+  write_overview(report, scale, directory / "overview.png");
 
   const metrics::SceneStatistics& ex = *report.exemplar.statistics;
   const std::string unit = report.exemplar.scene->units;
@@ -223,7 +241,8 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   write_verdicts(report, html);
 
   html << "<h2>Pictures</h2>\n<p>One scale for all (" << num(scale, 3) << " px per " << escape(unit)
-       << "); elements in a collision (shape distance 0) are drawn in red.</p>\n";
+       << "); elements in a collision (shape distance 0) are drawn in red. All of them in one "
+          "picture: <a href=\"overview.png\">overview.png</a>.</p>\n";
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const metrics::SceneStatistics& s = *scenes[i]->statistics;
     html << "<figure><img src=\"" << pictures[i] << "\" alt=\"" << escape(scenes[i]->label)

@@ -573,6 +573,12 @@ TEST(CliCompare, EveryMethodOnOnePageWithVerdictsAndTimes) {
     images.push_back(n.node().attribute("src").value());
   ASSERT_EQ(images, (std::vector<std::string>{"exemplar.png", "output-1.png", "output-2.png"}));
   for (const std::string& image : images) EXPECT_GT(grey_spread(page / image), 0.05) << image;
+  // All of them in one picture, side by side at the page's scale, with room for the captions.
+  const geometry::Raster sheet = io::read_grayscale_png(page / "overview.png");
+  const geometry::Raster first = io::read_grayscale_png(page / "output-1.png");
+  EXPECT_GT(sheet.width, 2 * first.width + io::read_grayscale_png(page / "exemplar.png").width);
+  EXPECT_GT(sheet.height, first.height);
+  EXPECT_GT(grey_spread(page / "overview.png"), 0.05);
   // Nothing the page needs comes from the network.
   const std::string text = testing::read_file(page / "index.html");
   EXPECT_EQ(text.find("http://"), text.find("http://www.w3.org/"));
