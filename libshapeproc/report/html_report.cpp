@@ -329,6 +329,20 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
             "attraction).</p>\n"
          << strip_xml_declaration(render::interaction_plot_svg(*report.model)) << '\n';
   }
+  if (!report.goodness.empty()) {
+    html << "<h2>Goodness of fit</h2>\n<p>" << escape(report.goodness_note)
+         << ". Each sufficient statistic of the exemplar against the fitted model's mean on the "
+            "exemplar's window; z = (model − exemplar) / se, |z| above 3 in red.</p>\n<table>\n"
+            "<tr><th>statistic</th><th>exemplar</th><th>model</th><th>se</th><th>z</th></tr>\n";
+    for (const GoodnessRow& g : report.goodness) {
+      const bool bad = std::abs(g.z) > 3.0;
+      html << "<tr><td>" << escape(g.statistic) << (g.penalised ? " (attraction prior)" : "")
+           << "</td><td>" << num(g.exemplar) << "</td><td>" << num(g.model) << "</td><td>"
+           << num(g.standard_error, 2) << "</td><td" << (bad ? " class=\"bad\"" : "") << ">"
+           << num(g.z, 2) << "</td></tr>\n";
+    }
+    html << "</table>\n";
+  }
 
   html << "<h2>Distances</h2>\n" << legend(report) << "\n<div class=\"charts\">\n";
   const double range = ex.range;

@@ -28,6 +28,14 @@ struct ReportScene {
   const std::vector<evaluation::Verdict>* verdicts = nullptr;  // outputs only, optional
 };
 
+// One sufficient statistic of a maximum-likelihood fit: the exemplar's value against the fitted
+// model's mean on the exemplar's window (fit/fit_maximum_likelihood.hpp).
+struct GoodnessRow {
+  std::string statistic;
+  double exemplar = 0.0, model = 0.0, standard_error = 0.0, z = 0.0;
+  bool penalised = false;  // held down by the fit's attraction prior
+};
+
 struct Report {
   ReportScene exemplar;
   std::vector<ReportScene> outputs;
@@ -35,6 +43,8 @@ struct Report {
   std::string model_label;
   std::string command;                                  // the command that wrote the report
   std::vector<std::pair<std::string, double>> timings;  // stage, seconds
+  std::vector<GoodnessRow> goodness;  // the model's goodness of fit, when it has one
+  std::string goodness_note;          // how the fit ended ("converged in 12 iterations")
 };
 
 // Writes `directory`/index.html and the pictures exemplar.png, output-1.png, … (and

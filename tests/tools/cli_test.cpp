@@ -389,6 +389,10 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   EXPECT_TRUE(summary.rfind("passes all", 0) == 0 || summary.rfind("fails", 0) == 0) << summary;
   EXPECT_GE(metrics["outputs"][0]["verdicts"].size(), 6u);  // density (3), mix, overlaps, …
   EXPECT_TRUE(html.select_node("//h2[text()='Verdicts']"));
+  // The maximum-likelihood fit's goodness of fit: a row per sufficient statistic.
+  ASSERT_TRUE(html.select_node("//h2[text()='Goodness of fit']"));
+  EXPECT_TRUE(html.select_node("//td[text()='elements red']") ||
+              html.select_node("//td[starts-with(text(), 'elements ')]"));
 
   // A missing output: one line naming it, and no report.
   const std::filesystem::path other = dir.file("other");

@@ -9,6 +9,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/evaluation/verdicts.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/report/html_report.hpp"
 #include "libshapeproc/report/verdict_markdown.hpp"
@@ -16,6 +17,56 @@
 #include "tools/cli/stats_command.hpp"
 
 namespace shapeproc::cli {
+
+namespace {
+
+void fill_goodness(const nlohmann::json& e, const std::vector<std::string>& names,
+                   const std::vector<int>& penalised, report::Report& r);
+
+// The goodness-of-fit table a maximum-likelihood fit stored in the model (nothing for others).
+void read_goodness(const model::ShapeProcessModel& model, report::Report& r) {
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
+  if (!fit.is_object() || !fit.contains("estimator") || !fit["estimator"].is_object()) return;
+  const nlohmann::json& e = fit["estimator"];
+  if (!e.contains("observed") || !e.contains("expected") || !e.contains("z")) return;
+  const std::vector<std::string> names = model::statistic_names(model);
+  const auto& observed = e["observed"];
+  if (!observed.is_array() || observed.size() != names.size()) return;
+  std::vector<int> penalised;
+  if (e.contains("penalised") && e["penalised"].is_array())
+    for (const auto& p : e["penalised"])
+      if (p.is_number_integer()) penalised.push_back(p.get<int>());
+  // A table the file does not hold whole (hand-edited, or of another version) is left out.
+  try {
+    fill_goodness(e, names, penalised, r);
+  } catch (const nlohmann::json::exception&) {
+    r.goodness.clear();
+    return;
+  }
+  const bool converged = e.value("converged", false);
+  r.goodness_note = std::string("Maximum likelihood (MCMC): ") +
+                    (converged ? "converged" : "did not converge") + " in " +
+                    std::to_string(e.value("iterations", 0)) + " iterations";
+}
+
+void fill_goodness(const nlohmann::json& e, const std::vector<std::string>& names,
+                   const std::vector<int>& penalised, report::Report& r) {
+  const auto& observed = e["observed"];
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    report::GoodnessRow row;
+    row.statistic = names[i];
+    row.exemplar = observed[i].get<double>();
+    row.model = e["expected"].at(i).get<double>();
+    row.z = e["z"].at(i).get<double>();
+    if (e.contains("expected_standard_error"))
+      row.standard_error = e["expected_standard_error"].at(i).get<double>();
+    row.penalised =
+        std::find(penalised.begin(), penalised.end(), static_cast<int>(i)) != penalised.end();
+    r.goodness.push_back(row);
+  }
+}
+
+}  // namespace
 
 int write_report(const ReportRequest& request, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
@@ -33,7 +84,19 @@ int write_report(const ReportRequest& request, std::ostream& out) {
       !std::filesystem::is_directory(request.directory)) {
     throw core::UsageError(request.directory + ": exists and is not a directory");
   }
-  const EvaluatedScene exemplar = read_exemplar(request.exemplar, request.reader, flags);
+  EvaluatedScene exemplar = read_exemplar(request.exemplar, request.reader, flags);
+  // A seamless tile of few elements is measured as a repeat of itself: on its own small torus an
+  // element's images one period away are the element itself, and the contacts and nearest
+  // distances they make would go uncounted.
+  std::string exemplar_note;
+  if (exemplar.boundary == geometry::Boundary::torus) {
+    const int times = geometry::tile_repeats(exemplar.scene.elements.size());
+    if (times > 1) {
+      exemplar.scene = geometry::repeat_tile(exemplar.scene, times);
+      exemplar_note = "measured and drawn as a " + std::to_string(times) + " × " +
+                      std::to_string(times) + " repeat of the tile";
+    }
+  }
   const Evaluation exemplar_eval = evaluate(exemplar, flags);
   std::vector<EvaluatedScene> outputs;
   std::vector<Evaluation> evals;
@@ -49,7 +112,8 @@ int write_report(const ReportRequest& request, std::ostream& out) {
         outputs[i].boundary, evals[i].statistics, *evals[i].comparison, &*evals[i].neighbourhood)));
 
   report::Report r;
-  r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics, nullptr, nullptr, ""};
+  r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics,
+                nullptr,          nullptr,         exemplar_note};
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     r.outputs.push_back(
         {request.labels.empty() ? request.outputs[i] : request.labels[i], &outputs[i].scene,
@@ -57,6 +121,7 @@ int write_report(const ReportRequest& request, std::ostream& out) {
          outputs[i].record ? outputs[i].record->summary() : std::string(), &verdicts[i]});
   }
   r.model = model.get();
+  if (model) read_goodness(*model, r);
   r.model_label = request.model;
   r.command = request.command;
   if (model && !model->fit_json.empty()) {
