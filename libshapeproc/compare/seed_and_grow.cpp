@@ -8,6 +8,7 @@
 #include "libshapeproc/compare/local_growth.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::compare {
 
@@ -50,11 +51,16 @@ RotationMode parse_rotation_mode(const std::string& text) {
   throw core::ArgumentError("--rotation", "expected none, best or flow-field, got '" + text + "'");
 }
 
-SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
+SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& drawn,
                                                 geometry::Boundary boundary,
                                                 const std::vector<EdgeFlip>& flips) {
-  if (exemplar.dimension != 2)
+  if (drawn.dimension != 2)
     throw core::ArgumentError("seed-and-grow", "Ijiri's growth is for 2D exemplars");
+  // A seamless tile of one or two elements is repeated 2 × 2, its periodic images made elements,
+  // so that it can be triangulated (edge flips name the drawn elements, so they need 3).
+  const bool small_tile =
+      boundary == geometry::Boundary::torus && drawn.elements.size() < 3 && flips.empty();
+  const geometry::Scene exemplar = small_tile ? geometry::repeat_tile(drawn, 2) : drawn;
   if (exemplar.elements.size() < 3)
     throw core::ArgumentError("seed-and-grow", "the exemplar needs at least 3 elements");
   SeedGrowthExemplar ex{

@@ -77,8 +77,9 @@ struct SeedGrowthExemplar {
                                       // its bounding circle
 };
 
-// Throws core::ArgumentError for a 3D exemplar, fewer than 3 elements, bad flips, or an exemplar
-// where no element has a closed ring.
+// A seamless tile (torus) of one or two elements is repeated 2 × 2 first. Throws
+// core::ArgumentError for a 3D exemplar, fewer than 3 elements (after that), bad flips, or an
+// exemplar where no element has a closed ring.
 SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& exemplar,
                                                 geometry::Boundary boundary,
                                                 const std::vector<EdgeFlip>& flips);

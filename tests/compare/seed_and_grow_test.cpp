@@ -163,6 +163,21 @@ TEST(SeedAndGrow, SameSeedSameOutputAndRotationModes) {
   }
 }
 
+TEST(SeedAndGrow, ATileOfTwoElementsIsRepeatedAndGrows) {
+  // The hexagonal lattice of spacing 10 as a tile of two elements (10 x 10√3, the second element
+  // in the middle): its 2 x 2 repeat has closed rings, and a torus of 12 x 6 tiles fills with the
+  // lattice's 144 elements at its spacing.
+  const double h = 10.0 * std::sqrt(3.0);
+  geometry::Scene tile = testing::hexagonal_lattice(2, 2, 10.0, 3.0, 3.0);
+  tile.window = geometry::Box3(Vec3(0, 0, 0), Vec3(10, h, 0));
+  tile.elements = {{0, 0, Vec3(2.5, 0.25 * h, 0)}, {0, 0, Vec3(7.5, 0.75 * h, 0)}};
+  const Domain domain(geometry::Box3(Vec3(0, 0, 0), Vec3(120, 6 * h, 0)), 2, Boundary::torus);
+  const SeedAndGrow method(tile, Boundary::torus, domain, {});
+  const auto result = testing::run(method, 2);
+  EXPECT_NEAR(static_cast<double>(result.scene.elements.size()), 144.0, 0.02 * 144.0);
+  for (const double d : testing::nearest_distances(result.scene, domain)) EXPECT_NEAR(d, 10.0, 0.5);
+}
+
 TEST(SeedAndGrow, RefusesWhatItCannotGrow) {
   geometry::Scene two = testing::hexagonal_lattice(2, 2, 10.0, 3.0, 3.0);
   two.elements.resize(2);
