@@ -17,7 +17,7 @@ declare -A allowed=(
   [metrics]="core geometry"
   [report]="core geometry model synthesis render io metrics evaluation"
   [evaluation]="core geometry model synthesis sample fit metrics"
-  [compare]="core geometry model synthesis fit"
+  [compare]="core geometry model synthesis sample fit"
 )
 status=0
 for dir in libshapeproc/*/; do

@@ -2,65 +2,23 @@
 
 #include <cmath>
 #include <limits>
-#include <type_traits>
-#include <variant>
 
 #include "libshapeproc/evaluation/fidelity.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
-#include "libshapeproc/geometry/path.hpp"
+#include "libshapeproc/geometry/shape_size.hpp"
 
 namespace shapeproc::evaluation {
 
 namespace {
 
-// The size of a shape, unchanged by turning it: its radius about the centroid of its outline
-// points (vertices in 3D) and its filled area (2D; 0 in 3D and for points).
-struct Size {
-  double radius = 0.0, area = 0.0;
-};
-
-Size size_of(const geometry::Shape& shape) {
-  std::vector<geometry::Vec3> points;
-  double area = 0.0;
-  std::visit(
-      [&](const auto& g) {
-        using T = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<T, geometry::PlanarShape>) {
-          const double tolerance = 1e-3 * geometry::bounding_box(shape).sizes().norm();
-          for (const geometry::Drawable2& d : g.parts)
-            for (const geometry::Path2& path : d.paths) {
-              const std::vector<geometry::Vec2> line = geometry::flatten(path, tolerance);
-              for (const geometry::Vec2& p : line) points.emplace_back(p.x(), p.y(), 0.0);
-              if (d.filled()) area += geometry::signed_area(line);
-            }
-        } else if constexpr (std::is_same_v<T, geometry::MeshShape>) {
-          points = g.mesh.vertices;
-        }
-      },
-      shape.geometry);
-  Size s;
-  s.area = std::abs(area);
-  if (points.empty()) return s;
-  geometry::Vec3 centroid = geometry::Vec3::Zero();
-  for (const geometry::Vec3& p : points) centroid += p;
-  centroid /= static_cast<double>(points.size());
-  for (const geometry::Vec3& p : points) s.radius = std::max(s.radius, (p - centroid).norm());
-  return s;
-}
-
 // Sizes closer than this (in summed log ratios: about 1%) are one size.
 constexpr double kSameSize = 0.01;
 
-double size_distance(const Size& a, const Size& b) {
-  const double tiny = 1e-12;
-  return std::abs(std::log((a.radius + tiny) / (b.radius + tiny))) +
-         std::abs(std::log((a.area + tiny) / (b.area + tiny)));
-}
-
 // Classes whose elements cannot be told apart by size (a stroke and its turned copy, identical
 // shapes of two classes) are one kind here: an output element could not say which it is.
-void merge_classes_of_one_size(const geometry::Scene& exemplar, const std::vector<Size>& sizes,
+void merge_classes_of_one_size(const geometry::Scene& exemplar,
+                               const std::vector<geometry::ShapeSize>& sizes,
                                std::vector<std::string>& classes, std::vector<int>& element_class) {
   std::vector<int> parent(classes.size());
   for (std::size_t c = 0; c < parent.size(); ++c) parent[c] = static_cast<int>(c);
@@ -74,8 +32,8 @@ void merge_classes_of_one_size(const geometry::Scene& exemplar, const std::vecto
       if (elements[i].category != elements[j].category) continue;
       const int a = root(element_class[i]), b = root(element_class[j]);
       if (a == b) continue;
-      if (size_distance(sizes[static_cast<std::size_t>(elements[i].shape)],
-                        sizes[static_cast<std::size_t>(elements[j].shape)]) < kSameSize)
+      if (geometry::size_distance(sizes[static_cast<std::size_t>(elements[i].shape)],
+                                  sizes[static_cast<std::size_t>(elements[j].shape)]) < kSameSize)
         parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
     }
   std::vector<int> renumbered(classes.size(), -1);
@@ -124,15 +82,15 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
     element_class.push_back(c);
   }
   // Each exemplar shape's size, once; output shapes measured once each.
-  std::vector<Size> exemplar_size;
-  for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(size_of(s));
+  std::vector<geometry::ShapeSize> exemplar_size;
+  for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(geometry::shape_size(s));
   merge_classes_of_one_size(exemplar, exemplar_size, mix.classes, element_class);
   mix.exemplar.assign(mix.classes.size(), 0);
   mix.output.assign(mix.classes.size(), 0);
   for (const int c : element_class) ++mix.exemplar[static_cast<std::size_t>(c)];
 
-  std::vector<Size> output_size;
-  for (const geometry::Shape& s : output.shapes) output_size.push_back(size_of(s));
+  std::vector<geometry::ShapeSize> output_size;
+  for (const geometry::Shape& s : output.shapes) output_size.push_back(geometry::shape_size(s));
   for (const geometry::Element& o : output.elements) {
     const std::string& name = output.categories[static_cast<std::size_t>(o.category)].name;
     double best = std::numeric_limits<double>::infinity();
@@ -140,8 +98,8 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
     for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
       const geometry::Element& e = exemplar.elements[i];
       if (exemplar.categories[static_cast<std::size_t>(e.category)].name != name) continue;
-      const double d = size_distance(output_size[static_cast<std::size_t>(o.shape)],
-                                     exemplar_size[static_cast<std::size_t>(e.shape)]);
+      const double d = geometry::size_distance(output_size[static_cast<std::size_t>(o.shape)],
+                                               exemplar_size[static_cast<std::size_t>(e.shape)]);
       if (d < best) {
         best = d;
         chosen = element_class[i];

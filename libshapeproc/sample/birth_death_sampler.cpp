@@ -106,6 +106,10 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                 "sample", "a fixed element has a category or shape the model does not have");
     core::check(domain_.contains(e.position), "sample", "a fixed element lies outside the domain");
   }
+  for (const geometry::Element& e : options_.start)
+    core::check(e.category >= 0 && e.category < categories && e.shape >= 0 &&
+                    e.shape < static_cast<int>(shape_space_.shapes.size()),
+                "sample", "a start element has a category or shape the model does not have");
   log_measure_categories_ = std::log(free_measure) + std::log(static_cast<double>(categories));
   shift_radius_ = options_.shift_radius > 0   ? options_.shift_radius
                   : interaction_->range() > 0 ? 0.5 * interaction_->range()
@@ -129,7 +133,22 @@ class ShapeProcessSampler::Chain {
       log_density_ += s_.log_beta_[static_cast<std::size_t>(e.category)] + term;
     }
     fixed_ = state_.size();
+    for (const Element& e : s_.options_.start) {
+      const bool free_place = s_.free_region_.isEmpty() ? s_.domain_.contains(e.position)
+                                                        : s_.free_region_.contains(e.position);
+      const double term = free_place ? log_lambda_over_beta(e, -1) : kMinusInfinity;
+      if (!std::isfinite(term)) {
+        ++start_left_out_;
+        continue;
+      }
+      state_.add(e, local_term_, links_);
+      log_density_ += s_.log_beta_[static_cast<std::size_t>(e.category)] + term;
+      ++start_kept_;
+    }
   }
+
+  int start_kept() const { return start_kept_; }
+  int start_left_out() const { return start_left_out_; }
 
   // One step: with probability p_s a shift, otherwise a birth or a death with equal probability.
   void step() {
@@ -276,6 +295,7 @@ class ShapeProcessSampler::Chain {
   double local_term_ = 0.0;   // of the last proposal
   double log_density_ = 0.0;  // unnormalised, tracked incrementally
   int fixed_ = 0;             // fixed elements (border correction), at ranks 0 … fixed_ − 1
+  int start_kept_ = 0, start_left_out_ = 0;  // of the start configuration
   MoveCounts moves_;
 };
 
@@ -314,6 +334,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   if (automatic && control.progress) control.progress(step, step);
   result.moves = chain.moves();
   result.statistics = chain.statistics();
+  result.start_kept = chain.start_kept();
+  result.start_left_out = chain.start_left_out();
   result.scene = shape_space_;
   result.scene.elements = chain.elements();
   return result;
@@ -339,6 +361,10 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   out.counters = {{"births accepted", ratio(m.births_accepted, m.births_proposed)},
                   {"deaths", ratio(m.deaths_accepted, m.deaths_proposed)},
                   {"shifts", ratio(m.shifts_accepted, m.shifts_proposed)}};
+  if (!options_.start.empty()) {
+    out.counters.emplace_back("start elements kept", std::to_string(sampled.start_kept));
+    out.counters.emplace_back("start elements left out", std::to_string(sampled.start_left_out));
+  }
   return out;
 }
 

@@ -50,6 +50,10 @@ struct SamplerOptions {
   // the fixed ones; its statistics t(x) count both, the fixed part being constant.
   std::vector<geometry::Element> fixed;
   geometry::Box3 free_region;
+  // Elements the chain starts from, instead of the empty configuration: moved and removed like
+  // any other (a hybrid's start, compare/hybrid_synthesis.hpp). One outside the domain or that the
+  // hard core forbids beside those before it is left out (SampleResult::start_left_out).
+  std::vector<geometry::Element> start;
 };
 
 // How often each move was proposed and accepted.
@@ -69,6 +73,7 @@ struct SampleResult {
   // category, then pairs per interaction parameter) at the end, and every observe_every steps.
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
+  int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
 };
 
 // The shape process as a synthesis method: construction validates the model and options and

@@ -161,6 +161,30 @@ TEST(CliSynthesizeDavison, APaletteGrowsTwoExemplarsSideBySide) {
       "--palette is for --method davison");
 }
 
+TEST(CliSynthesizeHybrid, RegionGrowingThenTheSamplerWithItsRecord) {
+  const testing::TempDir dir;
+  const std::string out = dir.file("hybrid.svg").string();
+  const std::string dots = data("svg/dots-random.svg");
+  const Result r =
+      run_cli({"synthesize", dots, "--method", "hybrid", "--start-from", "davison", "-o", out,
+               "--size", "300,300", "--seed", "2", "--iterations", "3000", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("hybrid: davison's output, then the shape-process sampler"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("start elements kept"), std::string::npos) << r.out;
+  const std::string svg = testing::read_file(out);
+  for (const char* part : {"&quot;method&quot;:&quot;hybrid&quot;", "hybrid.start_from",
+                           "region-growing", "start.growth.ratio"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  expect_one_line_error(
+      run_cli({"synthesize", dots, "-o", out, "--size", "100,100", "--start-from", "ma-em"}), 2,
+      "--start-from is for --method hybrid");
+  expect_one_line_error(run_cli({"synthesize", dots, "--method", "hybrid", "-o", out, "--size",
+                                 "100,100", "--ratio", "3"}),
+                        2, "--ratio is for --method davison");
+}
+
 TEST(CliSynthesizeIjiri, GrowsATileWithFlipsSeedsAndItsRecord) {
   const testing::TempDir dir;
   const std::string out = dir.file("seeded.svg").string();

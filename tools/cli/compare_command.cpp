@@ -3,7 +3,8 @@
 // the outputs at one scale, each output's verdicts, the time each method took and the metrics
 // (the shape-process paper's Fig. 5 on the user's own drawing). Each method runs exactly as
 // `synthesize --method M` would, with the same seed; centroid and hausdorff are the shape process
-// with those distances (the paper's Fig. 11).
+// with those distances (the paper's Fig. 11); hybrid-M is `synthesize --method hybrid
+// --start-from M`.
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -21,8 +22,9 @@ namespace shapeproc::cli {
 
 namespace {
 
-const std::vector<std::string> kMethods = {"shape-process", "ma-em",    "ijiri",
-                                           "davison",       "centroid", "hausdorff"};
+const std::vector<std::string> kMethods = {"shape-process", "ma-em",          "ijiri",
+                                           "davison",       "centroid",       "hausdorff",
+                                           "hybrid-ma-em",  "hybrid-davison", "hybrid-ijiri"};
 
 std::vector<std::string> parse_methods(const std::string& list) {
   std::vector<std::string> out;
@@ -31,8 +33,8 @@ std::vector<std::string> parse_methods(const std::string& list) {
   while (std::getline(in, name, ',')) {
     if (std::find(kMethods.begin(), kMethods.end(), name) == kMethods.end())
       throw core::UsageError("--methods: unknown method '" + name +
-                             "' (expected shape-process, ma-em, ijiri, davison, centroid or "
-                             "hausdorff)");
+                             "' (expected shape-process, ma-em, ijiri, davison, centroid, "
+                             "hausdorff, hybrid-ma-em, hybrid-davison or hybrid-ijiri)");
     if (std::find(out.begin(), out.end(), name) != out.end())
       throw core::UsageError("--methods: '" + name + "' is given twice");
     out.push_back(name);
@@ -53,6 +55,8 @@ std::vector<std::string> synthesize_arguments(const std::string& method,
   a.insert(a.end(), {"--size", size, "--seed", std::to_string(seed), "-o", output});
   if (method == "centroid" || method == "hausdorff") {
     a.insert(a.end(), {"--distance", method});
+  } else if (method.rfind("hybrid-", 0) == 0) {
+    a.insert(a.end(), {"--method", "hybrid", "--start-from", method.substr(7)});
   } else if (method != "shape-process") {
     a.insert(a.end(), {"--method", method});
   }
@@ -86,9 +90,11 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
   command->add_option("--seed", args->seed, "seed of every method")->capture_default_str();
   command
       ->add_option("--methods", args->methods,
-                   "comma-separated: shape-process, ma-em, ijiri, davison, centroid, hausdorff "
-                   "(centroid and hausdorff: the shape process with that distance; hausdorff "
-                   "costs about 7.6 ms per sampler step and is left out of the defaults)")
+                   "comma-separated: shape-process, ma-em, ijiri, davison, centroid, hausdorff, "
+                   "hybrid-ma-em, hybrid-davison, hybrid-ijiri (centroid and hausdorff: the shape "
+                   "process with that distance; hausdorff costs about 7.6 ms per sampler step and "
+                   "is left out of the defaults; hybrid-M: M's output, then the shape-process "
+                   "sampler)")
       ->capture_default_str();
   args->reader.add_to(*command);
   args->metrics.add_to(*command);

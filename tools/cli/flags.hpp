@@ -71,6 +71,8 @@ struct SampleFlags {
   void check(const std::string& output, int dimension = 0) const;
   // The output domain (--size, --boundary, --domain, --intensity) for a `dimension`-D model.
   geometry::Domain domain(int dimension) const;
+  // The sampler's options from --iterations, --shift-probability, --shift-radius and --trace.
+  sample::SamplerOptions sampler_options() const;
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.

@@ -153,14 +153,18 @@ geometry::Domain SampleFlags::domain(int dimension) const {
 int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
                      synthesis::SynthesisRecord record, std::ostream& out) const {
   check(output, model.dimension);
+  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), sampler_options());
+  return run(sampler, output, std::move(record), out);
+}
+
+sample::SamplerOptions SampleFlags::sampler_options() const {
   sample::SamplerOptions options;
   options.iterations = iterations;
   options.shift_probability = shift_probability;
   options.shift_radius = shift_radius;
   if (!trace.empty())
     options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;
-  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), options);
-  return run(sampler, output, std::move(record), out);
+  return options;
 }
 
 int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::string& output,

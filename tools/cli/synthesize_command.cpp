@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "libshapeproc/compare/hybrid_synthesis.hpp"
 #include "libshapeproc/compare/neighbourhood_em.hpp"
 #include "libshapeproc/compare/region_growing.hpp"
 #include "libshapeproc/compare/seed_and_grow.hpp"
@@ -39,21 +40,49 @@ void reject_options(const CLI::App& command, const std::vector<std::string>& nam
   }
 }
 
+struct SynthesizeArguments {
+  std::string input, output, model, method = "shape-process", start_from = "ma-em";
+  FitFlags fit;
+  ReaderFlags reader;
+  SampleFlags sample;
+  EmFlags em;
+  GrowthFlags growth;
+  IjiriFlags ijiri;
+  std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only,
+      growth_overlap;
+};
+
+// --method hybrid: the start method's output, then the shape-process sampler at `model`.
+int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& model,
+               synthesis::SynthesisRecord record, std::ostream& out) {
+  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  const geometry::Boundary boundary =
+      args.reader.tile ? geometry::Boundary::torus : geometry::Boundary::open;
+  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
+  std::unique_ptr<synthesis::Synthesizer> start;
+  if (args.start_from == "ma-em") {
+    start = std::make_unique<compare::NeighbourhoodEm>(exemplar, boundary, domain,
+                                                       args.em.options(domain, 0));
+  } else if (args.start_from == "davison") {
+    start = std::make_unique<compare::RegionGrowing>(exemplar, boundary, domain,
+                                                     args.growth.options(args.em));
+  } else {
+    if (exemplar.dimension != 2)
+      throw core::UsageError(args.input + ": --start-from ijiri grows 2D exemplars only");
+    start = std::make_unique<compare::SeedAndGrow>(exemplar, boundary, domain,
+                                                   args.ijiri.options(exemplar, "", "", domain));
+  }
+  const compare::HybridSynthesis method(std::move(start), model, domain,
+                                        args.sample.sampler_options());
+  out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
+  args.sample.verbosity.stage("synthesising");
+  return args.sample.run(method, args.output, std::move(record), out);
+}
+
 }  // namespace
 
 void add_synthesize_command(CLI::App& app, Action& action,
                             const std::vector<std::string>& arguments) {
-  struct SynthesizeArguments {
-    std::string input, output, model, method = "shape-process";
-    FitFlags fit;
-    ReaderFlags reader;
-    SampleFlags sample;
-    EmFlags em;
-    GrowthFlags growth;
-    IjiriFlags ijiri;
-    std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only,
-        growth_overlap;
-  };
   auto args = std::make_shared<SynthesizeArguments>();
   CLI::App* command = app.add_subcommand(
       "synthesize",
@@ -64,10 +93,18 @@ void add_synthesize_command(CLI::App& app, Action& action,
   command
       ->add_option("--method", args->method,
                    "shape-process, ma-em (the neighbourhood EM of Ma et al. 2011), davison "
-                   "(region growing, Davison et al. 2018) or ijiri (seed-and-grow, Ijiri et al. "
-                   "2008)")
-      ->check(CLI::IsMember({"shape-process", "ma-em", "davison", "ijiri"}))
+                   "(region growing, Davison et al. 2018), ijiri (seed-and-grow, Ijiri et al. "
+                   "2008) or hybrid (--start-from's output, then the shape-process sampler at the "
+                   "fitted model)")
+      ->check(CLI::IsMember({"shape-process", "ma-em", "davison", "ijiri", "hybrid"}))
       ->capture_default_str();
+  CLI::Option* start_from =
+      command
+          ->add_option("--start-from", args->start_from,
+                       "hybrid: the method whose output the sampler starts from (its default "
+                       "options)")
+          ->check(CLI::IsMember({"ma-em", "davison", "ijiri"}))
+          ->capture_default_str();
   std::size_t before = command->get_options().size();
   command->add_option("--model", args->model, "also write the fitted model (.json)");
   args->fit.add_to(*command);
@@ -103,11 +140,14 @@ void add_synthesize_command(CLI::App& app, Action& action,
   args->growth_overlap = options_since(*command, before);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false);
-  command->callback([&action, args, arguments, command] {
-    action = [args, arguments, command](std::ostream& out) {
+  command->callback([&action, args, arguments, command, start_from] {
+    action = [args, arguments, command, start_from](std::ostream& out) {
       const bool em = args->method == "ma-em", growth = args->method == "davison";
-      if (args->method != "shape-process")
-        reject_options(*command, args->fit_only, "shape-process");
+      const bool hybrid = args->method == "hybrid";
+      if (args->method != "shape-process" && !hybrid)
+        reject_options(*command, args->fit_only, "shape-process or hybrid");
+      if (!hybrid && start_from->count() > 0)
+        throw core::UsageError("--start-from is for --method hybrid");
       if (!em) reject_options(*command, args->em_only, "ma-em");
       if (!growth) reject_options(*command, args->growth_only, "davison");
       const bool ijiri = args->method == "ijiri";
@@ -226,6 +266,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.options = flatten_options("fit", args->fit.to_json());
       for (auto& pair : flatten_options("reader", args->reader.to_json()))
         record.options.push_back(std::move(pair));
+      if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out);
     };
