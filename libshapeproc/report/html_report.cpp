@@ -343,6 +343,20 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     }
     html << "</table>\n";
   }
+  if (!report.envelopes.empty()) {
+    html << "<h3>Simulation envelopes</h3>\n<p>" << report.envelope_samples
+         << " samples of the model on the exemplar's window: for each nearest-neighbour CDF, the "
+            "share of distances in [0, R] where the exemplar's curve leaves the samples' "
+            "pointwise band (a curve of the model itself leaves it with probability 2/"
+         << report.envelope_samples + 1 << " at each distance). Passes at most "
+         << num(100 * evaluation::kEnvelopeOutsideLimit, 3) << "%.</p>\n<table>\n"
+         << "<tr><th>curve</th><th>outside the band</th></tr>\n";
+    for (const evaluation::EnvelopeCurve& e : report.envelopes)
+      html << "<tr><td>" << escape(e.label) << "</td><td class=\"" << (e.passes() ? "good" : "bad")
+           << "\">" << num(100 * e.outside, 3) << "% " << (e.passes() ? "✓" : "✗")
+           << "</td></tr>\n";
+    html << "</table>\n";
+  }
 
   html << "<h2>Distances</h2>\n" << legend(report) << "\n<div class=\"charts\">\n";
   const double range = ex.range;

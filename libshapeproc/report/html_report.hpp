@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "libshapeproc/evaluation/envelope.hpp"
 #include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
@@ -45,6 +46,8 @@ struct Report {
   std::vector<std::pair<std::string, double>> timings;  // stage, seconds
   std::vector<GoodnessRow> goodness;  // the model's goodness of fit, when it has one
   std::string goodness_note;          // how the fit ended ("converged in 12 iterations")
+  std::vector<evaluation::EnvelopeCurve> envelopes;  // the model's, on the exemplar's window
+  int envelope_samples = 0;
 };
 
 // Writes `directory`/index.html and the pictures exemplar.png, output-1.png, … (and

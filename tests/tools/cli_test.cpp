@@ -391,6 +391,8 @@ TEST(CliReport, WritesParsableHtmlSvgAndPictures) {
   EXPECT_TRUE(html.select_node("//h2[text()='Verdicts']"));
   // The maximum-likelihood fit's goodness of fit: a row per sufficient statistic.
   ASSERT_TRUE(html.select_node("//h2[text()='Goodness of fit']"));
+  EXPECT_TRUE(html.select_node("//h3[text()='Simulation envelopes']"));
+  EXPECT_TRUE(html.select_node("//td[text()='G, all directions']"));
   EXPECT_TRUE(html.select_node("//td[text()='elements red']") ||
               html.select_node("//td[starts-with(text(), 'elements ')]"));
 

@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/evaluation/envelope.hpp"
 #include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -121,7 +122,17 @@ int write_report(const ReportRequest& request, std::ostream& out) {
          outputs[i].record ? outputs[i].record->summary() : std::string(), &verdicts[i]});
   }
   r.model = model.get();
-  if (model) read_goodness(*model, r);
+  if (model) {
+    read_goodness(*model, r);
+    const auto envelopes_start = std::chrono::steady_clock::now();
+    const evaluation::EnvelopeOptions envelope;
+    r.envelopes =
+        evaluation::nearest_envelopes(exemplar.scene, exemplar.boundary, *model, envelope);
+    r.envelope_samples = envelope.samples;
+    r.timings.emplace_back(
+        "simulation envelopes",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - envelopes_start).count());
+  }
   r.model_label = request.model;
   r.command = request.command;
   if (model && !model->fit_json.empty()) {
