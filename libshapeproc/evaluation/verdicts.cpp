@@ -43,7 +43,8 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
                             const geometry::Scene& output, geometry::Boundary output_boundary,
                             const metrics::SceneStatistics& output_statistics,
                             const metrics::Comparison& comparison,
-                            const metrics::NeighbourhoodDistance* neighbourhood) {
+                            const metrics::NeighbourhoodDistance* neighbourhood,
+                            const model::ShapeProcessModel* model) {
   Judged j;
   j.exemplar = &exemplar_statistics;
   j.output = &output_statistics;
@@ -52,6 +53,8 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
   j.exemplar_order = metrics::bond_order(exemplar, exemplar_boundary);
   j.output_order = metrics::bond_order(output, output_boundary);
   j.mix = shape_mix(exemplar, output);
+  if (model)
+    j.model = model_statistics(exemplar, exemplar_boundary, output, output_boundary, *model);
   return j;
 }
 
@@ -155,6 +158,27 @@ std::vector<Verdict> judge(const Judged& j) {
     if (!(w1 <= 0.15)) {
       v.outcome = Outcome::fail;
       v.problem = "nearest distances differ";
+    }
+    out.push_back(v);
+  }
+
+  // The fitted model's own statistics: pairs per band and element.
+  if (j.model && j.model->worst >= 0) {
+    const ModelStatistics& m = *j.model;
+    const auto w = static_cast<std::size_t>(m.worst);
+    const double worst = std::abs(m.z[w]);
+    Verdict v{
+        "model statistics",
+        worst,
+        "|z| " + number(worst, 1) + " (" + m.names[w] + ": " + number(m.output[w]) + " against " +
+            number(m.exemplar[w]) + " pairs per element)",
+        "|z| ≤ " + number(m.critical, 1) + " (1% over " + std::to_string(m.z.size()) + " bands)",
+        Outcome::pass,
+        ""};
+    v.brief = number(worst, 1);
+    if (!(worst <= m.critical)) {
+      v.outcome = Outcome::fail;
+      v.problem = "pairs in a band differ";
     }
     out.push_back(v);
   }

@@ -13,13 +13,17 @@
 //                  ±0.2 of the exemplar's ("loses the exemplar's lattice", "more regular");
 //   spacing        W1 of the nearest-neighbour distributions over the exemplar's mean nearest
 //                  distance: passes at most 0.15;
+//   model statistics  with a fitted model, its pairs per band and element against the
+//                  exemplar's (model_statistics.hpp): passes within the Bonferroni bound;
 //   neighbourhood  Ma's average neighbourhood distance (Davison et al. eq. 5) in a², shown with
 //                  no rule: it has no scale that holds across exemplars (0 for a copy).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "libshapeproc/evaluation/model_statistics.hpp"
 #include "libshapeproc/evaluation/shape_mix.hpp"
 #include "libshapeproc/metrics/bond_order.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
@@ -43,6 +47,7 @@ struct Verdict {
 // their long-range order and the shape mix.
 struct Judged {
   const metrics::SceneStatistics* exemplar = nullptr;
+  std::optional<ModelStatistics> model;  // with a fitted model only
   const metrics::SceneStatistics* output = nullptr;
   const metrics::Comparison* comparison = nullptr;
   const metrics::NeighbourhoodDistance* neighbourhood = nullptr;  // optional
@@ -56,7 +61,8 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
                             const geometry::Scene& output, geometry::Boundary output_boundary,
                             const metrics::SceneStatistics& output_statistics,
                             const metrics::Comparison& comparison,
-                            const metrics::NeighbourhoodDistance* neighbourhood);
+                            const metrics::NeighbourhoodDistance* neighbourhood,
+                            const model::ShapeProcessModel* model = nullptr);
 
 std::vector<Verdict> judge(const Judged& judged);
 

@@ -44,7 +44,24 @@ struct Judgement {
   }
 };
 
-Judgement judge_against(const geometry::Scene& exemplar, const geometry::Scene& output) {
+// A model of category "a" measured between centres in one direction: hard core below 0, bands
+// [0, 8) and [8, 12), so that a lattice of spacing 10 has 2 pairs per element in the second.
+model::ShapeProcessModel banded_model() {
+  model::ShapeProcessModel m;
+  m.categories.push_back({"a", 0.01});
+  m.measurement.distance = geometry::DistanceKind::centroid;
+  m.measurement.directions = 1;
+  model::PairInteraction pair;
+  model::AxisParameters axis;
+  axis.thresholds = {0.0, 8.0, 12.0};
+  axis.gammas = {1.0, 1.0};
+  pair.axes = {axis};
+  m.interactions = {pair};
+  return m;
+}
+
+Judgement judge_against(const geometry::Scene& exemplar, const geometry::Scene& output,
+                        const model::ShapeProcessModel* model = nullptr) {
   metrics::StatisticsOptions options;
   options.measurement.periodic = true;
   const metrics::SceneStatistics ex =
@@ -54,7 +71,7 @@ Judgement judge_against(const geometry::Scene& exemplar, const geometry::Scene& 
       metrics::compute_statistics(output, options, core::Random(1));
   const metrics::Comparison comparison = metrics::compare(out, ex);
   const Judged judged = measure_for_verdicts(exemplar, Boundary::torus, ex, output, Boundary::torus,
-                                             out, comparison, nullptr);
+                                             out, comparison, nullptr, model);
   Judgement j;
   j.verdicts = judge(judged);
   j.line = summary(j.verdicts);
@@ -103,6 +120,28 @@ TEST(Verdicts, ALatticeTurnedIntoAScatterLosesItsOrder) {
   // A random scatter of squares at this density overlaps, and its spacing spreads.
   EXPECT_EQ(j["overlaps"].outcome, Outcome::fail);
   EXPECT_EQ(j.line.rfind("fails ", 0), 0u) << j.line;
+}
+
+TEST(Verdicts, TheModelsPairCountsPerBandAgainstTheExemplars) {
+  const model::ShapeProcessModel m = banded_model();
+  // The exemplar against itself: every band's rate equal, z = 0.
+  const Judgement same = judge_against(squares(20, 10.0, 200.0), squares(20, 10.0, 200.0), &m);
+  EXPECT_EQ(same["model statistics"].outcome, Outcome::pass);
+  EXPECT_DOUBLE_EQ(same["model statistics"].value, 0.0);
+  // Spacing 200/28: 2 pairs per element at 7.1 (band 1, none in the exemplar) and 2 at 10.1.
+  const Judgement dense =
+      judge_against(squares(20, 10.0, 200.0), squares(28, 200.0 / 28, 200.0), &m);
+  const Verdict& v = dense["model statistics"];
+  EXPECT_EQ(v.outcome, Outcome::fail);
+  EXPECT_NE(v.shown.find("pairs 0, axis 0, band 1: 2.00 against 0.00"), std::string::npos)
+      << v.shown;
+  // 1568 pairs against at least one: z = 2 / √(1/400² + 1568/784²) ≈ 2 / 0.051, far beyond.
+  EXPECT_GT(v.value, 20.0);
+  EXPECT_NE(v.rule.find("1% over 2 bands"), std::string::npos) << v.rule;
+  // Without a model there is no such check.
+  EXPECT_THROW(
+      judge_against(squares(20, 10.0, 200.0), squares(20, 10.0, 200.0))["model statistics"],
+      std::out_of_range);
 }
 
 }  // namespace

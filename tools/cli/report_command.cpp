@@ -110,7 +110,8 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   for (std::size_t i = 0; i < outputs.size(); ++i)
     verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
         exemplar.scene, exemplar.boundary, exemplar_eval.statistics, outputs[i].scene,
-        outputs[i].boundary, evals[i].statistics, *evals[i].comparison, &*evals[i].neighbourhood)));
+        outputs[i].boundary, evals[i].statistics, *evals[i].comparison, &*evals[i].neighbourhood,
+        model.get())));
 
   report::Report r;
   r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics,
