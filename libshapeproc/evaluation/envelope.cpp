@@ -13,10 +13,11 @@ namespace shapeproc::evaluation {
 
 namespace {
 
-// The nearest-neighbour CDFs of a scene at `r`: all directions first, then each axis.
-std::vector<std::vector<double>> nearest_cdfs(const geometry::Scene& scene,
-                                              const metrics::StatisticsOptions& options,
-                                              const std::vector<double>& r) {
+// The nearest-neighbour CDFs of a scene at `r`, all directions first, then each axis; last, the
+// pair correlation g in its bins (NaN where undefined, as compute_statistics gives it).
+std::vector<std::vector<double>> curves_of(const geometry::Scene& scene,
+                                           const metrics::StatisticsOptions& options,
+                                           const std::vector<double>& r) {
   const metrics::SceneStatistics s = metrics::compute_statistics(scene, options, core::Random(1));
   std::vector<std::vector<double>> out;
   const auto cdf = [&](const metrics::Distribution& d) {
@@ -26,6 +27,7 @@ std::vector<std::vector<double>> nearest_cdfs(const geometry::Scene& scene,
   };
   out.push_back(cdf(s.all.nearest));
   for (const metrics::DirectionalStatistics& a : s.axes) out.push_back(cdf(a.nearest));
+  out.push_back(s.correlation);
   return out;
 }
 
@@ -39,7 +41,7 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   metrics::StatisticsOptions stats;
   stats.measurement = model.measurement_options(periodic);
   stats.measurement.proxy.tolerance = 0.002;
-  stats.offset_samples = 256;  // g(r) is not used here
+  stats.offset_samples = 4096;  // g's reference measure: enough for a band of 19 samples
   const double range =
       std::pow(exemplar.window_measure() /
                    std::max<double>(1.0, static_cast<double>(exemplar.elements.size())),
@@ -48,9 +50,19 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   std::vector<double> r;
   for (int i = 1; i <= options.points; ++i) r.push_back(range * i / options.points);
 
-  const std::vector<std::vector<double>> observed = nearest_cdfs(exemplar, stats, r);
-  std::vector<std::vector<double>> low(observed.size(), std::vector<double>(r.size(), 2.0)),
-      high(observed.size(), std::vector<double>(r.size(), -1.0));
+  const std::vector<std::vector<double>> observed = curves_of(exemplar, stats, r);
+  const std::vector<double> g_r =
+      metrics::compute_statistics(exemplar, stats, core::Random(1)).correlation_r;
+  std::vector<std::vector<double>> low, high;
+  for (const std::vector<double>& c : observed) {
+    low.emplace_back(c.size(), std::numeric_limits<double>::infinity());
+    high.emplace_back(c.size(), -std::numeric_limits<double>::infinity());
+  }
+  const auto widen = [&](std::size_t c, std::size_t i, double value) {
+    if (!std::isfinite(value)) return;
+    low[c][i] = std::min(low[c][i], value);
+    high[c][i] = std::max(high[c][i], value);
+  };
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
   sample::SamplerOptions sampling;
   sampling.iterations = options.steps;
@@ -58,43 +70,46 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   for (int k = 0; k < options.samples; ++k) {
     core::Random random(options.seed + static_cast<std::uint64_t>(k));
     const geometry::Scene sampled = sampler.sample(random).scene;
-    if (sampled.elements.empty()) {
-      for (std::size_t c = 0; c < observed.size(); ++c)
-        for (std::size_t i = 0; i < r.size(); ++i) {
-          low[c][i] = std::min(low[c][i], 0.0);
-          high[c][i] = std::max(high[c][i], 0.0);
-        }
+    if (sampled.elements.size() < 2) {  // no neighbours: every CDF 0, g undefined
+      for (std::size_t c = 0; c + 1 < observed.size(); ++c)
+        for (std::size_t i = 0; i < r.size(); ++i) widen(c, i, 0.0);
       continue;
     }
-    const std::vector<std::vector<double>> curves = nearest_cdfs(sampled, stats, r);
+    const std::vector<std::vector<double>> curves = curves_of(sampled, stats, r);
     for (std::size_t c = 0; c < observed.size() && c < curves.size(); ++c)
-      for (std::size_t i = 0; i < r.size(); ++i) {
-        low[c][i] = std::min(low[c][i], curves[c][i]);
-        high[c][i] = std::max(high[c][i], curves[c][i]);
-      }
+      for (std::size_t i = 0; i < observed[c].size() && i < curves[c].size(); ++i)
+        widen(c, i, curves[c][i]);
   }
 
   std::vector<EnvelopeCurve> out;
-  const int axes = static_cast<int>(observed.size()) - 1;
+  const int axes = static_cast<int>(observed.size()) - 2;
   for (std::size_t c = 0; c < observed.size(); ++c) {
     EnvelopeCurve e;
+    const bool g = c + 1 == observed.size();
     if (c == 0) {
       e.label = "G, all directions";
+    } else if (g) {
+      e.label = "g(r), all directions";
     } else {
       char text[64];
       std::snprintf(text, sizeof text, "G, axis %d (%g°)", static_cast<int>(c) - 1,
                     exemplar.dimension == 2 ? 180.0 * static_cast<double>(c - 1) / axes : 0.0);
       e.label = exemplar.dimension == 2 ? text : "G, axis " + std::to_string(c - 1);
     }
-    e.r = r;
+    e.r = g ? g_r : r;
     e.exemplar = observed[c];
     e.low = low[c];
     e.high = high[c];
-    int outside = 0;
+    // Distances where the exemplar's curve or the band is undefined (g where no pair could be)
+    // are not judged.
+    int outside = 0, judged = 0;
     const double slack = 1e-9;
-    for (std::size_t i = 0; i < r.size(); ++i)
+    for (std::size_t i = 0; i < e.exemplar.size(); ++i) {
+      if (!std::isfinite(e.exemplar[i]) || !(e.low[i] <= e.high[i])) continue;
+      ++judged;
       outside += e.exemplar[i] < e.low[i] - slack || e.exemplar[i] > e.high[i] + slack;
-    e.outside = static_cast<double>(outside) / static_cast<double>(r.size());
+    }
+    e.outside = judged > 0 ? static_cast<double>(outside) / judged : 0.0;
     out.push_back(std::move(e));
   }
   return out;

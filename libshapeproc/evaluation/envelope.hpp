@@ -1,8 +1,9 @@
 // Simulation envelopes (the idea of spatstat's envelope(); Baddeley, Rubak and Turner 2015,
 // ch. 10): does the exemplar look like a sample of its fitted model? The model is sampled
 // `samples` times on the exemplar's own window and boundary; for each nearest-neighbour
-// distribution, over all directions (G) and per axis, the pointwise minimum and maximum of the
-// samples' CDFs form a band, and the exemplar's CDF is checked against it on a grid of distances.
+// distribution, over all directions (G) and per axis, and for the pair correlation g(r) on shape
+// distance, the pointwise minimum and maximum of the samples' curves form a band, and the
+// exemplar's curve is checked against it (CDFs on a grid of distances, g in its bins).
 // With 19 samples a curve of the model itself leaves the band at a given distance with
 // probability 2/20 (two-sided); an envelope check fails when the exemplar's curve is outside the
 // band over more than a quarter of the distances.
@@ -21,7 +22,7 @@ namespace shapeproc::evaluation {
 inline constexpr double kEnvelopeOutsideLimit = 0.25;
 
 struct EnvelopeCurve {
-  std::string label;  // "G, all directions", "G, axis 2 (90°)"
+  std::string label;  // "G, all directions", "G, axis 2 (90°)", "g(r), all directions"
   std::vector<double> r, exemplar, low, high;
   double outside = 0.0;  // share of r where the exemplar's CDF leaves [low, high]
   bool passes() const { return outside <= kEnvelopeOutsideLimit; }
