@@ -9,6 +9,8 @@ namespace shapeproc::compare {
 
 namespace {
 
+constexpr double kTouching = 1e-9;  // relative slack of "circles touch"
+
 double largest(const std::vector<double>& values) {
   double m = 0.0;
   for (const double v : values) m = std::max(m, v);
@@ -37,7 +39,10 @@ bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
   bool hit = false;
   contacts_.for_each_candidate(p, [&](int o) {
     if (hit || o == skip) return;
-    const double reach = radius + exemplar_.radius[static_cast<std::size_t>(source(o))];
+    // Circles that touch do not overlap: bounding radii are half the nearest distance, so that
+    // an exemplar's nearest pairs touch exactly, and rounding must not part them.
+    const double reach = (radius + exemplar_.radius[static_cast<std::size_t>(source(o))]) *
+                         (1.0 - kTouching);
     hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
   });
   return hit;
