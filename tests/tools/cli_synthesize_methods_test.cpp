@@ -122,6 +122,10 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
   expect_one_line_error(grow({"--estimator", "mpl"}), 2,
                         "--estimator is for --method shape-process");
   expect_one_line_error(grow({"--ratio", "1"}), 2, "--ratio");
+  expect_one_line_error(grow({"--overlap", "none"}), 2, "--method davison tests circles or shapes");
+  // --overlap shapes reaches the method: its record says so.
+  ASSERT_EQ(grow({"--overlap", "shapes", "--quiet"}).code, 0);
+  EXPECT_NE(testing::read_file(out).find("growth.overlap&quot;,&quot;shapes"), std::string::npos);
   expect_one_line_error(grow({"--iterations", "5"}), 2, "--iterations");
   expect_one_line_error(
       run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--ratio", "3"}), 2,

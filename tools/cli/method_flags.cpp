@@ -160,6 +160,9 @@ compare::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
   o.ratio = ratio;
   o.bounding_radius = bounding_radius;
   o.optimise = !no_optimise;
+  if (overlap == "none")
+    throw core::UsageError("--overlap none: --method davison tests circles or shapes");
+  o.exact_overlap = overlap == "shapes";
   return o;
 }
 
