@@ -41,8 +41,8 @@ bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
     if (hit || o == skip) return;
     // Circles that touch do not overlap: bounding radii are half the nearest distance, so that
     // an exemplar's nearest pairs touch exactly, and rounding must not part them.
-    const double reach = (radius + exemplar_.radius[static_cast<std::size_t>(source(o))]) *
-                         (1.0 - kTouching);
+    const double reach =
+        (radius + exemplar_.radius[static_cast<std::size_t>(source(o))]) * (1.0 - kTouching);
     hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
   });
   return hit;
