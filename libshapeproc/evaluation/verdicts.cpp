@@ -132,8 +132,8 @@ std::vector<Verdict> judge(const Judged& j) {
     out.push_back(v);
   }
 
-  // Long-range order.
-  {
+  // Long-range order, of planar arrangements (a 3D scene's projection says little).
+  if (ex.dimension == 2) {
     const double order = j.output_order.order(), wanted = j.exemplar_order.order();
     Verdict v{"order",
               order,

@@ -9,7 +9,8 @@
 //   overlaps       share of elements in an overlapping pair (shape-exact): passes at most one
 //                  percentage point above the exemplar's;
 //   touching       touching pairs per element: passes within ±max(0.1, half the exemplar's);
-//   order          long-range order max(|⟨ψ4⟩|, |⟨ψ6⟩|) (metrics/bond_order.hpp): passes within
+//   order          (2D) long-range order max(|⟨ψ4⟩|, |⟨ψ6⟩|) (metrics/bond_order.hpp): passes
+//   within
 //                  ±0.2 of the exemplar's ("loses the exemplar's lattice", "more regular");
 //   spacing        W1 of the nearest-neighbour distributions over the exemplar's mean nearest
 //                  distance: passes at most 0.15;

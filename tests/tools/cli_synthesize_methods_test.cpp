@@ -165,6 +165,21 @@ TEST(CliSynthesizeDavison, APaletteGrowsTwoExemplarsSideBySide) {
       "--palette is for --method davison");
 }
 
+TEST(CliSynthesizeDavison, A3DOutputIsMeasuredOnItsDomain) {
+  // A mesh file has no window: its metrics take the domain box from its record, not the
+  // elements' bounds (which wrapped elements overhang on a torus).
+  const testing::TempDir dir;
+  const std::string out = dir.file("grown.obj").string();
+  const Result r =
+      run_cli({"synthesize", data("mesh/pebbles.obj"), "--method", "davison", "--neighbourhood",
+               "1", "--size", "22,22,5", "--seed", "1", "-o", out, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Result stats = run_cli({"stats", out, "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_NEAR(nlohmann::json::parse(stats.out).at("window_measure").get<double>(), 22.0 * 22 * 5,
+              1e-9);
+}
+
 TEST(CliSynthesizeHybrid, RegionGrowingThenTheSamplerWithItsRecord) {
   const testing::TempDir dir;
   const std::string out = dir.file("hybrid.svg").string();

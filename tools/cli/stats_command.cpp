@@ -144,6 +144,14 @@ EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& 
   io::ReaderOptions options = reader.options();
   if (e.record) options.tile = false;
   e.scene = io::read_scene(file, options);
+  // A synthesised output's window is its domain box, which its record holds: mesh files have no
+  // window, and their elements' bounds (wrapped across a torus) are not it.
+  if (e.record && static_cast<int>(e.record->size.size()) == e.scene.dimension) {
+    geometry::Vec3 size = geometry::Vec3::Zero();
+    for (int axis = 0; axis < e.scene.dimension; ++axis)
+      size[axis] = e.record->size[static_cast<std::size_t>(axis)];
+    e.scene.window = geometry::Box3(geometry::Vec3::Zero(), size);
+  }
   if (boundary == "torus") {
     e.boundary = geometry::Boundary::torus;
   } else if (boundary == "auto" && e.record) {
