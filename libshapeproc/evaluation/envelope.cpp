@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -91,10 +91,9 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
     } else if (g) {
       e.label = "g(r), all directions";
     } else {
-      char text[64];
-      std::snprintf(text, sizeof text, "G, axis %d (%g°)", static_cast<int>(c) - 1,
-                    exemplar.dimension == 2 ? 180.0 * static_cast<double>(c - 1) / axes : 0.0);
-      e.label = exemplar.dimension == 2 ? text : "G, axis " + std::to_string(c - 1);
+      e.label = "G, axis " + std::to_string(c - 1);
+      if (exemplar.dimension == 2)
+        e.label += " (" + core::format_general(180.0 * static_cast<double>(c - 1) / axes, 6) + "°)";
     }
     e.r = g ? g_r : r;
     e.exemplar = observed[c];

@@ -1,7 +1,9 @@
 #include "libshapeproc/evaluation/shape_mix.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "libshapeproc/evaluation/fidelity.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
@@ -89,20 +91,36 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
   mix.output.assign(mix.classes.size(), 0);
   for (const int c : element_class) ++mix.exemplar[static_cast<std::size_t>(c)];
 
+  // The exemplar's kinds of element, each (category, shape) once in the order met: every element
+  // of a kind has the kind's class.
+  struct Kind {
+    const std::string* category;
+    geometry::ShapeSize size;
+    int shape_class;
+  };
+  std::vector<Kind> kinds;
+  std::vector<std::pair<int, int>> seen;
+  for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
+    const geometry::Element& e = exemplar.elements[i];
+    if (std::find(seen.begin(), seen.end(), std::make_pair(e.category, e.shape)) != seen.end())
+      continue;
+    seen.emplace_back(e.category, e.shape);
+    kinds.push_back({&exemplar.categories[static_cast<std::size_t>(e.category)].name,
+                     exemplar_size[static_cast<std::size_t>(e.shape)], element_class[i]});
+  }
   std::vector<geometry::ShapeSize> output_size;
   for (const geometry::Shape& s : output.shapes) output_size.push_back(geometry::shape_size(s));
   for (const geometry::Element& o : output.elements) {
     const std::string& name = output.categories[static_cast<std::size_t>(o.category)].name;
     double best = std::numeric_limits<double>::infinity();
     int chosen = -1;
-    for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
-      const geometry::Element& e = exemplar.elements[i];
-      if (exemplar.categories[static_cast<std::size_t>(e.category)].name != name) continue;
-      const double d = geometry::size_distance(output_size[static_cast<std::size_t>(o.shape)],
-                                               exemplar_size[static_cast<std::size_t>(e.shape)]);
+    for (const Kind& k : kinds) {
+      if (*k.category != name) continue;
+      const double d =
+          geometry::size_distance(output_size[static_cast<std::size_t>(o.shape)], k.size);
       if (d < best) {
         best = d;
-        chosen = element_class[i];
+        chosen = k.shape_class;
       }
     }
     if (chosen < 0)

@@ -2,17 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::evaluation {
 
 namespace {
 
-std::string number(double v, int digits = 2) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
+std::string number(double v, int digits = 2) { return core::format_fixed(v, digits); }
 
 double total_intensity(const metrics::SceneStatistics& s) {
   double sum = 0.0;

@@ -1,11 +1,11 @@
 #include "libshapeproc/report/verdict_markdown.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "libshapeproc/core/atomic_file.hpp"
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::report {
 
@@ -27,11 +27,7 @@ void write_verdict_markdown(const Report& report, const std::filesystem::path& f
       if (!o.verdicts) continue;
       std::string seconds = "–";
       for (const auto& [stage, s] : report.timings)
-        if (stage == o.label) {
-          char text[32];
-          std::snprintf(text, sizeof text, "%.1f", s);
-          seconds = text;
-        }
+        if (stage == o.label) seconds = core::format_fixed(s, 1);
       out << "| " << o.label << " | " << (o.statistics ? o.statistics->elements() : 0) << " | "
           << seconds << " |";
       for (const std::string& c : checks) {

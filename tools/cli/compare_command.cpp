@@ -28,9 +28,8 @@ const std::vector<std::string> kMethods = {"shape-process", "ma-em",          "i
 
 std::vector<std::string> parse_methods(const std::string& list) {
   std::vector<std::string> out;
-  std::stringstream in(list);
-  std::string name;
-  while (std::getline(in, name, ',')) {
+  if (list.empty()) throw core::UsageError("--methods: no method given");
+  for (const std::string& name : io::split(list, ',')) {
     if (std::find(kMethods.begin(), kMethods.end(), name) == kMethods.end())
       throw core::UsageError("--methods: unknown method '" + name +
                              "' (expected shape-process, ma-em, ijiri, davison, centroid, "
@@ -39,7 +38,6 @@ std::vector<std::string> parse_methods(const std::string& list) {
       throw core::UsageError("--methods: '" + name + "' is given twice");
     out.push_back(name);
   }
-  if (out.empty()) throw core::UsageError("--methods: no method given");
   return out;
 }
 
