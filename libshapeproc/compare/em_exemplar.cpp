@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
-#include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/nearest_neighbours.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::compare {
@@ -26,32 +25,12 @@ const std::vector<int>& EmExemplar::samples_with_key(int key) const {
 double mean_nearest_distance(const std::vector<geometry::Element>& elements,
                              const geometry::Domain& domain) {
   if (elements.size() < 2) return 0.0;
-  // Grow a grid's cell until every element has a neighbour within it.
-  const Vec3 sizes = domain.sizes();
-  double cell =
-      std::pow(domain.measure() / static_cast<double>(elements.size()), 1.0 / domain.dimension());
-  for (;;) {
-    geometry::NeighbourGrid grid(domain.box(), domain.dimension(), cell, domain.periodic());
-    for (std::size_t i = 0; i < elements.size(); ++i)
-      grid.insert(static_cast<int>(i), elements[i].position);
-    double sum = 0.0;
-    bool all = true;
-    for (std::size_t i = 0; i < elements.size() && all; ++i) {
-      double best = std::numeric_limits<double>::infinity();
-      grid.for_each_candidate(elements[i].position, [&](int j) {
-        if (static_cast<std::size_t>(j) == i) return;
-        best = std::min(best, domain
-                                  .minimum_image(elements[static_cast<std::size_t>(j)].position -
-                                                 elements[i].position)
-                                  .norm());
-      });
-      if (best > cell) all = false;
-      sum += best;
-    }
-    if (all) return sum / static_cast<double>(elements.size());
-    if (cell > sizes.norm()) return sum / static_cast<double>(elements.size());
-    cell *= 2.0;
-  }
+  std::vector<Vec3> positions;
+  for (const geometry::Element& e : elements) positions.push_back(e.position);
+  double sum = 0.0;
+  for (const auto& nearest : geometry::nearest_offsets(positions, domain, 1))
+    sum += nearest.front().norm();
+  return sum / static_cast<double>(elements.size());
 }
 
 ElementClasses classify_elements(const geometry::Scene& scene) {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "libshapeproc/geometry/neighbour_grid.hpp"
+#include "libshapeproc/geometry/nearest_neighbours.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::metrics {
@@ -14,47 +14,6 @@ namespace shapeproc::metrics {
 namespace {
 
 using Complex = std::complex<double>;
-
-// The offsets to each element's `count` nearest others, nearest first: a grid whose cell holds
-// about 4 elements, searched again with larger cells for the few elements it leaves short.
-std::vector<std::vector<geometry::Vec3>> nearest_offsets(const std::vector<geometry::Vec3>& points,
-                                                         const geometry::Domain& domain,
-                                                         std::size_t count) {
-  std::vector<std::vector<geometry::Vec3>> out(points.size());
-  std::vector<std::size_t> short_of;
-  for (std::size_t i = 0; i < points.size(); ++i) short_of.push_back(i);
-  double cell =
-      2.0 * std::sqrt(domain.sizes().x() * domain.sizes().y() / static_cast<double>(points.size()));
-  const double largest = domain.sizes().head<2>().norm();
-  while (!short_of.empty()) {
-    geometry::NeighbourGrid grid(domain.box(), 2, cell, domain.periodic());
-    for (std::size_t i = 0; i < points.size(); ++i) grid.insert(static_cast<int>(i), points[i]);
-    std::vector<std::size_t> still;
-    for (const std::size_t i : short_of) {
-      std::vector<std::pair<double, geometry::Vec3>> near;
-      grid.for_each_candidate(points[i], [&](int j) {
-        if (static_cast<std::size_t>(j) == i) return;
-        const geometry::Vec3 d =
-            domain.minimum_image(points[static_cast<std::size_t>(j)] - points[i]);
-        near.emplace_back(d.squaredNorm(), d);
-      });
-      std::sort(near.begin(), near.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      // Only neighbours within the cell are sure to be the nearest.
-      std::size_t sure = 0;
-      while (sure < near.size() && near[sure].first <= cell * cell) ++sure;
-      if (sure < count && cell < largest) {
-        still.push_back(i);
-        continue;
-      }
-      for (std::size_t k = 0; k < std::min(count, near.size()); ++k)
-        out[i].push_back(near[k].second);
-    }
-    short_of = std::move(still);
-    cell *= 2.0;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -80,7 +39,7 @@ BondOrder bond_order(const geometry::Scene& tile_or_scene, geometry::Boundary bo
   std::vector<geometry::Vec3> points;
   for (const geometry::Element& e : scene.elements)
     points.push_back(domain.wrap(geometry::Vec3(e.position.x(), e.position.y(), 0.0)));
-  const auto near = nearest_offsets(points, domain, 6);
+  const auto near = geometry::nearest_offsets(points, domain, 6);
   const auto measure = [&](std::size_t symmetry, double& global, double& local) {
     // In an open window, an element nearer the edge than its n-th neighbour may miss nearer
     // neighbours beyond it: it is no centre (unless no element is far enough in).
