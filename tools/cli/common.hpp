@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/io/reader_options.hpp"
@@ -29,6 +30,11 @@ struct ReaderFlags {
   nlohmann::json to_json() const;
   // The flags as they would be typed again (for commands that run others: `compare`).
   std::vector<std::string> arguments() const;
+  // The exemplar's window as the comparison methods take it: a --tile is one period of a torus,
+  // anything else an open window.
+  geometry::Boundary boundary() const {
+    return tile ? geometry::Boundary::torus : geometry::Boundary::open;
+  }
 };
 
 // The exemplar a fit learns from: the file as read, or, for a --tile of few elements, the tile

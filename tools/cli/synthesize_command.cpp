@@ -40,6 +40,12 @@ void reject_options(const CLI::App& command, const std::vector<std::string>& nam
   }
 }
 
+// The reader's options, in the outputs' record.
+void record_reader(const ReaderFlags& reader, synthesis::SynthesisRecord& record) {
+  for (auto& pair : flatten_options("reader", reader.to_json()))
+    record.options.push_back(std::move(pair));
+}
+
 struct SynthesizeArguments {
   std::string input, output, model, method = "shape-process", start_from = "ma-em";
   FitFlags fit;
@@ -56,8 +62,7 @@ struct SynthesizeArguments {
 int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& model,
                synthesis::SynthesisRecord record, std::ostream& out) {
   const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
-  const geometry::Boundary boundary =
-      args.reader.tile ? geometry::Boundary::torus : geometry::Boundary::open;
+  const geometry::Boundary boundary = args.reader.boundary();
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
   std::unique_ptr<synthesis::Synthesizer> start;
   if (args.start_from == "ma-em") {
@@ -176,9 +181,8 @@ void add_synthesize_command(CLI::App& app, Action& action,
         compare::SeedGrowthOptions options =
             args->ijiri.options(exemplar, args->em.orientation, args->growth.overlap, domain);
         args->sample.verbosity.stage("analysing the exemplar");
-        const compare::SeedAndGrow method(
-            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
-            domain, std::move(options));
+        const compare::SeedAndGrow method(exemplar, args->reader.boundary(), domain,
+                                          std::move(options));
         if (!args->ijiri.show.empty()) {
           if (io::extension_of(args->ijiri.show) != "svg")
             throw core::UsageError("--show-connectivity: expected an .svg file, got '" +
@@ -192,8 +196,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
             << exemplar.units << '\n';
         if (!args->ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args->ijiri.flips);
         if (!args->ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args->ijiri.seeds);
-        for (auto& pair : flatten_options("reader", args->reader.to_json()))
-          record.options.push_back(std::move(pair));
+        record_reader(args->reader, record);
         args->sample.verbosity.stage("growing");
         return args->sample.run(method, args->output, std::move(record), out);
       }
@@ -202,8 +205,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
           throw core::UsageError(
               "--iterations: --method davison grows until the domain is full; it takes no "
               "iteration count");
-        const geometry::Boundary boundary =
-            args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open;
+        const geometry::Boundary boundary = args->reader.boundary();
         std::vector<compare::GrowthSource> palette;
         palette.reserve(2);  // `exemplar` stays valid
         palette.push_back({io::read_scene(args->input, args->reader.options()), boundary});
@@ -235,8 +237,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
               << ' ' << palette[part].scene.units << '\n';
           ++part;
         }
-        for (auto& pair : flatten_options("reader", args->reader.to_json()))
-          record.options.push_back(std::move(pair));
+        record_reader(args->reader, record);
         args->sample.verbosity.stage("growing");
         return args->sample.run(method, args->output, std::move(record), out);
       }
@@ -246,14 +247,11 @@ void add_synthesize_command(CLI::App& app, Action& action,
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
         const compare::EmOptions options = args->em.options(domain, args->sample.iterations);
         args->sample.verbosity.stage("analysing the exemplar");
-        const compare::NeighbourhoodEm method(
-            exemplar, args->reader.tile ? geometry::Boundary::torus : geometry::Boundary::open,
-            domain, options);
+        const compare::NeighbourhoodEm method(exemplar, args->reader.boundary(), domain, options);
         out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
             << method.exemplar().samples.size() << " samples, radius "
             << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';
-        for (auto& pair : flatten_options("reader", args->reader.to_json()))
-          record.options.push_back(std::move(pair));
+        record_reader(args->reader, record);
         args->sample.verbosity.stage("synthesising");
         return args->sample.run(method, args->output, std::move(record), out);
       }
@@ -264,8 +262,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       print_model_brief(fitted.model, out);
       if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
       record.options = flatten_options("fit", args->fit.to_json());
-      for (auto& pair : flatten_options("reader", args->reader.to_json()))
-        record.options.push_back(std::move(pair));
+      record_reader(args->reader, record);
       if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out);
