@@ -8,17 +8,10 @@
 
 namespace shapeproc::evaluation {
 
-namespace {
-
-struct Counts {
-  std::vector<double> pairs;  // per interaction parameter (category entries unused)
-  int elements = 0, hard_core = 0;
-};
-
-// The scene's elements in the model's categories (by name; others left out), and their pairs.
-Counts count(const geometry::Scene& scene, geometry::Boundary boundary,
-             const model::ShapeProcessModel& model, const model::Interaction& interaction) {
-  Counts c;
+PairCounts pair_counts(const geometry::Scene& scene, geometry::Boundary boundary,
+                       const model::ShapeProcessModel& model) {
+  const model::Interaction interaction(model);
+  PairCounts c;
   c.pairs.assign(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
   std::vector<geometry::Element> elements;
   for (geometry::Element e : scene.elements) {
@@ -47,15 +40,17 @@ Counts count(const geometry::Scene& scene, geometry::Boundary boundary,
   return c;
 }
 
-}  // namespace
-
 ModelStatistics model_statistics(const geometry::Scene& exemplar,
                                  geometry::Boundary exemplar_boundary,
                                  const geometry::Scene& output, geometry::Boundary output_boundary,
                                  const model::ShapeProcessModel& model) {
+  return model_statistics(pair_counts(exemplar, exemplar_boundary, model),
+                          pair_counts(output, output_boundary, model), model);
+}
+
+ModelStatistics model_statistics(const PairCounts& ex, const PairCounts& out,
+                                 const model::ShapeProcessModel& model) {
   const model::Interaction interaction(model);
-  const Counts ex = count(exemplar, exemplar_boundary, model, interaction);
-  const Counts out = count(output, output_boundary, model, interaction);
   const std::vector<std::string> all_names = model::statistic_names(model);
   ModelStatistics s;
   s.exemplar_hard_core = ex.hard_core;

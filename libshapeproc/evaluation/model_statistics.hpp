@@ -25,7 +25,19 @@ struct ModelStatistics {
   int exemplar_hard_core = 0, output_hard_core = 0;  // pairs closer than the hard core
 };
 
-// Counts on both scenes; boundaries say which windows are tori.
+// A scene's elements in the model's categories (by name; others left out) and their pairs per
+// interaction parameter (the category entries unused), pairs inside the hard core apart.
+struct PairCounts {
+  std::vector<double> pairs;
+  int elements = 0, hard_core = 0;
+};
+PairCounts pair_counts(const geometry::Scene& scene, geometry::Boundary boundary,
+                       const model::ShapeProcessModel& model);
+
+// The check from both scenes' counts (the exemplar's counted once for any number of outputs).
+ModelStatistics model_statistics(const PairCounts& exemplar, const PairCounts& output,
+                                 const model::ShapeProcessModel& model);
+// One-off: counts on both scenes; boundaries say which windows are tori.
 ModelStatistics model_statistics(const geometry::Scene& exemplar,
                                  geometry::Boundary exemplar_boundary,
                                  const geometry::Scene& output, geometry::Boundary output_boundary,

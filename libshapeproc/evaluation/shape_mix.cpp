@@ -56,11 +56,11 @@ void merge_classes_of_one_size(const geometry::Scene& exemplar,
 
 }  // namespace
 
-ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& output) {
+ShapeKinds shape_kinds(const geometry::Scene& exemplar) {
   model::ShapeProcessModel skeleton = fit::model_skeleton(exemplar, fit::FitOptions{});
   fit::assign_shape_classes(skeleton, exemplar);
   // Classes: the exemplar's shape classes, or one per category where it has none.
-  ShapeMix mix;
+  ShapeKinds mix;
   std::vector<int> class_of_shape(exemplar.shapes.size(), -1);
   std::vector<int> category_class(exemplar.categories.size(), -1);
   if (!skeleton.shape_classes.empty()) {
@@ -88,34 +88,36 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
   for (const geometry::Shape& s : exemplar.shapes) exemplar_size.push_back(geometry::shape_size(s));
   merge_classes_of_one_size(exemplar, exemplar_size, mix.classes, element_class);
   mix.exemplar.assign(mix.classes.size(), 0);
-  mix.output.assign(mix.classes.size(), 0);
   for (const int c : element_class) ++mix.exemplar[static_cast<std::size_t>(c)];
+  mix.elements = static_cast<int>(exemplar.elements.size());
 
   // The exemplar's kinds of element, each (category, shape) once in the order met: every element
   // of a kind has the kind's class.
-  struct Kind {
-    const std::string* category;
-    geometry::ShapeSize size;
-    int shape_class;
-  };
-  std::vector<Kind> kinds;
   std::vector<std::pair<int, int>> seen;
   for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
     const geometry::Element& e = exemplar.elements[i];
     if (std::find(seen.begin(), seen.end(), std::make_pair(e.category, e.shape)) != seen.end())
       continue;
     seen.emplace_back(e.category, e.shape);
-    kinds.push_back({&exemplar.categories[static_cast<std::size_t>(e.category)].name,
-                     exemplar_size[static_cast<std::size_t>(e.shape)], element_class[i]});
+    mix.kinds.push_back({exemplar.categories[static_cast<std::size_t>(e.category)].name,
+                         exemplar_size[static_cast<std::size_t>(e.shape)], element_class[i]});
   }
+  return mix;
+}
+
+ShapeMix shape_mix(const ShapeKinds& exemplar, const geometry::Scene& output) {
+  ShapeMix mix;
+  mix.classes = exemplar.classes;
+  mix.exemplar = exemplar.exemplar;
+  mix.output.assign(mix.classes.size(), 0);
   std::vector<geometry::ShapeSize> output_size;
   for (const geometry::Shape& s : output.shapes) output_size.push_back(geometry::shape_size(s));
   for (const geometry::Element& o : output.elements) {
     const std::string& name = output.categories[static_cast<std::size_t>(o.category)].name;
     double best = std::numeric_limits<double>::infinity();
     int chosen = -1;
-    for (const Kind& k : kinds) {
-      if (*k.category != name) continue;
+    for (const ShapeKinds::Kind& k : exemplar.kinds) {
+      if (k.category != name) continue;
       const double d =
           geometry::size_distance(output_size[static_cast<std::size_t>(o.shape)], k.size);
       if (d < best) {
@@ -132,7 +134,7 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
   // Pearson's chi-square of the output's counts against the exemplar's shares.
   int total = 0;
   for (const int n : mix.output) total += n;
-  const double exemplar_total = static_cast<double>(exemplar.elements.size());
+  const double exemplar_total = static_cast<double>(exemplar.elements);
   if (mix.classes.size() < 2 || total == 0) return mix;
   for (std::size_t c = 0; c < mix.classes.size(); ++c) {
     const double expected = total * mix.exemplar[c] / exemplar_total;
@@ -142,6 +144,10 @@ ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& outpu
   mix.degrees = static_cast<int>(mix.classes.size()) - 1;
   mix.p_value = chi_square_upper_tail(mix.chi_square, mix.degrees);
   return mix;
+}
+
+ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& output) {
+  return shape_mix(shape_kinds(exemplar), output);
 }
 
 }  // namespace shapeproc::evaluation

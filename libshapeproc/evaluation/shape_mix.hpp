@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/geometry/shape_size.hpp"
 
 namespace shapeproc::evaluation {
 
@@ -24,6 +25,23 @@ struct ShapeMix {
   int degrees = 0;  // classes − 1; 0: nothing to test (a single class)
 };
 
+// The exemplar's side, once for any number of outputs: its classes, their counts, and its kinds
+// of element (each category and shape once, with its size and class).
+struct ShapeKinds {
+  struct Kind {
+    std::string category;
+    geometry::ShapeSize size;
+    int shape_class = 0;
+  };
+  std::vector<std::string> classes;
+  std::vector<int> exemplar;  // elements per class
+  int elements = 0;
+  std::vector<Kind> kinds;
+};
+
+ShapeKinds shape_kinds(const geometry::Scene& exemplar);
+ShapeMix shape_mix(const ShapeKinds& exemplar, const geometry::Scene& output);
+// One-off: shape_mix(shape_kinds(exemplar), output).
 ShapeMix shape_mix(const geometry::Scene& exemplar, const geometry::Scene& output);
 
 }  // namespace shapeproc::evaluation

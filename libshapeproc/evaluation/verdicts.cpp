@@ -35,6 +35,37 @@ double touching_per_element(const metrics::SceneStatistics& s) {
 
 }  // namespace
 
+ExemplarMeasures measure_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
+                                  const metrics::SceneStatistics& statistics,
+                                  const model::ShapeProcessModel* model) {
+  ExemplarMeasures m;
+  m.statistics = &statistics;
+  m.order = metrics::bond_order(exemplar, boundary);
+  m.kinds = shape_kinds(exemplar);
+  m.model = model;
+  if (model) m.pairs = pair_counts(exemplar, boundary, *model);
+  return m;
+}
+
+Judged measure_for_verdicts(const ExemplarMeasures& exemplar, const geometry::Scene& output,
+                            geometry::Boundary output_boundary,
+                            const metrics::SceneStatistics& output_statistics,
+                            const metrics::Comparison& comparison,
+                            const metrics::NeighbourhoodDistance* neighbourhood) {
+  Judged j;
+  j.exemplar = exemplar.statistics;
+  j.output = &output_statistics;
+  j.comparison = &comparison;
+  j.neighbourhood = neighbourhood;
+  j.exemplar_order = exemplar.order;
+  j.output_order = metrics::bond_order(output, output_boundary);
+  j.mix = shape_mix(exemplar.kinds, output);
+  if (exemplar.model)
+    j.model = model_statistics(
+        exemplar.pairs, pair_counts(output, output_boundary, *exemplar.model), *exemplar.model);
+  return j;
+}
+
 Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
                             const metrics::SceneStatistics& exemplar_statistics,
                             const geometry::Scene& output, geometry::Boundary output_boundary,
@@ -42,17 +73,9 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
                             const metrics::Comparison& comparison,
                             const metrics::NeighbourhoodDistance* neighbourhood,
                             const model::ShapeProcessModel* model) {
-  Judged j;
-  j.exemplar = &exemplar_statistics;
-  j.output = &output_statistics;
-  j.comparison = &comparison;
-  j.neighbourhood = neighbourhood;
-  j.exemplar_order = metrics::bond_order(exemplar, exemplar_boundary);
-  j.output_order = metrics::bond_order(output, output_boundary);
-  j.mix = shape_mix(exemplar, output);
-  if (model)
-    j.model = model_statistics(exemplar, exemplar_boundary, output, output_boundary, *model);
-  return j;
+  return measure_for_verdicts(
+      measure_exemplar(exemplar, exemplar_boundary, exemplar_statistics, model), output,
+      output_boundary, output_statistics, comparison, neighbourhood);
 }
 
 std::vector<Verdict> judge(const Judged& j) {

@@ -56,7 +56,25 @@ struct Judged {
   ShapeMix mix;
 };
 
-// Measures what the statistics do not hold (order, shape mix) and judges.
+// The exemplar's side of every check, measured once for any number of outputs.
+struct ExemplarMeasures {
+  const metrics::SceneStatistics* statistics = nullptr;
+  metrics::BondOrder order;
+  ShapeKinds kinds;
+  const model::ShapeProcessModel* model = nullptr;  // optional
+  PairCounts pairs;                                 // with a model
+};
+ExemplarMeasures measure_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
+                                  const metrics::SceneStatistics& statistics,
+                                  const model::ShapeProcessModel* model = nullptr);
+
+// Measures what the statistics do not hold (order, shape mix, the model's pair counts).
+Judged measure_for_verdicts(const ExemplarMeasures& exemplar, const geometry::Scene& output,
+                            geometry::Boundary output_boundary,
+                            const metrics::SceneStatistics& output_statistics,
+                            const metrics::Comparison& comparison,
+                            const metrics::NeighbourhoodDistance* neighbourhood);
+// One-off: the exemplar measured for this output alone.
 Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary exemplar_boundary,
                             const metrics::SceneStatistics& exemplar_statistics,
                             const geometry::Scene& output, geometry::Boundary output_boundary,

@@ -106,12 +106,13 @@ int write_report(const ReportRequest& request, std::ostream& out) {
     evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
   }
 
+  const evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
+      exemplar.scene, exemplar.boundary, exemplar_eval.statistics, model.get());
   std::vector<std::vector<evaluation::Verdict>> verdicts;
   for (std::size_t i = 0; i < outputs.size(); ++i)
     verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
-        exemplar.scene, exemplar.boundary, exemplar_eval.statistics, outputs[i].scene,
-        outputs[i].boundary, evals[i].statistics, *evals[i].comparison, &*evals[i].neighbourhood,
-        model.get())));
+        measured, outputs[i].scene, outputs[i].boundary, evals[i].statistics, *evals[i].comparison,
+        &*evals[i].neighbourhood)));
 
   report::Report r;
   r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics,
