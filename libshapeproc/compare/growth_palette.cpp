@@ -109,7 +109,6 @@ GrowthExemplar merge_palette(std::vector<GrowthExemplar> parts) {
     append_exemplar(out.em, part.em, at);
     append_growth(out, part, at, static_cast<int>(p));
   }
-  out.sets.k = std::max(out.sets.k, 1);
   return out;
 }
 

@@ -15,10 +15,13 @@ namespace {
 
 // The nearest-neighbour CDFs of a scene at `r`, all directions first, then each axis; last, the
 // pair correlation g in its bins (NaN where undefined, as compute_statistics gives it).
+// `g_r`, when given, receives g's bin centres.
 std::vector<std::vector<double>> curves_of(const geometry::Scene& scene,
                                            const metrics::StatisticsOptions& options,
-                                           const std::vector<double>& r) {
+                                           const std::vector<double>& r,
+                                           std::vector<double>* g_r = nullptr) {
   const metrics::SceneStatistics s = metrics::compute_statistics(scene, options, core::Random(1));
+  if (g_r) *g_r = s.correlation_r;
   std::vector<std::vector<double>> out;
   const auto cdf = [&](const metrics::Distribution& d) {
     std::vector<double> values;
@@ -50,9 +53,8 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   std::vector<double> r;
   for (int i = 1; i <= options.points; ++i) r.push_back(range * i / options.points);
 
-  const std::vector<std::vector<double>> observed = curves_of(exemplar, stats, r);
-  const std::vector<double> g_r =
-      metrics::compute_statistics(exemplar, stats, core::Random(1)).correlation_r;
+  std::vector<double> g_r;
+  const std::vector<std::vector<double>> observed = curves_of(exemplar, stats, r, &g_r);
   std::vector<std::vector<double>> low, high;
   for (const std::vector<double>& c : observed) {
     low.emplace_back(c.size(), std::numeric_limits<double>::infinity());
