@@ -9,6 +9,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/monte_carlo_moments.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -53,6 +54,10 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     setting.fixed = border.fixed;
     setting.free_region = border.region;
   }
+  // The chains start where the fit's did: at the exemplar (its free part).
+  for (const geometry::Element& e : exemplar.elements)
+    if (setting.free_region.isEmpty() || setting.free_region.contains(e.position))
+      setting.start.push_back(e);
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);
@@ -98,8 +103,9 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
   core::Random random(options.sampling.seed);
-  const sample::SampleResult output =
-      sample::sample_shape_process(model, domain, sample::SamplerOptions{}, random);
+  sample::SamplerOptions start;  // as `synthesize` starts: the exemplar repeated
+  start.start = geometry::tile_over(exemplar, domain.box());
+  const sample::SampleResult output = sample::sample_shape_process(model, domain, start, random);
   report.output_elements = static_cast<int>(output.scene.elements.size());
   const double exemplar_measure = geometry::measure(exemplar.window, exemplar.dimension);
   report.density_ratio =

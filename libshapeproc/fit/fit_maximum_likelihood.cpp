@@ -61,6 +61,10 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
+  // The chains start at the exemplar (its free part with border correction).
+  const geometry::Box3& free = chains.sampling.free_region;
+  for (const geometry::Element& e : exemplar.elements)
+    if (free.isEmpty() || free.contains(e.position)) chains.sampling.start.push_back(e);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
@@ -105,6 +109,19 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
         "at the returned estimate against the exemplar's count): " +
         list);
   }
+  std::vector<int> held;  // θ indices whose statistic the chains never moved off the exemplar's
+  for (std::size_t k = 0; k < mle.status.size(); ++k)
+    if (mle.status[k] == model::ParameterStatus::unbounded) held.push_back(static_cast<int>(k));
+  if (!held.empty()) {
+    const std::vector<std::string> names = model::statistic_names(start);
+    std::string list;
+    for (int k : held) list += (list.empty() ? "" : ", ") + names[static_cast<std::size_t>(k)];
+    result.notes.push_back(
+        "the chains, started at the exemplar, held these statistics at the exemplar's values in "
+        "every observation (a packed exemplar: the likelihood keeps growing with their "
+        "parameters, which are marked unbounded and kept where the chains first held them): " +
+        list);
+  }
   std::vector<int> penalised;  // θ indices where the attraction prior holds log γ down
   for (std::size_t k = 0; k < mle.penalised.size(); ++k)
     if (mle.penalised[k]) penalised.push_back(static_cast<int>(k));
@@ -115,6 +132,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   record["estimator"] = {{"method", "mcmc-mle"},
                          {"start", "mple"},
+                         {"chains_start", "exemplar"},
+                         {"unbounded", held},
                          {"iterations", mle.iterations},
                          {"converged", mle.converged},
                          {"chains", options.sampling.chains},

@@ -378,6 +378,16 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     r.expected_error = best.expected_error;
   }
   for (std::size_t k : free) r.penalised[k] = newton->pairs_moved(k, r.theta) >= kNotablyMoved;
+  // A statistic every observation of the last simulation held at the exemplar's value (chains
+  // started at a packed exemplar that never lose an element): the likelihood still grows beyond
+  // θ_k, so the MLE is infinite; θ_k is the value at which the chains held it, with no error.
+  for (std::size_t k : free) {
+    if (r.converged && r.expected_error[k] == 0 &&
+        std::abs(r.expected[k] - observed[k]) <= 1e-9 * std::max(1.0, observed[k])) {
+      r.status[k] = model::ParameterStatus::unbounded;
+      r.standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
   r.seconds = std::chrono::duration<double>(Clock::now() - clock).count();
   return r;
 }

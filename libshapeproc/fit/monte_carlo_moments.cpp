@@ -60,6 +60,7 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sampler_options.observe_every = setting.observe_every;
   sampler_options.fixed = setting.fixed;
   sampler_options.free_region = setting.free_region;
+  sampler_options.start = setting.start;
   const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
   synthesis::ChainOptions chains;
   chains.chains = setting.chains;

@@ -24,6 +24,10 @@ struct ChainsSetting {
   // (sample::SamplerOptions); empty: none.
   std::vector<geometry::Element> fixed;
   geometry::Box3 free_region;
+  // Elements every chain starts from (sample::SamplerOptions::start); empty: the empty
+  // configuration. Maximum-likelihood fits start at the exemplar, a state of high density: a
+  // packed exemplar is then a state the chains hold rather than one they must find.
+  std::vector<geometry::Element> start;
 };
 
 // Observations of t(X) and their moments.

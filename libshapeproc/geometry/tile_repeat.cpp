@@ -29,6 +29,32 @@ Scene repeat_tile(const Scene& tile, int times) {
   return out;
 }
 
+std::vector<Element> tile_over(const Scene& tile, const Box3& region) {
+  std::vector<Element> out;
+  const Vec3 sizes = tile.window.sizes();
+  const int axes = tile.dimension;
+  for (int a = 0; a < axes; ++a)
+    if (!(sizes[a] > 0) || tile.elements.empty() || region.isEmpty()) return out;
+  // Whole windows k along each axis with the shifted window meeting the region.
+  Eigen::Vector3i first = Eigen::Vector3i::Zero(), last = Eigen::Vector3i::Zero();
+  for (int a = 0; a < axes; ++a) {
+    first[a] = static_cast<int>(std::floor((region.min()[a] - tile.window.max()[a]) / sizes[a]));
+    last[a] = static_cast<int>(std::ceil((region.max()[a] - tile.window.min()[a]) / sizes[a]));
+  }
+  for (int k = first.z(); k <= last.z(); ++k) {
+    for (int j = first.y(); j <= last.y(); ++j) {
+      for (int i = first.x(); i <= last.x(); ++i) {
+        const Vec3 shift(i * sizes.x(), j * sizes.y(), axes == 3 ? k * sizes.z() : 0.0);
+        for (Element e : tile.elements) {
+          e.position += shift;
+          if (region.contains(e.position)) out.push_back(e);
+        }
+      }
+    }
+  }
+  return out;
+}
+
 Scene repeat_to_reach(const Scene& tile, double reach) {
   double side = std::numeric_limits<double>::infinity();
   for (int a = 0; a < tile.dimension; ++a) side = std::min(side, tile.window.sizes()[a]);

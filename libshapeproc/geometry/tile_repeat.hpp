@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "libshapeproc/geometry/scene.hpp"
 
@@ -18,6 +19,11 @@ Scene repeat_tile(const Scene& tile, int times);
 // The tile repeated as often as needed for its smallest side to reach `reach` (unchanged when it
 // does): a neighbourhood of radius R on a torus sees every image once when the side is >= 2R.
 Scene repeat_to_reach(const Scene& tile, double reach);
+
+// The tile's elements repeated by whole windows over `region` (2D: along x and y; 3D also z), those
+// whose reference positions lie in it: the drawing continued as the seamless repeat it is, e.g. a
+// sampler's start on an output domain (the chain then moves, removes and adds elements).
+std::vector<Element> tile_over(const Scene& tile, const Box3& region);
 
 // Repeats along each side that a tile of `elements` elements is fitted with: none from 8
 // elements (their interaction ranges stay within half the tile), else 3 (an element's images one

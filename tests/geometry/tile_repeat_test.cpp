@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 
@@ -32,6 +34,24 @@ TEST(TileRepeat, CopiesEveryElementByWholeWindows) {
   EXPECT_EQ(tile_repeats(1), 4);
   EXPECT_EQ(tile_repeats(4), 3);
   EXPECT_EQ(tile_repeats(8), 1);
+}
+
+TEST(TileRepeat, TileOverContinuesTheDrawingOverARegion) {
+  // The dot at (2, 3) of a 10 x 6 tile, over [-5, 25] x [0, 12]: x in {2, 12, 22}, y in {3, 9}.
+  const Scene tile = one_dot_tile();
+  const std::vector<Element> over = tile_over(tile, Box3(Vec3(-5, 0, 0), Vec3(25, 12, 0)));
+  ASSERT_EQ(over.size(), 6u);
+  std::vector<Vec3> expected;
+  for (double y : {3.0, 9.0})
+    for (double x : {2.0, 12.0, 22.0}) expected.emplace_back(x, y, 0);
+  for (const Vec3& p : expected) {
+    EXPECT_EQ(
+        std::count_if(over.begin(), over.end(), [&](const Element& e) { return e.position == p; }),
+        1)
+        << p.transpose();
+  }
+  EXPECT_TRUE(tile_over(tile, Box3(Vec3(3, 4, 0), Vec3(11, 8, 0))).empty());
+  EXPECT_TRUE(tile_over(Scene{}, Box3(Vec3(0, 0, 0), Vec3(9, 9, 0))).empty());
 }
 
 TEST(TileRepeat, AOneElementTileHasNeighbours) {

@@ -295,6 +295,40 @@ TEST(CliSynthesize, FitsThenSamples) {
   EXPECT_TRUE(std::filesystem::exists(model));
 }
 
+// A packed tile (tic-tac-toe: 4 elements per 64 x 64, fitted repeated 3 x 3): the chains start
+// from the tile repeated over the output and hold its density; from the empty configuration they
+// jam well below it (42 of 64 with this seed). The record says which start was used.
+TEST(CliSynthesize, StartsFromTheExemplarRepeatedOverTheOutput) {
+  const testing::TempDir dir;
+  const std::string tile = data("third-party/hero-patterns/tic-tac-toe.svg");
+  const auto run = [&](const std::string& name, std::vector<std::string> extra) {
+    const std::string out = dir.file(name).string();
+    std::vector<std::string> args = {"synthesize", tile,      "--tile", "-o", out,
+                                     "--size",     "256,256", "--seed", "3",  "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result r = run_cli(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    const Result stats = run_cli({"stats", out, "--json"});
+    EXPECT_EQ(stats.code, 0) << stats.err;
+    return std::make_pair(testing::read_file(out),
+                          nlohmann::json::parse(stats.out).at("elements").get<int>());
+  };
+  const auto [held, held_count] = run("held.svg", {});
+  EXPECT_NE(held.find("[&quot;start&quot;,&quot;exemplar&quot;]"), std::string::npos);
+  EXPECT_GE(held_count, 61);  // 64 within 5%
+  EXPECT_LE(held_count, 67);
+  const auto [sought, sought_count] = run("sought.svg", {"--start", "empty"});
+  EXPECT_NE(sought.find("[&quot;start&quot;,&quot;empty&quot;]"), std::string::npos);
+  EXPECT_LT(sought_count, 52);
+  expect_one_line_error(run_cli({"synthesize", tile, "-o", dir.file("x.svg").string(), "--size",
+                                 "100,100", "--start", "somewhere"}),
+                        2, "--start");
+  expect_one_line_error(
+      run_cli({"synthesize", tile, "--method", "hybrid", "-o", dir.file("x.svg").string(), "--size",
+               "100,100", "--start", "empty"}),
+      2, "--start is for --method shape-process");
+}
+
 TEST(CliStats, TextJsonAndComparisons) {
   const testing::TempDir dir;
   const Result text = run_cli({"stats", data("svg/dots-random.svg")});

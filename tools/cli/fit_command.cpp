@@ -58,7 +58,7 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
-                            const VerbosityFlags& verbosity) {
+                            const VerbosityFlags& verbosity, geometry::Scene* fitted) {
   fit::FitOptions options = flags.options(reader);
   verbosity.stage("reading " + input);
   const FittingExemplar fitting = read_fitting_exemplar(input, reader);
@@ -107,6 +107,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   if (repeats > 1) provenance["tile_repeats"] = repeats;
   provenance["options"]["directions"] = result.model.measurement.directions;
   result.model.fit_json = provenance.dump();
+  if (fitted) *fitted = exemplar;
   return result;
 }
 

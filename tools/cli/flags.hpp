@@ -47,10 +47,11 @@ struct FitFlags {
 };
 
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
-// reader and fit options. Fit failures become core::InputError naming the exemplar.
+// reader and fit options. Fit failures become core::InputError naming the exemplar. `fitted`, when
+// given, receives the exemplar as fitted (a small tile repeated).
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
-                            const VerbosityFlags& verbosity);
+                            const VerbosityFlags& verbosity, geometry::Scene* fitted = nullptr);
 
 struct SampleFlags {
   std::string size, domain_file, intensity, boundary, trace, png;
@@ -76,8 +77,10 @@ struct SampleFlags {
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.
+  // `start`: elements every chain starts from (sample::SamplerOptions::start).
   int run(const model::ShapeProcessModel& model, const std::string& output,
-          synthesis::SynthesisRecord record, std::ostream& out) const;
+          synthesis::SynthesisRecord record, std::ostream& out,
+          std::vector<geometry::Element> start = {}) const;
   // The same for any synthesis method: its chains, their outputs, pictures and traces.
   int run(const synthesis::Synthesizer& synthesizer, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out) const;

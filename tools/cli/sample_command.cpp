@@ -151,9 +151,12 @@ geometry::Domain SampleFlags::domain(int dimension) const {
 }
 
 int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
-                     synthesis::SynthesisRecord record, std::ostream& out) const {
+                     synthesis::SynthesisRecord record, std::ostream& out,
+                     std::vector<geometry::Element> start) const {
   check(output, model.dimension);
-  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), sampler_options());
+  sample::SamplerOptions options = sampler_options();
+  options.start = std::move(start);
+  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), options);
   return run(sampler, output, std::move(record), out);
 }
 

@@ -11,6 +11,7 @@
 #include "libshapeproc/compare/seed_and_grow.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -47,7 +48,8 @@ void record_reader(const ReaderFlags& reader, synthesis::SynthesisRecord& record
 }
 
 struct SynthesizeArguments {
-  std::string input, output, model, method = "shape-process", start_from = "ma-em";
+  std::string input, output, model, method = "shape-process", start_from = "ma-em",
+                                    start = "exemplar";
   FitFlags fit;
   ReaderFlags reader;
   SampleFlags sample;
@@ -124,6 +126,14 @@ void add_synthesize_command(CLI::App& app, Action& action,
       ->check(non_negative_number());
   command->add_option("--intensity", args->sample.intensity,
                       "2D intensity map: grayscale PNG stretched over --size, scales beta");
+  CLI::Option* start =
+      command
+          ->add_option("--start", args->start,
+                       "shape-process: where each chain starts: exemplar (the fitted exemplar "
+                       "repeated over the output, so that a packed drawing is held rather than "
+                       "sought) or empty")
+          ->check(CLI::IsMember({"exemplar", "empty"}))
+          ->capture_default_str();
   args->fit_only = options_since(*command, before);
   before = command->get_options().size();
   args->em.add_shared_to(*command);
@@ -145,14 +155,17 @@ void add_synthesize_command(CLI::App& app, Action& action,
   args->growth_overlap = options_since(*command, before);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false);
-  command->callback([&action, args, arguments, command, start_from] {
-    action = [args, arguments, command, start_from](std::ostream& out) {
+  command->callback([&action, args, arguments, command, start_from, start] {
+    action = [args, arguments, command, start_from, start](std::ostream& out) {
       const bool em = args->method == "ma-em", growth = args->method == "davison";
       const bool hybrid = args->method == "hybrid";
       if (args->method != "shape-process" && !hybrid)
         reject_options(*command, args->fit_only, "shape-process or hybrid");
       if (!hybrid && start_from->count() > 0)
         throw core::UsageError("--start-from is for --method hybrid");
+      if (hybrid && start->count() > 0)
+        throw core::UsageError(
+            "--start is for --method shape-process (a hybrid starts from --start-from's output)");
       if (!em) reject_options(*command, args->em_only, "ma-em");
       if (!growth) reject_options(*command, args->growth_only, "davison");
       const bool ijiri = args->method == "ijiri";
@@ -256,16 +269,22 @@ void add_synthesize_command(CLI::App& app, Action& action,
         return args->sample.run(method, args->output, std::move(record), out);
       }
       args->fit.options(args->reader);  // its own checks, before reading or fitting anything
-      const fit::FitResult fitted =
-          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity);
+      geometry::Scene exemplar;
+      const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments,
+                                                 args->sample.verbosity, &exemplar);
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
       print_model_brief(fitted.model, out);
       if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
       record.options = flatten_options("fit", args->fit.to_json());
       record_reader(args->reader, record);
       if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
+      record.options.emplace_back("start", args->start);
+      std::vector<geometry::Element> elements;
+      if (args->start == "exemplar")
+        elements = geometry::tile_over(exemplar, args->sample.domain(exemplar.dimension).box());
       args->sample.verbosity.stage("sampling");
-      return args->sample.run(fitted.model, args->output, std::move(record), out);
+      return args->sample.run(fitted.model, args->output, std::move(record), out,
+                              std::move(elements));
     };
   });
 }
