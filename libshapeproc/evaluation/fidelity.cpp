@@ -54,9 +54,10 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     setting.fixed = border.fixed;
     setting.free_region = border.region;
   }
-  // The chains start where the fit's did: at the exemplar (its free part).
+  // The chains start where the fit's did: at a packed exemplar (its free part), else empty.
+  const bool at_exemplar = fit::starts_at_exemplar(model);
   for (const geometry::Element& e : exemplar.elements)
-    if (setting.free_region.isEmpty() || setting.free_region.contains(e.position))
+    if (at_exemplar && (setting.free_region.isEmpty() || setting.free_region.contains(e.position)))
       setting.start.push_back(e);
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
@@ -103,8 +104,8 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
   core::Random random(options.sampling.seed);
-  sample::SamplerOptions start;  // as `synthesize` starts: the exemplar repeated
-  start.start = geometry::tile_over(exemplar, domain.box());
+  sample::SamplerOptions start;  // as `synthesize` starts: a packed exemplar repeated, else empty
+  if (fit::starts_at_exemplar(model)) start.start = geometry::tile_over(exemplar, domain.box());
   const sample::SampleResult output = sample::sample_shape_process(model, domain, start, random);
   report.output_elements = static_cast<int>(output.scene.elements.size());
   const double exemplar_measure = geometry::measure(exemplar.window, exemplar.dimension);

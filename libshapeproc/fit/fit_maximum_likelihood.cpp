@@ -47,6 +47,24 @@ BorderCondition border_condition(const geometry::Scene& exemplar,
   return b;
 }
 
+bool packed_exemplar(const model::ShapeProcessModel& mple) {
+  for (const model::CategoryParameters& c : mple.categories)
+    if (c.beta_status == model::ParameterStatus::unbounded) return true;
+  for (const model::PairInteraction& pair : mple.interactions)
+    for (const model::AxisParameters& axis : pair.axes)
+      for (model::ParameterStatus status : axis.status)
+        if (status == model::ParameterStatus::unbounded) return true;
+  return false;
+}
+
+bool starts_at_exemplar(const model::ShapeProcessModel& model) {
+  if (model.fit_json.empty()) return false;
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
+  if (fit.is_discarded() || !fit.contains("estimator")) return false;
+  const nlohmann::json& e = fit["estimator"];
+  return e.contains("chains_start") && e["chains_start"] == "exemplar";
+}
+
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options) {
@@ -61,10 +79,12 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
-  // The chains start at the exemplar (its free part with border correction).
+  // A packed exemplar's chains start at it (its free part with border correction).
+  const bool at_exemplar = packed_exemplar(start);
   const geometry::Box3& free = chains.sampling.free_region;
   for (const geometry::Element& e : exemplar.elements)
-    if (free.isEmpty() || free.contains(e.position)) chains.sampling.start.push_back(e);
+    if (at_exemplar && (free.isEmpty() || free.contains(e.position)))
+      chains.sampling.start.push_back(e);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
@@ -132,7 +152,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   record["estimator"] = {{"method", "mcmc-mle"},
                          {"start", "mple"},
-                         {"chains_start", "exemplar"},
+                         {"chains_start", at_exemplar ? "exemplar" : "empty"},
                          {"unbounded", held},
                          {"iterations", mle.iterations},
                          {"converged", mle.converged},

@@ -27,6 +27,16 @@ struct BorderCondition {
 BorderCondition border_condition(const geometry::Scene& exemplar,
                                  const model::ShapeProcessModel& model);
 
+// Whether the chains of the fit start at the exemplar: where the pseudo-likelihood found a
+// parameter without a finite maximum (a packed exemplar, whose states a chain from the empty
+// configuration never reaches). Elsewhere they start empty, so that the fit only converges where
+// the model reaches the exemplar's counts by itself.
+bool packed_exemplar(const model::ShapeProcessModel& mple);
+
+// Whether samples of a fitted model start from its exemplar, as its maximum-likelihood chains
+// did (its fit record's `estimator.chains_start`); false for other models.
+bool starts_at_exemplar(const model::ShapeProcessModel& model);
+
 // The MLE on the exemplar's window: open for the edge treatment none, a torus for periodic, the
 // border condition for border.
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,

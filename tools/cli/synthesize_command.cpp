@@ -11,6 +11,7 @@
 #include "libshapeproc/compare/seed_and_grow.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -48,8 +49,7 @@ void record_reader(const ReaderFlags& reader, synthesis::SynthesisRecord& record
 }
 
 struct SynthesizeArguments {
-  std::string input, output, model, method = "shape-process", start_from = "ma-em",
-                                    start = "exemplar";
+  std::string input, output, model, method = "shape-process", start_from = "ma-em", start = "auto";
   FitFlags fit;
   ReaderFlags reader;
   SampleFlags sample;
@@ -131,8 +131,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
           ->add_option("--start", args->start,
                        "shape-process: where each chain starts: exemplar (the fitted exemplar "
                        "repeated over the output, so that a packed drawing is held rather than "
-                       "sought) or empty")
-          ->check(CLI::IsMember({"exemplar", "empty"}))
+                       "sought), empty, or auto (where the fit's chains started: at a packed "
+                       "exemplar, else empty)")
+          ->check(CLI::IsMember({"auto", "exemplar", "empty"}))
           ->capture_default_str();
   args->fit_only = options_since(*command, before);
   before = command->get_options().size();
@@ -278,9 +279,11 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.options = flatten_options("fit", args->fit.to_json());
       record_reader(args->reader, record);
       if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
-      record.options.emplace_back("start", args->start);
+      const bool at_exemplar =
+          args->start == "auto" ? fit::starts_at_exemplar(fitted.model) : args->start == "exemplar";
+      record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
       std::vector<geometry::Element> elements;
-      if (args->start == "exemplar")
+      if (at_exemplar)
         elements = geometry::tile_over(exemplar, args->sample.domain(exemplar.dimension).box());
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out,
