@@ -31,6 +31,16 @@ void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::VectorX
       correction * (centred.transpose() * weights.asDiagonal() * centred);
   m.mean.assign(mean.data(), mean.data() + mean.size());
   m.covariance.assign(covariance.data(), covariance.data() + covariance.size());  // symmetric
+  // A statistic every observation holds at one value (a packed exemplar's count, never changed)
+  // has that mean and no variance exactly, not sums' rounding: the estimator tells it apart.
+  const Eigen::Index p = t.cols();
+  for (Eigen::Index k = 0; k < p; ++k) {
+    if (t.rows() == 0 || t.col(k).minCoeff() != t.col(k).maxCoeff()) continue;
+    m.mean[static_cast<std::size_t>(k)] = t(0, k);
+    for (Eigen::Index j = 0; j < p; ++j)
+      m.covariance[static_cast<std::size_t>(k * p + j)] =
+          m.covariance[static_cast<std::size_t>(j * p + k)] = 0.0;
+  }
 }
 
 // Standard errors of the mean from batch means: each chain's kept observations in
@@ -97,6 +107,8 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(m.observations, 1.0 / m.observations);
   weighted_moments(sample_matrix(m), uniform, m);
   m.standard_error = batch_standard_errors(batch_means, p);
+  for (std::size_t k = 0; k < p; ++k)
+    if (m.covariance[k * p + k] == 0.0) m.standard_error[k] = 0.0;
   return m;
 }
 

@@ -96,6 +96,13 @@ TEST(MaximumLikelihood, APackedLatticeIsHeldFromTheExemplarWithAnUnboundedBeta) 
   EXPECT_LT(statistics_moments(dense, window, empty).mean[0], 90.0);
 
   options.sampling.start = lattice;
+  // From the lattice at that β no point is ever removed: the count's mean is exactly 100, with no
+  // variance (not the rounding of a sum, which the estimator would take for a gap).
+  const StatisticsMoments held = statistics_moments(dense, window, options.sampling);
+  EXPECT_EQ(held.mean[0], 100.0);
+  EXPECT_EQ(held.covariance[0], 0.0);
+  EXPECT_EQ(held.standard_error[0], 0.0);
+
   const MleResult mle = maximise_likelihood(start, window, observed, options);
   ASSERT_TRUE(mle.converged) << mle.iterations << " iterations";
   // Shifts within a site's slack keep the four neighbours within the band. Where the chains
