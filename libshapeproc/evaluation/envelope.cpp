@@ -6,6 +6,7 @@
 
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/random.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 
@@ -68,6 +69,7 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
   sample::SamplerOptions sampling;
   sampling.iterations = options.steps;
+  if (fit::starts_at_exemplar(model)) sampling.start = exemplar.elements;  // as the fit's chains
   const sample::ShapeProcessSampler sampler(model, window, sampling);
   for (int k = 0; k < options.samples; ++k) {
     core::Random random(options.seed + static_cast<std::uint64_t>(k));
