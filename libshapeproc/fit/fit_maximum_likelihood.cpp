@@ -81,6 +81,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   // A packed exemplar's chains start at it (its free part with border correction).
   const bool at_exemplar = packed_exemplar(start);
+  if (at_exemplar) chains.attraction_prior_sd = 0.0;
   const geometry::Box3& free = chains.sampling.free_region;
   for (const geometry::Element& e : exemplar.elements)
     if (at_exemplar && (free.isEmpty() || free.contains(e.position)))

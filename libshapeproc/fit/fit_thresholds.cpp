@@ -16,11 +16,30 @@ using geometry::Element;
 
 namespace {
 
+// Bands whose quantiles coincide (up to this share of the width below) are degenerate.
+constexpr double kDegenerate = 1e-6;
+// Their width instead, as a share of the exemplar's mean spacing (|W| / n)^(1/dim).
+constexpr double kLatticeBand = 0.01;
+
+// Quantile thresholds. A band whose two quantiles coincide (a lattice, whose pairs repeat one
+// distance: hexagons gave [2.0155443424633040, 2.0155443424633073) holding 3 pairs) is widened
+// to `width`: a band narrower than the rounding of a shift can neither keep its pairs nor regain
+// them, and no γ makes the sampler hold such an exemplar.
 std::vector<double> thresholds_from(std::vector<double> distances,
-                                    const std::vector<double>& quantiles) {
+                                    const std::vector<double>& quantiles, double width) {
   std::sort(distances.begin(), distances.end());
   std::vector<double> thresholds;
-  for (double q : quantiles) thresholds.push_back(quantile(distances, q));
+  for (double q : quantiles) {
+    double d = quantile(distances, q);
+    if (!thresholds.empty() && d - thresholds.back() < kDegenerate * width)
+      d = thresholds.back() + width;
+    thresholds.push_back(d);
+  }
+  // The hard core sits a hair below the smallest distance, so that the exemplar's closest pairs,
+  // measured again after a translation (a tile repeated over an output), do not fall below it by
+  // rounding; a hard core at 0 (touching) stays at 0.
+  if (!thresholds.empty() && thresholds.front() > 0)
+    thresholds.front() = std::max(0.0, thresholds.front() - kDegenerate * width);
   return thresholds;
 }
 
@@ -123,6 +142,10 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
     all_distances.push_back(p.measurement.distance);
   }
   const bool fixed_thresholds = !options.thresholds.empty();
+  const double lattice_band =
+      kLatticeBand *
+      std::pow(exemplar.window_measure() / static_cast<double>(exemplar.elements.size()),
+               1.0 / exemplar.dimension);
   if (!fixed_thresholds && all_distances.size() < 2) {
     notes.push_back("the exemplar has " + std::to_string(all_distances.size()) +
                     " pair(s) of elements: too few for thresholds, so the model is a Poisson "
@@ -169,7 +192,7 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
               noted_pool = true;
             }
           }
-          axis.thresholds = thresholds_from(*source, options.quantiles);
+          axis.thresholds = thresholds_from(*source, options.quantiles, lattice_band);
         }
         const std::size_t bands = axis.thresholds.size() - 1;
         axis.gammas.assign(bands, 1.0);

@@ -35,6 +35,13 @@ std::vector<Element> tile_over(const Scene& tile, const Box3& region) {
   const int axes = tile.dimension;
   for (int a = 0; a < axes; ++a)
     if (!(sizes[a] > 0) || tile.elements.empty() || region.isEmpty()) return out;
+  // Half-open along each axis: on a torus the region's two faces are one place, and a copy on
+  // each would be the same element twice.
+  const auto inside = [&](const Vec3& p) {
+    for (int a = 0; a < axes; ++a)
+      if (p[a] < region.min()[a] || p[a] >= region.max()[a]) return false;
+    return true;
+  };
   // Whole windows k along each axis with the shifted window meeting the region.
   Eigen::Vector3i first = Eigen::Vector3i::Zero(), last = Eigen::Vector3i::Zero();
   for (int a = 0; a < axes; ++a) {
@@ -47,7 +54,7 @@ std::vector<Element> tile_over(const Scene& tile, const Box3& region) {
         const Vec3 shift(i * sizes.x(), j * sizes.y(), axes == 3 ? k * sizes.z() : 0.0);
         for (Element e : tile.elements) {
           e.position += shift;
-          if (region.contains(e.position)) out.push_back(e);
+          if (inside(e.position)) out.push_back(e);
         }
       }
     }
@@ -60,6 +67,17 @@ Scene repeat_to_reach(const Scene& tile, double reach) {
   for (int a = 0; a < tile.dimension; ++a) side = std::min(side, tile.window.sizes()[a]);
   if (!(side > 0) || side >= reach) return tile;
   return repeat_tile(tile, static_cast<int>(std::ceil(reach / side)));
+}
+
+int repeats_to_hold(const Scene& tile, double range, int at_least) {
+  double extent = 0.0;  // the largest distance from a reference position to its outline
+  for (const Shape& shape : tile.shapes)
+    extent = std::max(extent, 0.5 * bounding_box(shape).sizes().norm());
+  double side = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < tile.dimension; ++a) side = std::min(side, tile.window.sizes()[a]);
+  if (!(side > 0) || !std::isfinite(range)) return at_least;
+  const double needed = 2.0 * (range + 2.0 * extent);
+  return std::max(at_least, static_cast<int>(std::ceil(needed / side - 1e-9)));
 }
 
 int tile_repeats(std::size_t elements) {

@@ -21,9 +21,15 @@ Scene repeat_tile(const Scene& tile, int times);
 Scene repeat_to_reach(const Scene& tile, double reach);
 
 // The tile's elements repeated by whole windows over `region` (2D: along x and y; 3D also z), those
-// whose reference positions lie in it: the drawing continued as the seamless repeat it is, e.g. a
-// sampler's start on an output domain (the chain then moves, removes and adds elements).
+// whose reference positions lie in it (half-open: [min, max) along each axis): the drawing
+// continued as the seamless repeat it is, e.g. a sampler's start on an output domain (the chain
+// then moves, removes and adds elements).
 std::vector<Element> tile_over(const Scene& tile, const Box3& region);
+
+// Repeats along each side (at least `at_least`) for a torus on which pairs of elements whose
+// outlines are up to `range` apart are seen once, by their nearest image: the smallest side at
+// least twice the range plus the largest shape's extent on either side.
+int repeats_to_hold(const Scene& tile, double range, int at_least);
 
 // Repeats along each side that a tile of `elements` elements is fitted with: none from 8
 // elements (their interaction ranges stay within half the tile), else 3 (an element's images one

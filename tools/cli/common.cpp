@@ -1,5 +1,6 @@
 #include "tools/cli/common.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "libshapeproc/core/error.hpp"
@@ -83,13 +84,24 @@ nlohmann::json ReaderFlags::to_json() const {
   return j;
 }
 
-FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader) {
-  FittingExemplar result{io::read_scene(input, reader.options()), 1};
+FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader,
+                                      int repeats) {
+  FittingExemplar result{io::read_scene(input, reader.options()), 1, {}};
   if (reader.tile && result.scene.dimension == 2) {
-    result.repeats = geometry::tile_repeats(result.scene.elements.size());
-    result.scene = geometry::repeat_tile(result.scene, result.repeats);
+    result.tile = result.scene;
+    result.repeats = repeats > 0 ? repeats : geometry::tile_repeats(result.scene.elements.size());
+    result.scene = geometry::repeat_tile(result.tile, result.repeats);
   }
   return result;
+}
+
+int model_tile_repeats(const model::ShapeProcessModel& model) {
+  if (model.fit_json.empty()) return 0;
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
+  if (fit.is_discarded() || !fit.contains("tile_repeats") ||
+      !fit["tile_repeats"].is_number_integer())
+    return 0;
+  return std::clamp(fit["tile_repeats"].get<int>(), 0, 64);
 }
 
 void add_measurement_kind_options(CLI::App& command, std::string& distance,

@@ -11,6 +11,7 @@
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/io/reader_options.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::cli {
 
@@ -41,9 +42,16 @@ struct ReaderFlags {
 // repeated so that each element's periodic images are elements (geometry/tile_repeat.hpp).
 struct FittingExemplar {
   geometry::Scene scene;
-  int repeats = 1;  // along each side
+  int repeats = 1;       // along each side
+  geometry::Scene tile;  // the file as read
 };
-FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader);
+// `repeats` 0: as many as geometry::tile_repeats gives for the tile's elements.
+FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader,
+                                      int repeats = 0);
+
+// The repeats a model's fit used for its tile (its record's `tile_repeats`), 0 when none is
+// recorded.
+int model_tile_repeats(const model::ShapeProcessModel& model);
 
 // --distance shape|centroid|hausdorff and --direction gravitation|centroid, and their values.
 void add_measurement_kind_options(CLI::App& command, std::string& distance, std::string& direction);

@@ -64,11 +64,16 @@ void print_report(const evaluation::FidelityReport& r, const evaluation::Fidelit
 
 int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& arguments,
                  std::ostream& out) {
-  const geometry::Scene exemplar = read_fitting_exemplar(args.input, args.reader).scene;
-  const model::ShapeProcessModel model =
-      args.model.empty()
-          ? fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity).model
-          : io::read_model(args.model);
+  // The exemplar as the model was fitted: a small tile repeated as often as its fit did.
+  geometry::Scene exemplar;
+  model::ShapeProcessModel model;
+  if (args.model.empty()) {
+    model =
+        fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity, &exemplar).model;
+  } else {
+    model = io::read_model(args.model);
+    exemplar = read_fitting_exemplar(args.input, args.reader, model_tile_repeats(model)).scene;
+  }
   const std::string edge = args.fit.edge_for(args.reader);
   const geometry::Boundary boundary =
       edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;

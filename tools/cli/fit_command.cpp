@@ -6,6 +6,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -56,14 +57,16 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 }  // namespace
 
-fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
-                            const ReaderFlags& reader, const std::vector<std::string>& arguments,
-                            const VerbosityFlags& verbosity, geometry::Scene* fitted) {
+namespace {
+
+// The most repeats a tile is refitted on (the quadrature grows with their square).
+constexpr int kMaxTileRepeats = 6;
+
+// The fit of one exemplar scene: the MPL, then the MLE unless --estimator mpl, with progress.
+fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std::string& input,
+                         const FitFlags& flags, const ReaderFlags& reader,
+                         const VerbosityFlags& verbosity) {
   fit::FitOptions options = flags.options(reader);
-  verbosity.stage("reading " + input);
-  const FittingExemplar fitting = read_fitting_exemplar(input, reader);
-  const geometry::Scene& exemplar = fitting.scene;
-  const int repeats = fitting.repeats;
   // The repeated tile keeps the cells' size: as many cells per tile as the default gives one.
   if (repeats > 1 && options.quadrature == 0 && exemplar.dimension == 2)
     options.quadrature = fit::default_quadrature_cells(2) * repeats;
@@ -97,6 +100,48 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
+  return result;
+}
+
+}  // namespace
+
+fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
+                            const ReaderFlags& reader, const std::vector<std::string>& arguments,
+                            const VerbosityFlags& verbosity, geometry::Scene* fitted) {
+  flags.options(reader);  // its own checks, before reading anything
+  verbosity.stage("reading " + input);
+  FittingExemplar fitting = read_fitting_exemplar(input, reader);
+  fit::FitResult result =
+      fit_scene(fitting.scene, fitting.repeats, input, flags, reader, verbosity);
+  // A tile's torus must be large enough for the fitted interactions: a pair farther apart than
+  // half its side is seen at its nearer image, so the fit would count it as another pair and give
+  // bands the outputs fill a zero γ (leaf, 3 x 3 repeats of 80 x 40: a fifth of an output's
+  // repeated tile broke such a band). Fitted again, once, on a repeat that holds them.
+  if (reader.tile && fitting.scene.dimension == 2) {
+    const int needed =
+        geometry::repeats_to_hold(fitting.tile, result.model.interaction_range(), fitting.repeats);
+    if (needed > fitting.repeats && needed <= kMaxTileRepeats) {
+      const int before = fitting.repeats;
+      fitting = read_fitting_exemplar(input, reader, needed);
+      verbosity.stage("fitting again on the tile repeated " + std::to_string(needed) + " x " +
+                      std::to_string(needed));
+      result = fit_scene(fitting.scene, fitting.repeats, input, flags, reader, verbosity);
+      result.notes.push_back("fitted on the tile repeated " + std::to_string(needed) + " x " +
+                             std::to_string(needed) + ": the interactions fitted on " +
+                             std::to_string(before) + " x " + std::to_string(before) +
+                             " reach further than half its side");
+    } else if (needed > fitting.repeats) {
+      result.notes.push_back(
+          "the interactions reach further than half the side of the tile "
+          "repeated " +
+          std::to_string(fitting.repeats) + " x " + std::to_string(fitting.repeats) +
+          "; holding them would take " + std::to_string(needed) + " x " + std::to_string(needed) +
+          " repeats, more than the " + std::to_string(kMaxTileRepeats) +
+          " this fit allows, so far pairs are seen at nearer images");
+    }
+  }
+  const geometry::Scene& exemplar = fitting.scene;
+  const int repeats = fitting.repeats;
   for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
   nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
   provenance["exemplar"] = input;
