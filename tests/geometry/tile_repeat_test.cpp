@@ -54,6 +54,17 @@ TEST(TileRepeat, TileOverContinuesTheDrawingOverARegion) {
   EXPECT_TRUE(tile_over(Scene{}, Box3(Vec3(0, 0, 0), Vec3(9, 9, 0))).empty());
 }
 
+// A torus holds pairs up to `range` apart once when its smallest side is at least twice the
+// range plus the largest extent on either side: the dot of radius 1 (extent √2, its bounding
+// box's half diagonal) on the 10 x 6 tile needs 2 (4 + 2√2) = 13.7, three repeats of 6.
+TEST(TileRepeat, RepeatsToHoldARangeOnTheTorus) {
+  const Scene tile = one_dot_tile();
+  EXPECT_EQ(repeats_to_hold(tile, 4.0, 1), 3);
+  EXPECT_EQ(repeats_to_hold(tile, 4.0, 4), 4);
+  EXPECT_EQ(repeats_to_hold(tile, 0.0, 1), 1);
+  EXPECT_EQ(repeats_to_hold(tile, 0.2, 1), 2);  // 2 (0.2 + 2.83) = 6.06 > 6
+}
+
 TEST(TileRepeat, AOneElementTileHasNeighbours) {
   // On its own torus the dot has no pair; repeated 3 x 3, each copy has its images one period
   // away on either side as neighbours: 2 along x (at 10 - 2 = 8 between outlines), 2 along y (4).

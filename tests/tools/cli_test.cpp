@@ -342,6 +342,32 @@ TEST(CliSynthesize, StartsFromTheExemplarRepeatedOverTheOutput) {
       2, "--start is for --method shape-process");
 }
 
+// A tile whose interactions reach further than half the side of its default 3 x 3 repeat (two
+// dots 30 apart on a 60 x 12 strip: pairs 26 apart along x, the repeat 36 high) is fitted again
+// on a repeat that holds them (2 (26 + 2 · 2.8) / 12 -> 6 x 6), says so, records it, and its
+// output keeps every element of the repeated tile.
+TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
+  const testing::TempDir dir;
+  const std::string tile = dir.write("strip.svg",
+                                     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"60\" "
+                                     "height=\"12\" viewBox=\"0 0 60 12\"><circle cx=\"10\" "
+                                     "cy=\"6\" r=\"2\"/><circle cx=\"40\" cy=\"6\" "
+                                     "r=\"2\"/></svg>")
+                               .string();
+  const std::string model = dir.file("strip.json").string();
+  const Result fit = run_cli({"fit", tile, "--tile", "-o", model});
+  ASSERT_EQ(fit.code, 0) << fit.err;
+  EXPECT_NE(fit.out.find("note: fitted on the tile repeated 6 x 6"), std::string::npos) << fit.out;
+  const nlohmann::json record = nlohmann::json::parse(testing::read_file(model)).at("fit");
+  EXPECT_EQ(record.at("tile_repeats"), 6);
+  const std::string out = dir.file("strip-out.svg").string();
+  ASSERT_EQ(run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "240,48", "--quiet"}).code,
+            0);
+  const Result stats = run_cli({"stats", out, "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  EXPECT_EQ(nlohmann::json::parse(stats.out).at("elements").get<int>(), 32);
+}
+
 TEST(CliStats, TextJsonAndComparisons) {
   const testing::TempDir dir;
   const Result text = run_cli({"stats", data("svg/dots-random.svg")});

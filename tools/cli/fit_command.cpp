@@ -117,6 +117,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   // half its side is seen at its nearer image, so the fit would count it as another pair and give
   // bands the outputs fill a zero γ (leaf, 3 x 3 repeats of 80 x 40: a fifth of an output's
   // repeated tile broke such a band). Fitted again, once, on a repeat that holds them.
+  std::vector<std::string> tile_notes;
   if (reader.tile && fitting.scene.dimension == 2) {
     const int needed =
         geometry::repeats_to_hold(fitting.tile, result.model.interaction_range(), fitting.repeats);
@@ -126,12 +127,12 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
       verbosity.stage("fitting again on the tile repeated " + std::to_string(needed) + " x " +
                       std::to_string(needed));
       result = fit_scene(fitting.scene, fitting.repeats, input, flags, reader, verbosity);
-      result.notes.push_back("fitted on the tile repeated " + std::to_string(needed) + " x " +
-                             std::to_string(needed) + ": the interactions fitted on " +
-                             std::to_string(before) + " x " + std::to_string(before) +
-                             " reach further than half its side");
+      tile_notes.push_back("fitted on the tile repeated " + std::to_string(needed) + " x " +
+                           std::to_string(needed) + ": the interactions fitted on " +
+                           std::to_string(before) + " x " + std::to_string(before) +
+                           " reach further than half its side");
     } else if (needed > fitting.repeats) {
-      result.notes.push_back(
+      tile_notes.push_back(
           "the interactions reach further than half the side of the tile "
           "repeated " +
           std::to_string(fitting.repeats) + " x " + std::to_string(fitting.repeats) +
@@ -151,6 +152,10 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   provenance["options"]["edge"] = flags.edge_for(reader);
   if (repeats > 1) provenance["tile_repeats"] = repeats;
   provenance["options"]["directions"] = result.model.measurement.directions;
+  for (const std::string& note : tile_notes) {
+    provenance["notes"].push_back(note);
+    result.notes.push_back(note);
+  }
   result.model.fit_json = provenance.dump();
   if (fitted) *fitted = exemplar;
   return result;
