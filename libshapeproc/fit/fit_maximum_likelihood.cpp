@@ -81,7 +81,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   // A packed exemplar's chains start at it (its free part with border correction).
   const bool at_exemplar = packed_exemplar(start);
-  if (at_exemplar) chains.attraction_prior_sd = 0.0;
   const geometry::Box3& free = chains.sampling.free_region;
   for (const geometry::Element& e : exemplar.elements)
     if (at_exemplar && (free.isEmpty() || free.contains(e.position)))
@@ -170,6 +169,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                          {"expected_standard_error", mle.expected_error},
                          {"z", z},
                          {"tolerance", mle.tolerance},
+                         {"worst_r_hat", std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0},
                          {"significance", options.significance},
                          {"seconds", mle.seconds}};
   record["notes"] = result.notes;

@@ -58,6 +58,9 @@ struct MleResult {
   // θ indices where the attraction prior holds the band's expected pairs half a pair or more
   // below the exemplar's count.
   std::vector<bool> penalised;
+  // The largest R-hat over the free statistics at the returned estimate (monte_carlo_moments.hpp):
+  // convergence also needs the chains to agree (at most kMaxRHat).
+  double worst_r_hat = 1.0;
   double seconds = 0.0;
   int iterations = 0;
   bool converged = false;

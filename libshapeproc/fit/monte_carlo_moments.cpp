@@ -83,7 +83,9 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   m.parameters = static_cast<int>(p);
   std::vector<std::vector<double>> batch_means;
   const std::size_t skip = static_cast<std::size_t>(setting.burn_in / setting.observe_every);
+  std::vector<std::pair<int, int>> chain_rows;
   for (const synthesis::SynthesisResult& result : results) {
+    const int first_row = m.observations;
     const std::size_t kept =
         result.observations.size() > skip ? result.observations.size() - skip : 0;
     const std::size_t per_batch = std::max<std::size_t>(1, kept / kBatchesPerChain);
@@ -101,6 +103,7 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
         in_batch = 0;
       }
     }
+    chain_rows.emplace_back(first_row, m.observations);
   }
   core::check(m.observations >= 2, "mle",
               "too few observations: raise the steps or lower the observation interval");
@@ -109,7 +112,41 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   m.standard_error = batch_standard_errors(batch_means, p);
   for (std::size_t k = 0; k < p; ++k)
     if (m.covariance[k * p + k] == 0.0) m.standard_error[k] = 0.0;
+  m.r_hat = potential_scale_reduction(m, chain_rows);
   return m;
+}
+
+std::vector<double> potential_scale_reduction(const StatisticsMoments& sample,
+                                              const std::vector<std::pair<int, int>>& chains) {
+  const Eigen::Map<const RowMatrix> t = sample_matrix(sample);
+  const Eigen::Index p = t.cols();
+  std::vector<double> r(static_cast<std::size_t>(p), 1.0);
+  if (chains.size() < 2) return r;
+  double n = std::numeric_limits<double>::infinity();  // the shortest chain's length
+  for (const auto& [first, last] : chains) n = std::min(n, static_cast<double>(last - first));
+  if (n < 2) return r;
+  const double m = static_cast<double>(chains.size());
+  for (Eigen::Index k = 0; k < p; ++k) {
+    std::vector<double> means;
+    double within = 0.0;
+    for (const auto& [first, last] : chains) {
+      const auto column = t.col(k).segment(first, last - first);
+      const double mean = column.mean();
+      means.push_back(mean);
+      within += (column.array() - mean).square().sum() / (last - first - 1) / m;
+    }
+    double grand = 0.0;
+    for (double x : means) grand += x / m;
+    double between = 0.0;  // B / n
+    for (double x : means) between += (x - grand) * (x - grand) / (m - 1);
+    if (within <= 0.0) {
+      r[static_cast<std::size_t>(k)] =
+          between > 0.0 ? std::numeric_limits<double>::infinity() : 1.0;
+      continue;
+    }
+    r[static_cast<std::size_t>(k)] = std::sqrt(((n - 1) / n * within + between) / within);
+  }
+  return r;
 }
 
 StatisticsMoments reweighted(const StatisticsMoments& sample, const std::vector<double>& delta,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "libshapeproc/geometry/domain.hpp"
@@ -37,11 +38,21 @@ struct StatisticsMoments {
   std::vector<double> mean;            // by θ index
   std::vector<double> standard_error;  // of the mean, from batch means over the chains
   std::vector<double> covariance;      // row-major, parameters x parameters
+  // Per statistic, the potential scale reduction over the chains (Gelman & Rubin 1992): near 1
+  // when the chains agree, large when they sit in different states (a model that holds a packed
+  // exemplar in some chains and loses it in others), infinite for chains constant at different
+  // values; 1 for one chain or a constant statistic. Empty after reweighting.
+  std::vector<double> r_hat;
   int observations = 0;
 };
 
 StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
                                      const geometry::Domain& domain, const ChainsSetting& setting);
+
+// Gelman and Rubin's R-hat of each statistic of `sample`, whose chains are the row ranges
+// [first, last) of `chains` (statistics_moments fills StatisticsMoments::r_hat with it).
+std::vector<double> potential_scale_reduction(const StatisticsMoments& sample,
+                                              const std::vector<std::pair<int, int>>& chains);
 
 // The sample's mean and covariance reweighted to θ + δ (δ by θ index, zero where unchanged), and
 // the effective sample size as a share of the observations (1 for δ = 0). Standard errors are not

@@ -117,6 +117,27 @@ TEST(MaximumLikelihood, APackedLatticeIsHeldFromTheExemplarWithAnUnboundedBeta) 
   }
 }
 
+// R-hat on hand-made chains of 4 observations: chains that alternate alike agree (within
+// variance 1/3, between 0: sqrt(3/4)); chains around 1.5 and 5.5 do not; chains constant at
+// different values disagree without limit; a constant statistic has R-hat 1.
+TEST(MaximumLikelihood, PotentialScaleReductionTellsChainsThatDisagree) {
+  StatisticsMoments m;
+  m.parameters = 3;
+  m.observations = 8;
+  m.samples = {1, 7, 2, 2, 7, 2, 1, 7, 2, 2, 7, 2,   // chain 1: (1, 2, 1, 2), 7, 2
+               2, 7, 2, 1, 7, 2, 2, 7, 2, 1, 7, 2};  // chain 2: (2, 1, 2, 1), 7, 2
+  const std::vector<std::pair<int, int>> chains = {{0, 4}, {4, 8}};
+  std::vector<double> r = potential_scale_reduction(m, chains);
+  EXPECT_NEAR(r[0], std::sqrt(0.75), 1e-12);
+  EXPECT_EQ(r[1], 1.0);
+  EXPECT_EQ(r[2], 1.0);
+  for (int i = 12; i < 24; i += 3) m.samples[static_cast<std::size_t>(i)] += 4;  // 5.5 on average
+  m.samples[14] = m.samples[17] = m.samples[20] = m.samples[23] = 3;             // constant 3
+  r = potential_scale_reduction(m, chains);
+  EXPECT_GT(r[0], 3.0);
+  EXPECT_TRUE(std::isinf(r[2]));
+}
+
 // Importance reweighting: a Poisson sample of mean μ reweighted by δ in log β has mean μ e^δ
 // (within 4 standard errors of the sample), δ = 0 gives the sample's own moments, and the
 // effective sample size shrinks as δ grows.
