@@ -294,6 +294,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     bool better_than(const Iterate& other) const { return worst_z < other.worst_z; }
   } best;
   double last_r_hat = 1.0;
+  // Chains started at a packed exemplar hold it and are not meant to mix: their R-hat reflects
+  // the rare element one of them lost (dashes-rows 1.39), and is not asked of them.
+  const bool held_start = !options.sampling.start.empty();
   const auto worst_r_hat = [&](const StatisticsMoments& m) {
     double worst = 1.0;
     for (std::size_t k : free)
@@ -353,7 +356,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         stalled >= kStalledAfter) {
       rough = false;
     }
-    if (g.worst_z <= r.tolerance && here.worst_r_hat <= kMaxRHat) {
+    if (g.worst_z <= r.tolerance && (here.worst_r_hat <= kMaxRHat || held_start)) {
       if (rough) {
         rough = false;  // within tolerance at a quarter of the precision: check at full length
         continue;
