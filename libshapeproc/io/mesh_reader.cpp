@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/mesh_tile_seams.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -187,6 +188,28 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     }
   }
 
+  if (options.window && options.window->dimension != 3)
+    throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+  const geometry::Box3 window = options.window ? options.window->box : box;
+  // A tile: pieces cut by the window's faces join their counterparts across the opposite faces,
+  // each moved by whole periods to make its element whole (mesh_tile_seams.hpp).
+  std::vector<Eigen::Vector3i> periods_of_triangle;
+  SeamJoin seams;
+  if (options.tile && options.mesh_split == MeshSplit::components &&
+      window.sizes().minCoeff() > 0.0) {
+    seams = join_across_faces(points, triangles, element_of_triangle,
+                              static_cast<int>(element_names.size()), window);
+    periods_of_triangle.resize(triangles.size());
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      const auto piece = static_cast<std::size_t>(element_of_triangle[f]);
+      periods_of_triangle[f] = seams.periods_of_piece[piece];
+      element_of_triangle[f] = seams.element_of_piece[piece];
+    }
+    element_names.resize(static_cast<std::size_t>(seams.elements));
+    for (int e = 0; e < seams.elements; ++e)
+      element_names[static_cast<std::size_t>(e)] = "component " + std::to_string(e);
+  }
+
   geometry::Scene scene;
   scene.dimension = 3;
   scene.units = "1";
@@ -203,7 +226,10 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
       const int v = triangles[f][k];
       if (map[v] < 0) {
         map[v] = static_cast<int>(piece.vertices.size());
-        piece.vertices.push_back(points[v]);
+        geometry::Vec3 point = points[v];
+        if (!periods_of_triangle.empty())
+          point += periods_of_triangle[f].cast<double>().cwiseProduct(window.sizes());
+        piece.vertices.push_back(point);
       }
       t[k] = map[v];
     }
@@ -211,18 +237,22 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   }
   for (std::size_t e = 0; e < pieces.size(); ++e) {
     if (pieces[e].triangles.empty()) continue;
-    geometry::add_element(
+    const std::size_t added = geometry::add_element(
         scene, geometry::Shape{geometry::MeshShape{std::move(pieces[e])}, element_names[e]},
         category);
+    // A whole element of a tile may reach past the window: its place is its image inside.
+    if (!periods_of_triangle.empty())
+      scene.elements[added].position = wrap_into(scene.elements[added].position, window);
   }
-
-  if (options.window) {
-    if (options.window->dimension != 3)
-      throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
-    scene.window = options.window->box;
-  } else {
-    scene.window = box;
-  }
+  if (seams.joined_pieces > 0)
+    scene.notes.push_back("--tile: " + std::to_string(seams.joined_pieces) +
+                          " pieces cut by the window's faces joined their counterparts across "
+                          "them into whole elements");
+  if (seams.wraps)
+    scene.notes.push_back(
+        "--tile: a motif meets itself around the repeat; it is kept as one "
+        "element, unwrapped as far as it first joined");
+  scene.window = window;
   const geometry::Vec3 sizes = scene.window.sizes();
   if (!(sizes.minCoeff() > 0.0)) {
     throw core::InputError(name, 0, "the window has zero size (a flat scene): give --window");

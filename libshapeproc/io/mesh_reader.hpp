@@ -11,6 +11,8 @@ namespace shapeproc::io {
 // Reads a triangle-mesh scene. Elements are the connected components of the mesh
 // (options.mesh_split == components) or the OBJ `o`/`g` groups (groups; OBJ only). Polygons are
 // split into triangle fans. The window is options.window (3D) or the bounding box of the scene.
+// With options.tile (components only), pieces cut by the window's faces join their counterparts
+// across the opposite faces into whole elements (mesh_tile_seams.hpp), placed inside the window.
 // Coordinates are read in single precision by OpenMesh's readers.
 //
 // Throws InputError naming the file for: unreadable or empty files, files OpenMesh cannot parse,

@@ -45,7 +45,8 @@ struct ReaderOptions {
   bool split_subpaths = false;   // the older spelling of elements = subpaths
   bool nested_separate = false;  // visual: a piece inside another's hole is its own element
   // The file is one period of a seamless repeat: pieces the border cuts join their counterparts
-  // across it (SVG), and the window is the tile.
+  // across it (SVG; meshes split by components, on their box window), and the window is the
+  // tile.
   bool tile = false;
   GroupMode groups = GroupMode::element;
   CategoryRule category_by;

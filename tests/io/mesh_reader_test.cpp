@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <string>
+#include <vector>
+
 #include "libshapeproc/core/error.hpp"
 #include "tests/test_support.hpp"
 
@@ -70,6 +74,60 @@ TEST(MeshReader, GroupsOrComponents) {
   EXPECT_EQ(geometry::primitive_count(scene.shapes[0]), 8u);
   EXPECT_EQ(scene.shapes[1].name, "single");
   EXPECT_NEAR(scene.elements[0].position.x(), 2.0, 1e-6);
+}
+
+// OBJ text of axis-aligned boxes, each 8 vertices and 12 outward triangles.
+std::string boxes_obj(const std::vector<std::array<double, 6>>& boxes) {
+  std::string v, f;
+  const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  int offset = 1;
+  for (const auto& b : boxes) {
+    for (double x : {b[0], b[1]})
+      for (double y : {b[2], b[3]})
+        for (double z : {b[4], b[5]})
+          v += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    for (const auto& q : quads) {
+      f += "f " + std::to_string(q[0] + offset) + " " + std::to_string(q[1] + offset) + " " +
+           std::to_string(q[2] + offset) + "\n";
+      f += "f " + std::to_string(q[0] + offset) + " " + std::to_string(q[2] + offset) + " " +
+           std::to_string(q[3] + offset) + "\n";
+    }
+    offset += 8;
+  }
+  return v + f;
+}
+
+// A mesh tile on the box [0, 10]³: a box cut by the face x = 10 (its pieces [8, 10] and [0, 1]),
+// one cut along the edge x = y = 10 (four pieces), and a whole box. Read with --tile, the pieces
+// join across the faces into whole, unwrapped elements placed inside the window; without, every
+// piece is an element.
+TEST(MeshReader, ATilesPiecesJoinAcrossTheWindowsFaces) {
+  const TempDir dir;
+  const auto path = dir.write("tile.obj", boxes_obj({{8, 10, 1, 3, 1, 3},
+                                                     {0, 1, 1, 3, 1, 3},
+                                                     {9, 10, 9, 10, 5, 6},
+                                                     {0, 1, 9, 10, 5, 6},
+                                                     {9, 10, 0, 1, 5, 6},
+                                                     {0, 1, 0, 1, 5, 6},
+                                                     {4, 6, 4, 6, 4, 6}}));
+  ReaderOptions options;
+  options.window = WindowOption::parse("0,10,0,10,0,10");
+  EXPECT_EQ(read_mesh_scene(path, options).elements.size(), 7u);
+  options.tile = true;
+  const geometry::Scene tile = read_mesh_scene(path, options);
+  ASSERT_EQ(tile.elements.size(), 3u);
+  std::vector<geometry::Vec3> sizes;
+  for (const geometry::Shape& shape : tile.shapes) sizes.push_back(bounding_box(shape).sizes());
+  EXPECT_TRUE(sizes[0].isApprox(geometry::Vec3(3, 2, 2), 1e-9)) << sizes[0].transpose();
+  EXPECT_TRUE(sizes[1].isApprox(geometry::Vec3(2, 2, 1), 1e-9)) << sizes[1].transpose();
+  EXPECT_TRUE(sizes[2].isApprox(geometry::Vec3(2, 2, 2), 1e-9)) << sizes[2].transpose();
+  EXPECT_TRUE(tile.elements[0].position.isApprox(geometry::Vec3(9.5, 2, 2), 1e-9));
+  // The corner box's centre (10, 10, 5.5) lies on the faces: its place is its image inside.
+  EXPECT_TRUE(tile.elements[1].position.isApprox(geometry::Vec3(0, 0, 5.5), 1e-9))
+      << tile.elements[1].position.transpose();
+  ASSERT_FALSE(tile.notes.empty());
+  EXPECT_NE(tile.notes[0].find("6 pieces"), std::string::npos) << tile.notes[0];
 }
 
 TEST(MeshReader, OffPolygonsStlAndWindowOption) {

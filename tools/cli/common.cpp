@@ -23,8 +23,9 @@ void ReaderFlags::add_to(CLI::App& command) {
       ->check(CLI::IsMember({"join", "separate"}))
       ->capture_default_str();
   command.add_flag("--tile", tile,
-                   "SVG: the file is one period of a seamless repeat: pieces the border cuts "
-                   "join across it, and fits use periodic edges");
+                   "SVG, meshes: the file is one period of a seamless repeat: pieces the "
+                   "border (a mesh's --window box) cuts join across it, and fits use periodic "
+                   "edges");
   command.add_flag("--split-subpaths", split_subpaths,
                    "SVG: each disjoint subpath of a path is its own element (holes stay); the "
                    "same as --elements subpaths");
