@@ -118,6 +118,11 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
 
 ShapeProcessSampler::~ShapeProcessSampler() = default;
 
+bool ShapeProcessSampler::torus_smaller_than_reach() const {
+  return domain_.periodic() && reach_ > 0 &&
+         domain_.sizes().head(model_.dimension).minCoeff() < 2.0 * reach_;
+}
+
 // One run of the chain: the configuration, the generator, and the three moves.
 class ShapeProcessSampler::Chain {
  public:

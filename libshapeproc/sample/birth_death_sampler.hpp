@@ -94,6 +94,12 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
 
   const geometry::Domain& domain() const { return domain_; }
   double shift_radius() const { return shift_radius_; }
+  // The farthest apart two interacting reference positions can be.
+  double reach() const { return reach_; }
+  // A torus whose smaller side is under twice the reach: an element can meet its own images, and
+  // pairs seen at a nearer image take that image's band (a band with no exemplar pair refuses
+  // them).
+  bool torus_smaller_than_reach() const;
 
  private:
   class Chain;

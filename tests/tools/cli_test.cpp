@@ -366,6 +366,18 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   const Result stats = run_cli({"stats", out, "--json"});
   ASSERT_EQ(stats.code, 0) << stats.err;
   EXPECT_EQ(nlohmann::json::parse(stats.out).at("elements").get<int>(), 32);
+  // An output torus under twice the reach (range 57, dots 4 wide: 2 (57 + 4) = 123) is said to
+  // be one.
+  const Result small =
+      run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "60,60", "--iterations", "100"});
+  ASSERT_EQ(small.code, 0) << small.err;
+  EXPECT_NE(small.out.find("warning: the output torus is smaller than twice the model's reach"),
+            std::string::npos)
+      << small.out;
+  const Result large = run_cli(
+      {"synthesize", tile, "--tile", "-o", out, "--size", "180,180", "--iterations", "100"});
+  ASSERT_EQ(large.code, 0) << large.err;
+  EXPECT_EQ(large.out.find("warning: the output torus"), std::string::npos) << large.out;
 }
 
 TEST(CliStats, TextJsonAndComparisons) {

@@ -5,6 +5,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -157,6 +158,11 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   sample::SamplerOptions options = sampler_options();
   options.start = std::move(start);
   const sample::ShapeProcessSampler sampler(model, domain(model.dimension), options);
+  if (sampler.torus_smaller_than_reach())
+    out << "warning: the output torus is smaller than twice the model's reach ("
+        << core::format_general(2 * sampler.reach(), 4)
+        << "): elements meet their own images, and pairs seen at a nearer image may be refused; "
+           "give a larger --size\n";
   return run(sampler, output, std::move(record), out);
 }
 
