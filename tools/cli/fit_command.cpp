@@ -6,7 +6,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/geometry/tile_repeat.hpp"
+#include "libshapeproc/fit/tile_fit.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -59,9 +59,6 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 namespace {
 
-// The most repeats a tile is refitted on (the quadrature grows with their square).
-constexpr int kMaxTileRepeats = 6;
-
 // The fit of one exemplar scene: the MPL, then the MLE unless --estimator mpl, with progress.
 fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std::string& input,
                          const FitFlags& flags, const ReaderFlags& reader,
@@ -110,42 +107,25 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const VerbosityFlags& verbosity, geometry::Scene* fitted) {
   flags.options(reader);  // its own checks, before reading anything
   verbosity.stage("reading " + input);
-  FittingExemplar fitting = read_fitting_exemplar(input, reader);
-  fit::FitResult result =
-      fit_scene(fitting.scene, fitting.repeats, input, flags, reader, verbosity);
-  // A tile's torus must be large enough for the fitted interactions: a pair farther apart than
-  // half its side is seen at its nearer image, so the fit would count it as another pair and give
-  // bands the outputs fill a zero γ (leaf, 3 x 3 repeats of 80 x 40: a fifth of an output's
-  // repeated tile broke such a band). Fitted again, once, on a repeat that holds them. Only a
-  // tile already repeated (fewer than 8 elements): refitted 2 x 2 or 3 x 3, larger tiles
-  // (happy-intersection, 45 elements; random-shapes, 24) gave MLE fits that did not converge and
-  // outputs of x0.01 and x1.29 against x0.96 and x0.97 on their own torus.
+  FittingExemplar read = read_fitting_exemplar(input, reader);
+  const auto fit_one = [&](const geometry::Scene& scene, int times) {
+    return fit_scene(scene, times, input, flags, reader, verbosity);
+  };
+  // A tile: fitted repeated, and refitted on a larger repeat where its interactions need one.
+  fit::FitResult result;
+  geometry::Scene exemplar;
+  int repeats = 1;
   std::vector<std::string> tile_notes;
-  if (reader.tile && fitting.scene.dimension == 2 && fitting.repeats > 1) {
-    const int needed =
-        geometry::repeats_to_hold(fitting.tile, result.model.interaction_range(), fitting.repeats);
-    if (needed > fitting.repeats && needed <= kMaxTileRepeats) {
-      const int before = fitting.repeats;
-      fitting = read_fitting_exemplar(input, reader, needed);
-      verbosity.stage("fitting again on the tile repeated " + std::to_string(needed) + " x " +
-                      std::to_string(needed));
-      result = fit_scene(fitting.scene, fitting.repeats, input, flags, reader, verbosity);
-      tile_notes.push_back("fitted on the tile repeated " + std::to_string(needed) + " x " +
-                           std::to_string(needed) + ": the interactions fitted on " +
-                           std::to_string(before) + " x " + std::to_string(before) +
-                           " reach further than half its side");
-    } else if (needed > fitting.repeats) {
-      tile_notes.push_back(
-          "the interactions reach further than half the side of the tile "
-          "repeated " +
-          std::to_string(fitting.repeats) + " x " + std::to_string(fitting.repeats) +
-          "; holding them would take " + std::to_string(needed) + " x " + std::to_string(needed) +
-          " repeats, more than the " + std::to_string(kMaxTileRepeats) +
-          " this fit allows, so far pairs are seen at nearer images");
-    }
+  if (reader.tile && read.scene.dimension == 2) {
+    fit::TileFit tile = fit::fit_tile(read.tile, fit_one);
+    result = std::move(tile.result);
+    exemplar = std::move(tile.exemplar);
+    repeats = tile.repeats;
+    tile_notes = std::move(tile.notes);
+  } else {
+    exemplar = std::move(read.scene);
+    result = fit_one(exemplar, 1);
   }
-  const geometry::Scene& exemplar = fitting.scene;
-  const int repeats = fitting.repeats;
   for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
   nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
   provenance["exemplar"] = input;
