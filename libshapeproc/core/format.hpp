@@ -12,4 +12,8 @@ std::string format_number(double value);
 std::string format_fixed(double value, int precision = 3);
 std::string format_general(double value, int digits = 4);
 
+// `text` with &, <, > and " escaped, for XML attribute values and character data (SVG, HTML):
+// names taken from input files never reach a written file as markup.
+std::string xml_escape(const std::string& text);
+
 }  // namespace shapeproc::core

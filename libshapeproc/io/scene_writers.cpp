@@ -3,6 +3,7 @@
 #include <variant>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/csv_reader.hpp"
 #include "libshapeproc/io/text.hpp"
 
@@ -47,7 +48,7 @@ void write_drawable(std::ostream& out, const geometry::Drawable2& drawable,
   out << '"';
   if (drawable.fill_rule == geometry::FillRule::evenodd) out << " fill-rule=\"evenodd\"";
   for (const auto& [name, value] : drawable.style) {
-    out << ' ' << name << "=\"" << xml_escape(value) << '"';
+    out << ' ' << name << "=\"" << core::xml_escape(value) << '"';
   }
   out << "/>\n";
 }
@@ -69,7 +70,8 @@ void write_svg_element(const Scene& scene, std::size_t i, std::ostream& out) {
   const geometry::Element& element = scene.elements[i];
   const geometry::Shape shape = scene.placed_shape(i);
   const std::string attributes = " id=\"e" + std::to_string(i) + "\" data-category=\"" +
-                                 xml_escape(scene.categories.at(element.category).name) + "\"";
+                                 core::xml_escape(scene.categories.at(element.category).name) +
+                                 "\"";
   if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
     if (planar->parts.size() == 1) {
       write_drawable(out, planar->parts.front(), attributes);
@@ -102,11 +104,11 @@ void write_svg(const Scene& scene, std::ostream& out, const Provenance& provenan
       << core::format_number(w.min().x()) << ' ' << core::format_number(w.min().y()) << ' ' << width
       << ' ' << height << "\">\n";
   if (!provenance.json.empty()) {
-    out << "<metadata id=\"shapeproc\">" << xml_escape(provenance.json) << "</metadata>\n";
+    out << "<metadata id=\"shapeproc\">" << core::xml_escape(provenance.json) << "</metadata>\n";
   }
   // Each category in its own layer (Inkscape's groupmode), elements in scene order within it.
   for (std::size_t c = 0; c < scene.categories.size(); ++c) {
-    const std::string name = xml_escape(scene.categories[c].name);
+    const std::string name = core::xml_escape(scene.categories[c].name);
     out << "<g inkscape:groupmode=\"layer\" inkscape:label=\"" << name << "\" id=\"layer" << c + 1
         << "\">\n";
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {

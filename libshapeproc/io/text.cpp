@@ -124,28 +124,4 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (in.bad()) throw core::InputError(path.string(), 0, "read error");
   return buffer.str();
 }
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace shapeproc::io

@@ -29,7 +29,4 @@ std::string extension_of(const std::filesystem::path& path);
 // The whole file as text; throws InputError when it cannot be read.
 std::string read_text_file(const std::filesystem::path& path);
 
-// `text` with &, <, > and " escaped, for XML attribute values and character data.
-std::string xml_escape(const std::string& text);
-
 }  // namespace shapeproc::io

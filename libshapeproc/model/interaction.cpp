@@ -7,7 +7,8 @@ namespace shapeproc::model {
 
 Interaction::Interaction(const ShapeProcessModel& model)
     : categories_(static_cast<int>(model.categories.size())) {
-  pair_index_.assign(static_cast<std::size_t>(categories_ * categories_), -1);
+  pair_index_.assign(static_cast<std::size_t>(categories_) * static_cast<std::size_t>(categories_),
+                     -1);
   parameters_ = categories_;
   for (int c = 0; c < categories_; ++c) {
     locations_.push_back({-1, c, -1});
@@ -38,10 +39,10 @@ Interaction::Interaction(const ShapeProcessModel& model)
     pair.breakpoints.erase(std::unique(pair.breakpoints.begin(), pair.breakpoints.end()),
                            pair.breakpoints.end());
     range_ = std::max(range_, pair.max_range);
-    pair_index_[static_cast<std::size_t>(source.first * categories_ + source.second)] =
-        static_cast<int>(pairs_.size());
-    pair_index_[static_cast<std::size_t>(source.second * categories_ + source.first)] =
-        static_cast<int>(pairs_.size());
+    pair_index_[static_cast<std::size_t>(source.first) * static_cast<std::size_t>(categories_) +
+                static_cast<std::size_t>(source.second)] = static_cast<int>(pairs_.size());
+    pair_index_[static_cast<std::size_t>(source.second) * static_cast<std::size_t>(categories_) +
+                static_cast<std::size_t>(source.first)] = static_cast<int>(pairs_.size());
     pairs_.push_back(std::move(pair));
   }
   classes_ = static_cast<int>(model.shape_classes.size());

@@ -76,7 +76,8 @@ class Interaction {
     std::vector<double> breakpoints;
   };
   int pair_of(int ca, int cb) const {
-    return pair_index_[static_cast<std::size_t>(ca * categories_ + cb)];
+    return pair_index_[static_cast<std::size_t>(ca) * static_cast<std::size_t>(categories_) +
+                       static_cast<std::size_t>(cb)];
   }
 
   int categories_ = 0;

@@ -94,8 +94,14 @@ void validate(const ShapeProcessModel& model) {
       fail("measurement.directions", e.what());
     }
   }();
+  // The pair tables hold categories² entries: a file of 65,537 categories had wrapped an int.
+  if (model.categories.size() > kMaxCategories) {
+    fail("categories", "at most " + std::to_string(kMaxCategories) + " categories, got " +
+                           std::to_string(model.categories.size()));
+  }
   const int categories = static_cast<int>(model.categories.size());
-  std::vector<bool> seen(static_cast<std::size_t>(categories * categories), false);
+  std::vector<bool> seen(
+      static_cast<std::size_t>(categories) * static_cast<std::size_t>(categories), false);
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const PairInteraction& pair = model.interactions[p];
     const std::string where = "interaction[" + std::to_string(p) + "]";
@@ -106,9 +112,10 @@ void validate(const ShapeProcessModel& model) {
                std::to_string(pair.first) + ", " + std::to_string(pair.second) + "]");
     }
     const int a = std::min(pair.first, pair.second), b = std::max(pair.first, pair.second);
-    if (seen[static_cast<std::size_t>(a * categories + b)])
-      fail(where + ".categories", "this pair of categories is listed twice");
-    seen[static_cast<std::size_t>(a * categories + b)] = true;
+    const std::size_t slot = static_cast<std::size_t>(a) * static_cast<std::size_t>(categories) +
+                             static_cast<std::size_t>(b);
+    if (seen[slot]) fail(where + ".categories", "this pair of categories is listed twice");
+    seen[slot] = true;
     if (static_cast<int>(pair.axes.size()) != bins.axis_count()) {
       fail(where + ".axes", "expected " + std::to_string(bins.axis_count()) + " axes for " +
                                 std::to_string(model.measurement.directions) + " directions in " +

@@ -28,6 +28,9 @@ enum class ParameterStatus {
                    // parameter is pushed (a jammed exemplar); left at its start value
 };
 
+// The most categories a model may have: its pair tables hold categories² entries.
+constexpr std::size_t kMaxCategories = 4096;
+
 struct CategoryParameters {
   std::string name;
   double beta = 1.0;  // intensity per unit area (volume in 3D), in exemplar units

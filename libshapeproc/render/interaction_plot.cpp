@@ -66,8 +66,9 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
     const double outer = size / 2 - 4;
     auto radius = [&](double d) { return outer * std::min(1.0, d / reach) * 0.92; };
     svg << "<text x=\"" << cx << "\" y=\"" << margin - 10 << "\" text-anchor=\"middle\">"
-        << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
-        << model.categories[static_cast<std::size_t>(pair.second)].name << "</text>\n";
+        << core::xml_escape(model.categories[static_cast<std::size_t>(pair.first)].name) << " - "
+        << core::xml_escape(model.categories[static_cast<std::size_t>(pair.second)].name)
+        << "</text>\n";
     const std::size_t axes = pair.axes.size();
     if (model.dimension == 2) {
       svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << outer

@@ -26,7 +26,7 @@ std::string output_colour(std::size_t i) {
 }
 
 // The page is well-formed XML (XHTML syntax), so that it can be checked by an XML parser.
-std::string escape(const std::string& text) { return io::xml_escape(text); }
+std::string escape(const std::string& text) { return core::xml_escape(text); }
 
 std::string num(double v, int precision = 4) {
   return std::isfinite(v) ? core::format_general(v, precision) : "–";

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace shapeproc::model {
 namespace {
@@ -76,6 +78,25 @@ TEST(Interaction, BandsParametersAndLocationsOnATinyModel) {
   std::vector<int> seen;
   for (int axis = 0; axis < 2; ++axis) seen.push_back(interaction.parameter(0, 1, axis, 0));
   EXPECT_NE(seen[0], seen[1]);
+}
+
+// A model file of 65,537 categories had its pair table's size wrap an int (65,537² > 2³¹) and
+// was indexed past the end; validation now refuses more than kMaxCategories with the count, and
+// the pair table of a model at the limit is sized and indexed in size_t.
+TEST(Interaction, TooManyCategoriesAreRefusedBeforeAnyPairTable) {
+  ShapeProcessModel m = two_category_model();
+  m.categories.resize(65537, CategoryParameters{"c", 0.1});
+  try {
+    validate(m);
+    FAIL() << "65,537 categories were accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 4096 categories, got 65537"), std::string::npos)
+        << e.what();
+  }
+  m.categories.resize(kMaxCategories);
+  const Interaction at_limit(m);
+  EXPECT_EQ(at_limit.band(4095, 4095, 0, 3.0), Interaction::kBeyond);
+  EXPECT_EQ(at_limit.band(1, 0, 0, 3.0), 0);
 }
 
 TEST(InteractionCounts, KeepsSortedCountsAndDotsWithTheta) {

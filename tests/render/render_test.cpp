@@ -81,6 +81,14 @@ TEST(InteractionPlot, DrawsOneCurvePerAxisOfEveryPair) {
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("dots"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
+
+  // A category name from an input file (`class`, `attr:NAME`) is text, never markup: a name
+  // holding a script reaches the plot a user opens in a browser escaped.
+  m.categories[0].name = "<script>alert(\"1\")</script> & co";
+  const std::string hostile = interaction_plot_svg(m);
+  EXPECT_EQ(hostile.find("<script"), std::string::npos);
+  EXPECT_NE(hostile.find("&lt;script&gt;alert(&quot;1&quot;)&lt;/script&gt; &amp; co"),
+            std::string::npos);
 }
 
 }  // namespace
