@@ -74,6 +74,13 @@ void append_elliptical_arc(Path2& path, const Vec2& from, double rx, double ry,
   const double ratio = num / den;
   double coef = ratio > 1e-12 ? std::sqrt(ratio) : 0.0;
   if (large_arc == sweep) coef = -coef;
+  // Radii or end points that are not finite numbers (NaN radii, overflowing transforms) give no
+  // ellipse: the segment is drawn as a line, as for zero radii, and the reader's check of
+  // non-finite coordinates names the element.
+  if (!std::isfinite(coef) || !std::isfinite(rx) || !std::isfinite(ry) || !std::isfinite(phi)) {
+    path.segments.push_back(Segment2::line(from, to));
+    return;
+  }
   const Vec2 cp(coef * rx * p.y() / ry, -coef * ry * p.x() / rx);
   // F.6.5.3: centre in user space.
   const Vec2 mid = 0.5 * (from + to);

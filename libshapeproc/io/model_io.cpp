@@ -277,6 +277,11 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     if (const std::size_t colon = message.rfind(": "); colon != std::string::npos)
       message = message.substr(colon + 2);
     throw core::InputError(file_name, line, "malformed JSON: " + message);
+  } catch (const json::exception& e) {  // a number beyond a double's range, too deep a nesting
+    std::string message = e.what();
+    if (const std::size_t bracket = message.find("] "); bracket != std::string::npos)
+      message = message.substr(bracket + 2);
+    throw core::InputError(file_name, 0, "malformed JSON: " + message);
   }
   const Reader r(file_name);
   if (!document.is_object() || !document.contains("format") || document["format"] != kFormat) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <tuple>
 
 namespace shapeproc::geometry {
 namespace {
@@ -59,6 +61,18 @@ TEST(EllipticalArc, OutOfRangeParameters) {
   Path2 scaled;
   append_elliptical_arc(scaled, Vec2(0, 0), -0.25, 0.25, 0, false, true, Vec2(2, 0));
   EXPECT_LT(radial_error(scaled, Vec2(1, 0), 1.0), 3e-4);
+
+  // Radii or a rotation that are not finite give no ellipse: a line, as for zero radii (a NaN
+  // radius had reached an int conversion, undefined behaviour).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& [rx, ry, rotation] :
+       {std::tuple{nan, 5.0, 0.0}, std::tuple{5.0, inf, 0.0}, std::tuple{5.0, 5.0, nan}}) {
+    Path2 line;
+    append_elliptical_arc(line, Vec2(0, 0), rx, ry, rotation, false, false, Vec2(3, 4));
+    ASSERT_EQ(line.segments.size(), 1u);
+    EXPECT_FALSE(line.segments[0].cubic);
+  }
 }
 
 TEST(EllipticalArc, RotatedEllipse) {

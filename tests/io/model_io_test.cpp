@@ -117,6 +117,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "shapes[0].category"},
         BadModel{"path", "M0 0h4v2h-4z", "M0 0 X", "cannot parse"},
         BadModel{"malformed", "\"dimension\": 2,", "\"dimension\": 2", "malformed JSON"},
+        // A number beyond a double's range: nlohmann's out_of_range had escaped as a crash.
+        BadModel{"number_overflow", "\"beta\": 0.01", "\"beta\": 1e999999",
+                 "malformed JSON: number overflow parsing '1e999999'"},
         BadModel{"missing", "\"categories\": [ { \"name\"", "\"cats\": [ { \"name\"",
                  "categories: missing"}),
     [](const ::testing::TestParamInfo<BadModel>& param_info) {
