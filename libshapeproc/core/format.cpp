@@ -1,5 +1,6 @@
 #include "libshapeproc/core/format.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -48,6 +49,20 @@ std::string xml_escape(const std::string& text) {
         out += c;
     }
   }
+  return out;
+}
+
+std::string printable(const std::string& text, std::size_t limit) {
+  std::size_t end = std::min(text.size(), limit);
+  // Back to the start of a UTF-8 character (continuation bytes are 10xxxxxx).
+  while (end < text.size() && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+    --end;
+  std::string out = text.substr(0, end);
+  for (char& ch : out) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte < 0x20 || byte == 0x7F) ch = '?';
+  }
+  if (end < text.size()) out += "... (" + std::to_string(text.size() - end) + " more bytes)";
   return out;
 }
 

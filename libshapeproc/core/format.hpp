@@ -16,4 +16,9 @@ std::string format_general(double value, int digits = 4);
 // names taken from input files never reach a written file as markup.
 std::string xml_escape(const std::string& text);
 
+// `text` made safe to print on a terminal: control characters (terminal escape sequences among
+// them) become '?', and text longer than `limit` bytes is cut at a character boundary with
+// "... (N more bytes)". For names and values taken from input files.
+std::string printable(const std::string& text, std::size_t limit = 300);
+
 }  // namespace shapeproc::core

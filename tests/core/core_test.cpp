@@ -8,6 +8,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "tests/test_support.hpp"
 
@@ -65,6 +66,27 @@ TEST(Assert, ThrowsAnInternalErrorNamingFileLineAndCondition) {
 TEST(InputError, ReadsFileLineMessage) {
   EXPECT_STREQ(InputError("a.svg", 3, "bad path").what(), "a.svg:3: bad path");
   EXPECT_STREQ(InputError("a.svg", 0, "empty").what(), "a.svg: empty");
+}
+
+// Names and values from input files printed safely: escape sequences and other control
+// characters become '?', and long text is cut at a UTF-8 character boundary with a count. The
+// XML escape turns markup into text.
+TEST(Printable, ControlCharactersAndLengthAreBounded) {
+  EXPECT_EQ(printable("dots"), "dots");
+  EXPECT_EQ(printable("\x1b[31mred\x1b[0m\x7f"), "?[31mred?[0m?");
+  const std::string big(5'000'000, 'x');
+  EXPECT_EQ(printable(big, 10), "xxxxxxxxxx... (4999990 more bytes)");
+  // "é" is two bytes: a cut inside it moves back to its start.
+  EXPECT_EQ(printable("ab\xc3\xa9"
+                      "cd",
+                      3),
+            "ab... (4 more bytes)");
+  EXPECT_EQ(printable("ab\xc3\xa9"
+                      "cd",
+                      4),
+            "ab\xc3\xa9"
+            "... (2 more bytes)");
+  EXPECT_EQ(xml_escape("<a href=\"x\">&</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&lt;/a&gt;");
 }
 
 TEST(Random, SameSeedSameStreamOtherSeedOtherStream) {

@@ -380,6 +380,29 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   EXPECT_EQ(large.out.find("warning: the output torus"), std::string::npos) << large.out;
 }
 
+// Hostile text from the command line or a file is not echoed as it came: a bad value of 1 MB
+// gives a bounded one-line error, and a category name holding a terminal escape sequence is
+// printed with '?' for its control characters.
+TEST(CliErrors, HugeValuesAndEscapeSequencesAreNotEchoedWhole) {
+  const testing::TempDir dir;
+  const Result huge =
+      run_cli({"synthesize", data("svg/dots-random.svg"), "-o", dir.file("x.svg").string(),
+               "--size", std::string(1'000'000, '9') + "x"});
+  EXPECT_EQ(huge.code, 2);
+  EXPECT_LT(huge.err.size(), 700u) << huge.err.size();
+  EXPECT_NE(huge.err.find("more bytes)"), std::string::npos);
+  EXPECT_EQ(huge.err.find('\n'), huge.err.size() - 1);
+  const std::string svg = dir.write("escape.svg",
+                                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" "
+                                    "height=\"10\"><circle class=\"\x1b[31mred\" cx=\"5\" "
+                                    "cy=\"5\" r=\"2\"/></svg>")
+                              .string();
+  const Result info = run_cli({"info", svg, "--category-by", "class"});
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_EQ(info.out.find('\x1b'), std::string::npos);
+  EXPECT_NE(info.out.find("?[31mred: 1"), std::string::npos) << info.out;
+}
+
 TEST(CliStats, TextJsonAndComparisons) {
   const testing::TempDir dir;
   const Result text = run_cli({"stats", data("svg/dots-random.svg")});

@@ -3,6 +3,7 @@
 #include <memory>
 #include <sstream>
 
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -112,10 +113,12 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
       << d["primitives_per_element"].get<double>() << (planar ? " segments" : " triangles")
       << " per element)\n";
   out.unsetf(std::ios::fixed);
-  for (const std::string& note : scene.notes) out << "note:       " << note << '\n';
+  for (const std::string& note : scene.notes)
+    out << "note:       " << core::printable(note, 2000) << '\n';
   out << "categories: " << scene.categories.size() << '\n';
   for (const auto& c : d["categories"]) {
-    out << "  " << c["name"].get<std::string>() << ": " << c["count"].get<std::size_t>() << '\n';
+    out << "  " << core::printable(c["name"].get<std::string>()) << ": "
+        << c["count"].get<std::size_t>() << '\n';
   }
   out << "\n  index  category        " << (planar ? "paths  segments" : "triangles")
       << "  bounding box\n";
@@ -124,7 +127,8 @@ void print_text(const geometry::Scene& scene, const nlohmann::json& d, std::ostr
     geometry::Box3 box = geometry::bounding_box(scene.shapes.at(element.shape));
     box.translate(element.position);
     out << "  " << std::setw(5) << e["index"].get<std::size_t>() << "  " << std::left
-        << std::setw(14) << e["category"].get<std::string>() << std::right << "  ";
+        << std::setw(14) << core::printable(e["category"].get<std::string>(), 40) << std::right
+        << "  ";
     if (planar) {
       out << std::setw(5) << e["paths"].get<std::size_t>() << "  " << std::setw(8)
           << e["segments"].get<std::size_t>();
