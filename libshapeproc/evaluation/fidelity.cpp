@@ -55,10 +55,8 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     setting.free_region = border.region;
   }
   // The chains start where the fit's did: at a packed exemplar (its free part), else empty.
-  const bool at_exemplar = fit::starts_at_exemplar(model);
-  for (const geometry::Element& e : exemplar.elements)
-    if (at_exemplar && (setting.free_region.isEmpty() || setting.free_region.contains(e.position)))
-      setting.start.push_back(e);
+  if (fit::starts_at_exemplar(model))
+    setting.start = fit::elements_in(exemplar, setting.free_region);
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);

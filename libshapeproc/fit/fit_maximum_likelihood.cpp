@@ -47,6 +47,14 @@ BorderCondition border_condition(const geometry::Scene& exemplar,
   return b;
 }
 
+std::vector<geometry::Element> elements_in(const geometry::Scene& exemplar,
+                                           const geometry::Box3& region) {
+  std::vector<geometry::Element> out;
+  for (const geometry::Element& e : exemplar.elements)
+    if (region.isEmpty() || region.contains(e.position)) out.push_back(e);
+  return out;
+}
+
 bool packed_exemplar(const model::ShapeProcessModel& mple) {
   for (const model::CategoryParameters& c : mple.categories)
     if (c.beta_status == model::ParameterStatus::unbounded) return true;
@@ -81,10 +89,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   // A packed exemplar's chains start at it (its free part with border correction).
   const bool at_exemplar = packed_exemplar(start);
-  const geometry::Box3& free = chains.sampling.free_region;
-  for (const geometry::Element& e : exemplar.elements)
-    if (at_exemplar && (free.isEmpty() || free.contains(e.position)))
-      chains.sampling.start.push_back(e);
+  if (at_exemplar) chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;

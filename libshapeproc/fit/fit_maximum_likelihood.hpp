@@ -27,6 +27,11 @@ struct BorderCondition {
 BorderCondition border_condition(const geometry::Scene& exemplar,
                                  const model::ShapeProcessModel& model);
 
+// The exemplar's elements whose reference positions lie in `region` (all of them when it is
+// empty): where a packed exemplar's chains start, given the border condition's free region.
+std::vector<geometry::Element> elements_in(const geometry::Scene& exemplar,
+                                           const geometry::Box3& region);
+
 // Whether the chains of the fit start at the exemplar: where the pseudo-likelihood found a
 // parameter without a finite maximum (a packed exemplar, whose states a chain from the empty
 // configuration never reaches). Elsewhere they start empty, so that the fit only converges where

@@ -289,10 +289,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     std::vector<double> theta, expected, expected_error;
     double worst_z = std::numeric_limits<double>::infinity();
     double worst_r_hat = std::numeric_limits<double>::infinity();
-    // By the gap alone: ranking iterates whose chains agree first picked, on crescents-grid, an
-    // early one where every chain had lost the exemplar alike (|z| 538, output x0.29).
-    bool better_than(const Iterate& other) const { return worst_z < other.worst_z; }
-  } best;
+  } best;  // by the gap alone: ranking iterates whose chains agree first picked, on
+           // crescents-grid, an early one where every chain had lost the exemplar alike (|z| 538)
   double last_r_hat = 1.0;
   // Chains started at a packed exemplar hold it and are not meant to mix: their R-hat reflects
   // the rare element one of them lost (dashes-rows 1.39), and is not asked of them.
@@ -338,7 +336,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     const Gap g = newton->gap(m, r.theta);
     if (options.progress) options.progress(r.iterations, g.worst_z);
     const Iterate here{r.theta, m.mean, m.standard_error, g.worst_z, worst_r_hat(m)};
-    const bool improved = here.better_than(best);
+    const bool improved = here.worst_z < best.worst_z;
     last_r_hat = here.worst_r_hat;
     if (improved) best = here;
     // Step control: a step that made the gap much worse than the best iterate's is undone, and

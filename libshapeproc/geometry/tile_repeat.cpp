@@ -33,8 +33,9 @@ std::vector<Element> tile_over(const Scene& tile, const Box3& region) {
   std::vector<Element> out;
   const Vec3 sizes = tile.window.sizes();
   const int axes = tile.dimension;
+  if (tile.elements.empty() || region.isEmpty()) return out;
   for (int a = 0; a < axes; ++a)
-    if (!(sizes[a] > 0) || tile.elements.empty() || region.isEmpty()) return out;
+    if (!(sizes[a] > 0)) return out;
   // Half-open along each axis: on a torus the region's two faces are one place, and a copy on
   // each would be the same element twice.
   const auto inside = [&](const Vec3& p) {

@@ -29,13 +29,7 @@ TEST(MaximumLikelihood, PoissonIsClosedForm) {
 // statistics, started at γ = 1, lands within 3 standard errors of the truth, and the fitted
 // model's expected statistics match the observed ones.
 TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
-  model::ShapeProcessModel truth = testing::point_model(0.03);
-  model::PairInteraction pair;
-  model::AxisParameters axis;
-  axis.thresholds = {0.0, 3.0, 6.0};
-  axis.gammas = {0.3, 0.7};
-  pair.axes = {axis};
-  truth.interactions = {pair};
+  const model::ShapeProcessModel truth = testing::point_model(0.03, {0.0, 3.0, 6.0}, {0.3, 0.7});
   const geometry::Domain window = geometry::Domain::from_sizes({70, 70}, geometry::Boundary::torus);
   sample::SamplerOptions sampler_options;
   sampler_options.iterations = 60000;
@@ -69,13 +63,7 @@ TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
 // below its 100 points (random sequential filling). Started at the exemplar (as the fit starts
 // them), they hold it once β is large enough that deaths become rare, and the fit converges.
 TEST(MaximumLikelihood, APackedLatticeIsHeldFromTheExemplarWithAnUnboundedBeta) {
-  model::ShapeProcessModel start = testing::point_model(0.01);
-  model::PairInteraction pair;
-  model::AxisParameters axis;
-  axis.thresholds = {9.5, 12.0};
-  axis.gammas = {1.0};
-  pair.axes = {axis};
-  start.interactions = {pair};
+  const model::ShapeProcessModel start = testing::point_model(0.01, {9.5, 12.0}, {1.0});
   const geometry::Domain window =
       geometry::Domain::from_sizes({100, 100}, geometry::Boundary::torus);
   std::vector<geometry::Element> lattice;

@@ -103,13 +103,7 @@ const char* kSquares = R"({
 // any other), one closer than the hard core to one before it and one outside the domain are left
 // out.
 TEST(BirthDeath, AStartConfigurationKeepsWhatTheHardCoreAllows) {
-  model::ShapeProcessModel m = testing::point_model(1e-300);  // no births
-  model::PairInteraction pair;
-  model::AxisParameters axis;
-  axis.thresholds = {3.0, 3.0};
-  axis.gammas = {1.0};
-  pair.axes = {axis};
-  m.interactions = {pair};
+  const model::ShapeProcessModel m = testing::point_model(1e-300, {3.0, 3.0}, {1.0});  // no births
   const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::open);
   SamplerOptions options;
   options.iterations = 1;
@@ -183,12 +177,7 @@ TEST(BirthDeath, SameSeedSameOutput) {
 // with A = 1 − |torus disc of radius 0.6| (computed here on a fine grid). The sampler's final
 // counts over many seeds follow it (chi-square, 2 degrees of freedom).
 TEST(BirthDeath, HardCoreCountsOnASmallTorusMatchTheExactDistribution) {
-  model::ShapeProcessModel m = testing::point_model(10.0);
-  model::PairInteraction pair;
-  model::AxisParameters axis;
-  axis.thresholds = {0.6};
-  pair.axes.push_back(axis);
-  m.interactions.push_back(pair);
+  const model::ShapeProcessModel m = testing::point_model(10.0, {0.6}, {});
   const int grid = 2000;
   double blocked = 0.0;
   for (int i = 0; i < grid; ++i)

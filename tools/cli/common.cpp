@@ -87,11 +87,10 @@ nlohmann::json ReaderFlags::to_json() const {
 
 FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader,
                                       int repeats) {
-  FittingExemplar result{io::read_scene(input, reader.options()), 1, {}};
+  FittingExemplar result{io::read_scene(input, reader.options()), 1};
   if (reader.tile && result.scene.dimension == 2) {
-    result.tile = result.scene;
     result.repeats = repeats > 0 ? repeats : geometry::tile_repeats(result.scene.elements.size());
-    result.scene = geometry::repeat_tile(result.tile, result.repeats);
+    result.scene = geometry::repeat_tile(result.scene, result.repeats);
   }
   return result;
 }

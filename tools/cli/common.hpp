@@ -42,8 +42,7 @@ struct ReaderFlags {
 // repeated so that each element's periodic images are elements (geometry/tile_repeat.hpp).
 struct FittingExemplar {
   geometry::Scene scene;
-  int repeats = 1;       // along each side
-  geometry::Scene tile;  // the file as read
+  int repeats = 1;  // along each side
 };
 // `repeats` 0: as many as geometry::tile_repeats gives for the tile's elements.
 FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlags& reader,

@@ -107,7 +107,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const VerbosityFlags& verbosity, geometry::Scene* fitted) {
   flags.options(reader);  // its own checks, before reading anything
   verbosity.stage("reading " + input);
-  FittingExemplar read = read_fitting_exemplar(input, reader);
+  geometry::Scene read = io::read_scene(input, reader.options());
   const auto fit_one = [&](const geometry::Scene& scene, int times) {
     return fit_scene(scene, times, input, flags, reader, verbosity);
   };
@@ -116,14 +116,14 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   geometry::Scene exemplar;
   int repeats = 1;
   std::vector<std::string> tile_notes;
-  if (reader.tile && read.scene.dimension == 2) {
-    fit::TileFit tile = fit::fit_tile(read.tile, fit_one);
+  if (reader.tile && read.dimension == 2) {
+    fit::TileFit tile = fit::fit_tile(read, fit_one);
     result = std::move(tile.result);
     exemplar = std::move(tile.exemplar);
     repeats = tile.repeats;
     tile_notes = std::move(tile.notes);
   } else {
-    exemplar = std::move(read.scene);
+    exemplar = std::move(read);
     result = fit_one(exemplar, 1);
   }
   for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
