@@ -77,10 +77,11 @@ struct SampleFlags {
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.
-  // `start`: elements every chain starts from (sample::SamplerOptions::start).
+  // `start_tile`, when given: every chain starts from it repeated over the domain
+  // (geometry::tile_over; sample::SamplerOptions::start).
   int run(const model::ShapeProcessModel& model, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out,
-          std::vector<geometry::Element> start = {}) const;
+          const geometry::Scene* start_tile = nullptr) const;
   // The same for any synthesis method: its chains, their outputs, pictures and traces.
   int run(const synthesis::Synthesizer& synthesizer, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out) const;

@@ -6,6 +6,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -153,11 +154,12 @@ geometry::Domain SampleFlags::domain(int dimension) const {
 
 int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
                      synthesis::SynthesisRecord record, std::ostream& out,
-                     std::vector<geometry::Element> start) const {
+                     const geometry::Scene* start_tile) const {
   check(output, model.dimension);
+  const geometry::Domain where = domain(model.dimension);
   sample::SamplerOptions options = sampler_options();
-  options.start = std::move(start);
-  const sample::ShapeProcessSampler sampler(model, domain(model.dimension), options);
+  if (start_tile) options.start = geometry::tile_over(*start_tile, where.box());
+  const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
     out << "warning: the output torus is smaller than twice the model's reach ("
         << core::format_general(2 * sampler.reach(), 4)

@@ -12,7 +12,6 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
-#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -282,12 +281,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
       const bool at_exemplar =
           args->start == "auto" ? fit::starts_at_exemplar(fitted.model) : args->start == "exemplar";
       record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
-      std::vector<geometry::Element> elements;
-      if (at_exemplar)
-        elements = geometry::tile_over(exemplar, args->sample.domain(exemplar.dimension).box());
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out,
-                              std::move(elements));
+                              at_exemplar ? &exemplar : nullptr);
     };
   });
 }
