@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/atomic_file.hpp"
@@ -93,6 +94,11 @@ class Reader {
   }
   int integer(const json& v, const std::string& where) const {
     if (!v.is_number_integer()) fail(where, "expected an integer, got " + v.dump());
+    // Read wide and checked: 4294967298 must not wrap around to 2.
+    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > std::numeric_limits<int>::max()
+                               : v.get<std::int64_t>() < std::numeric_limits<int>::min() ||
+                                     v.get<std::int64_t>() > std::numeric_limits<int>::max())
+      fail(where, "expected an integer in the range of an int, got " + v.dump());
     return v.get<int>();
   }
   std::string text(const json& v, const std::string& where) const {
@@ -196,6 +202,37 @@ ParameterStatus status_from(const std::string& s, const Reader& reader, const st
       "expected free, boundary, unidentifiable, unbounded, unreachable or fixed, got '" + s + "'");
 }
 
+// A model file nests a few levels; deeper nesting is refused before the parser and the code that
+// walks the document (recursive in places) see it.
+constexpr int kMaxJsonNesting = 64;
+
+void check_json_nesting(std::string_view text, const std::string& file_name) {
+  int depth = 0, line = 1;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (c == '\n') ++line;
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonNesting) {
+        throw core::InputError(file_name, line,
+                               "JSON nests more than " + std::to_string(kMaxJsonNesting) +
+                                   " levels deep, the most a model file may");
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 }  // namespace
 
 std::string model_to_json(const ShapeProcessModel& model) {
@@ -259,6 +296,25 @@ std::string model_to_json(const ShapeProcessModel& model) {
   return document.dump(2) + "\n";
 }
 
+std::optional<double> recorded_exemplar_density(const ShapeProcessModel& model) {
+  if (model.fit_json.empty()) return std::nullopt;
+  const json fit = json::parse(model.fit_json, nullptr, false);
+  if (!fit.is_object() || fit.contains("edits") || !fit.contains("elements") ||
+      !fit.contains("window") || !fit["elements"].is_number())
+    return std::nullopt;
+  const json& window = fit["window"];
+  if (!window.is_object() || !window.contains("min") || !window.contains("max") ||
+      !window["min"].is_array() || window["min"].size() != window["max"].size())
+    return std::nullopt;
+  double measure = 1.0;
+  for (std::size_t k = 0; k < window["min"].size(); ++k) {
+    if (!window["min"][k].is_number() || !window["max"][k].is_number()) return std::nullopt;
+    measure *= window["max"][k].get<double>() - window["min"][k].get<double>();
+  }
+  if (!(measure > 0.0) || !std::isfinite(measure)) return std::nullopt;
+  return fit["elements"].get<double>() / measure;
+}
+
 void write_model(const ShapeProcessModel& model, const std::filesystem::path& file) {
   const std::string text = model_to_json(model);
   core::write_file_atomically(file, [&](std::ostream& out) { out << text; });
@@ -266,6 +322,7 @@ void write_model(const ShapeProcessModel& model, const std::filesystem::path& fi
 
 ShapeProcessModel parse_model(std::string_view text, const std::string& file_name) {
   if (trim(text).empty()) throw core::InputError(file_name, 0, "the file is empty");
+  check_json_nesting(text, file_name);
   json document;
   try {
     document = json::parse(text.begin(), text.end());

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,10 @@ model::ShapeProcessModel parse_model(std::string_view text, const std::string& f
 
 // The model as JSON text (2-space indentation), and written atomically to a file.
 std::string model_to_json(const model::ShapeProcessModel& model);
+
+// The density (elements per unit area or volume) of the exemplar the model was fitted to, from
+// its `fit` record; nullopt when the model has none, or was edited since (its `fit.edits`).
+std::optional<double> recorded_exemplar_density(const model::ShapeProcessModel& model);
 void write_model(const model::ShapeProcessModel& model, const std::filesystem::path& file);
 
 }  // namespace shapeproc::io

@@ -12,10 +12,34 @@
 
 namespace shapeproc::io {
 
-geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOptions& options) {
+namespace {
+
+// Coordinates beyond this (or not finite, e.g. after a transform that overflows) are refused:
+// squared distances and areas of such a scene leave a double's range or its precision.
+constexpr double kMaxCoordinate = 1e12;
+
+bool within_range(const geometry::Vec3& p) {
+  return p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxCoordinate;
+}
+
+void check_coordinates(const geometry::Scene& scene, const std::filesystem::path& file) {
+  const auto refuse = [&](const std::string& what) {
+    throw core::InputError(file.string(), 0,
+                           what + " has coordinates beyond ±1e12 or not finite (after transforms)");
+  };
+  if (!within_range(scene.window.min()) || !within_range(scene.window.max())) refuse("the window");
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    const geometry::Element& e = scene.elements[i];
+    const geometry::Box3 box = geometry::bounding_box(scene.shapes.at(e.shape));
+    if (!within_range(e.position) || !within_range(box.min()) || !within_range(box.max())) {
+      const std::string& name = scene.shapes.at(e.shape).name;
+      refuse("element " + std::to_string(i + 1) + (name.empty() ? "" : " ('" + name + "')"));
+    }
+  }
+}
+
+geometry::Scene read_any(const std::filesystem::path& file, const ReaderOptions& options) {
   const std::string ext = extension_of(file);
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw core::InputError(file.string(), 0, "no such file");
   if (ext == "svg") return read_svg(file, options);
   if (ext == "obj" || ext == "ply" || ext == "off" || ext == "stl")
     return read_mesh_scene(file, options);
@@ -23,6 +47,16 @@ geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOption
   throw core::InputError(
       file.string(), 0,
       "unknown format '." + ext + "' (expected .svg, .obj, .ply, .off, .stl or .csv)");
+}
+
+}  // namespace
+
+geometry::Scene read_scene(const std::filesystem::path& file, const ReaderOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw core::InputError(file.string(), 0, "no such file");
+  geometry::Scene scene = read_any(file, options);
+  check_coordinates(scene, file);
+  return scene;
 }
 
 void write_scene(const geometry::Scene& scene, const std::filesystem::path& file,

@@ -29,6 +29,8 @@ struct NormalPathPolicy {
 
 class PathCollector {
  public:
+  explicit PathCollector(std::size_t max_segments) : max_segments_(max_segments) {}
+
   void path_move_to(double x, double y, svgpp::tag::coordinate::absolute) {
     finish_subpath();
     point_ = subpath_start_ = checked(x, y);
@@ -37,12 +39,14 @@ class PathCollector {
     const Vec2 to = checked(x, y);
     current_.segments.push_back(Segment2::line(point_, to));
     point_ = to;
+    check_budget();
   }
   void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y,
                             svgpp::tag::coordinate::absolute) {
     const Vec2 to = checked(x, y);
     current_.segments.push_back(Segment2::bezier(point_, checked(x1, y1), checked(x2, y2), to));
     point_ = to;
+    check_budget();
   }
   void path_quadratic_bezier_to(double x1, double y1, double x, double y,
                                 svgpp::tag::coordinate::absolute) {
@@ -51,6 +55,7 @@ class PathCollector {
     current_.segments.push_back(
         Segment2::bezier(point_, point_ + 2.0 / 3.0 * (q - point_), to + 2.0 / 3.0 * (q - to), to));
     point_ = to;
+    check_budget();
   }
   void path_elliptical_arc_to(double rx, double ry, double x_axis_rotation, bool large_arc_flag,
                               bool sweep_flag, double x, double y,
@@ -61,6 +66,7 @@ class PathCollector {
     geometry::append_elliptical_arc(current_, point_, radii.x(), radii.y(), x_axis_rotation,
                                     large_arc_flag, sweep_flag, to);
     point_ = to;
+    check_budget();
   }
   void path_close_subpath() {
     // Relative coordinates often miss the start by rounding error: snap instead of adding a
@@ -94,7 +100,13 @@ class PathCollector {
     }
     return Vec2(x, y);
   }
+  void check_budget() const {
+    if (finished_segments_ + current_.segments.size() > max_segments_) {
+      throw GrammarError("more than " + std::to_string(max_segments_) + " segments");
+    }
+  }
   void finish_subpath() {
+    finished_segments_ += current_.segments.size();
     if (!current_.segments.empty()) paths_.push_back(std::move(current_));
     current_ = Path2();
   }
@@ -103,6 +115,7 @@ class PathCollector {
   Path2 current_;
   Vec2 point_ = Vec2::Zero();
   Vec2 subpath_start_ = Vec2::Zero();
+  std::size_t max_segments_, finished_segments_ = 0;
 };
 
 class TransformCollector {
@@ -135,8 +148,8 @@ class ColorCollector {
 
 }  // namespace
 
-std::vector<Path2> parse_path_data(std::string_view data) {
-  PathCollector collector;
+std::vector<Path2> parse_path_data(std::string_view data, std::size_t max_segments) {
+  PathCollector collector(max_segments);
   try {
     svgpp::value_parser<svgpp::tag::type::path_data, svgpp::path_policy<NormalPathPolicy>>::parse(
         svgpp::tag::attribute::d(), collector,

@@ -50,6 +50,29 @@ const std::set<std::string, std::less<>> kNeverDrawn = {
     "defs",           "symbol", "clipPath",      "mask",  "pattern",   "marker",   "linearGradient",
     "radialGradient", "filter", "style",         "title", "desc",      "metadata", "script",
     "text",           "image",  "foreignObject", "font",  "font-face", "view",     "cursor"};
+// Limits that keep a hostile file from exhausting the stack or the memory (docs/reliability.md):
+// nesting of elements (the traversals below recurse), copies made by <use>, and path segments
+// drawn in all, copies included. Real drawings stay far below them.
+constexpr int kMaxNesting = 256;
+constexpr std::size_t kMaxUseCopies = 100'000;
+constexpr std::size_t kMaxSegments = 2'000'000;
+
+// Coordinates beyond this after transforms are refused (as io/scene_io.cpp refuses them in any
+// format), before the stroke outlines and regrouping would compute with infinities.
+constexpr double kMaxCoordinate = 1e12;
+
+bool within_range(const Drawable2& drawable) {
+  const auto ok = [](const Vec2& p) {
+    return p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxCoordinate;
+  };
+  for (const Path2& path : drawable.paths) {
+    for (const Segment2& s : path.segments) {
+      if (!ok(s.start) || !ok(s.control1) || !ok(s.control2) || !ok(s.end)) return false;
+    }
+  }
+  return true;
+}
+
 const std::set<std::string, std::less<>> kGroups = {"g", "a", "switch"};
 const std::set<std::string, std::less<>> kDrawables = {"path", "rect",     "circle", "ellipse",
                                                        "line", "polyline", "polygon"};
@@ -144,6 +167,7 @@ class SvgReader {
   pugi::xml_node window_node_;
   Scene scene_;
   mutable std::vector<geometry::Style> drawn_styles_;  // of the element being collected, as drawn
+  mutable std::size_t use_copies_ = 0, segments_ = 0;  // drawn so far, against the limits
 };
 
 double SvgReader::length(pugi::xml_node node, const char* name, double fallback) const {
@@ -253,8 +277,13 @@ Scene SvgReader::read() {
   struct Indexer : pugi::xml_tree_walker {
     SvgReader* reader;
     int* order;
+    pugi::xml_node too_deep;
     bool for_each(pugi::xml_node& node) override {
       if (node.type() != pugi::node_element) return true;
+      if (depth() >= kMaxNesting) {
+        too_deep = node;
+        return false;
+      }
       if (const char* id = node.attribute("id").value(); *id) reader->ids_.emplace(id, node);
       if (local_name(node) == "style") {
         auto rules = parse_style_sheet(node.child_value(), *order);
@@ -267,6 +296,10 @@ Scene SvgReader::read() {
   indexer.reader = this;
   indexer.order = &order;
   document_.traverse(indexer);
+  if (indexer.too_deep) {
+    fail(indexer.too_deep,
+         "elements nest more than " + std::to_string(kMaxNesting) + " levels deep, the most read");
+  }
 
   const std::optional<State> root_state = enter(root, State());
   scene_.dimension = 2;
@@ -470,6 +503,10 @@ void SvgReader::collect(pugi::xml_node node, const State& state, std::vector<Dra
     if (target == ids_.end())
       fail(node, "<use> refers to unknown id '" + std::string(target_ref) + "'");
     if (use_depth >= 32) fail(node, "<use> references nest too deep (a cycle?)");
+    if (++use_copies_ > kMaxUseCopies) {
+      fail(node, "<use> makes more than " + std::to_string(kMaxUseCopies) +
+                     " copies in all, the most read");
+    }
     State placed = state;
     placed.transform =
         placed.transform * Eigen::Translation2d(length(node, "x", 0), length(node, "y", 0));
@@ -483,7 +520,17 @@ void SvgReader::collect(pugi::xml_node node, const State& state, std::vector<Dra
       return;
     }
     std::vector<Path2> paths = drawable_paths(node, name);
-    if (!paths.empty()) append_visible_ink(styled(std::move(paths), state), parts);
+    for (const Path2& path : paths) segments_ += path.segments.size();
+    if (segments_ > kMaxSegments) {
+      fail(node, "the drawing holds more than " + std::to_string(kMaxSegments) +
+                     " path segments (<use> copies included), the most read");
+    }
+    if (paths.empty()) return;
+    Drawable2 drawable = styled(std::move(paths), state);
+    if (!within_range(drawable)) {
+      fail(node, "<" + name + "> has coordinates beyond ±1e12 or not finite after transforms");
+    }
+    append_visible_ink(std::move(drawable), parts);
   }
 }
 
@@ -496,7 +543,7 @@ std::vector<Path2> SvgReader::drawable_paths(pugi::xml_node node, const std::str
   if (name == "path") {
     const char* data = node.attribute("d").value();
     try {
-      paths = svg::parse_path_data(data);
+      paths = svg::parse_path_data(data, kMaxSegments - std::min(segments_, kMaxSegments));
     } catch (const svg::GrammarError& e) {
       std::string shown = data;
       if (shown.size() > 60) shown = shown.substr(0, 57) + "...";

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include "libshapeproc/core/error.hpp"
@@ -111,7 +110,7 @@ std::string extension_of(const std::filesystem::path& path) {
   return to_lower(ext);
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw core::InputError(path.string(), 0, "no such file");
   if (std::filesystem::is_directory(path, ec)) {
@@ -119,9 +118,21 @@ std::string read_text_file(const std::filesystem::path& path) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw core::InputError(path.string(), 0, "cannot open the file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  // Read in blocks up to the limit, so that a device or pipe without an end (/dev/zero) is
+  // refused at the limit instead of filling the memory.
+  std::string text;
+  std::array<char, 1 << 16> block{};
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (text.size() + got > max_bytes) {
+      throw core::InputError(path.string(), 0,
+                             "larger than " + std::to_string(max_bytes >> 20) +
+                                 " MiB, the most an input file may hold");
+    }
+    text.append(block.data(), got);
+  }
   if (in.bad()) throw core::InputError(path.string(), 0, "read error");
-  return buffer.str();
+  return text;
 }
 }  // namespace shapeproc::io

@@ -26,7 +26,13 @@ std::vector<std::string> split(std::string_view text, char separator);
 // Lowercase extension without the dot ("svg").
 std::string extension_of(const std::filesystem::path& path);
 
-// The whole file as text; throws InputError when it cannot be read.
-std::string read_text_file(const std::filesystem::path& path);
+// The most an input file may hold (512 MiB): far above any drawing, below what would exhaust
+// memory.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{512} << 20;
+
+// The whole file as text; throws InputError when it cannot be read or holds more than
+// `max_bytes`.
+std::string read_text_file(const std::filesystem::path& path,
+                           std::size_t max_bytes = kMaxInputBytes);
 
 }  // namespace shapeproc::io

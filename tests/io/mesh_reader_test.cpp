@@ -209,7 +209,7 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, MeshBadInput,
     ::testing::Values(
         BadMesh{"empty", "e.off", "", "empty"},
-        BadMesh{"garbage", "g.off", "this is not a mesh\n", "cannot read"},
+        BadMesh{"garbage", "g.off", "this is not a mesh\n", "not OFF"},
         BadMesh{"non_manifold", "nm.off",
                 "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
                 "non-manifold"},

@@ -10,6 +10,24 @@
 
 namespace shapeproc::cli {
 
+void BudgetFlags::add_to(CLI::App& command) {
+  command
+      .add_option("--max-elements", max_elements,
+                  "refuse a request estimated to need more elements than this")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--max-memory", max_memory,
+                     "refuse a request estimated to need more memory than this, e.g. 8G (default: "
+                     "16G or 3/4 of the machine's memory)");
+}
+
+core::ResourceBudget BudgetFlags::budget() const {
+  core::ResourceBudget budget;
+  budget.max_elements = max_elements;
+  if (!max_memory.empty()) budget.max_memory = core::parse_bytes(max_memory, "--max-memory");
+  return budget;
+}
+
 void ReaderFlags::add_to(CLI::App& command) {
   command
       .add_option("--elements", elements,

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/core/resource_budget.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
@@ -14,6 +15,16 @@
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::cli {
+
+// --max-elements and --max-memory: the budget a command's estimate of its needs is checked
+// against before any work (core/resource_budget.hpp).
+struct BudgetFlags {
+  double max_elements = core::ResourceBudget{}.max_elements;
+  std::string max_memory;  // empty: the default
+
+  void add_to(CLI::App& command);
+  core::ResourceBudget budget() const;  // throws core::UsageError for a bad --max-memory
+};
 
 // Reader options as typed on the command line, turned into io::ReaderOptions after parsing.
 struct ReaderFlags {

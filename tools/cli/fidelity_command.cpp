@@ -23,6 +23,7 @@ struct FidelityArguments {
   FitFlags fit;
   ReaderFlags reader;
   VerbosityFlags verbosity;
+  BudgetFlags budget;
   evaluation::FidelityOptions options;
   bool row = false;
 };
@@ -68,8 +69,9 @@ int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& 
   geometry::Scene exemplar;
   model::ShapeProcessModel model;
   if (args.model.empty()) {
-    model =
-        fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity, &exemplar).model;
+    model = fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity,
+                         args.budget.budget(), &exemplar)
+                .model;
   } else {
     model = io::read_model(args.model);
     exemplar = read_fitting_exemplar(args.input, args.reader, model_tile_repeats(model)).scene;
@@ -113,6 +115,7 @@ void add_fidelity_command(CLI::App& app, Action& action,
   args->fit.add_to(*command);
   args->reader.add_to(*command);
   args->verbosity.add_to(*command);
+  args->budget.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_fidelity(*args, arguments, out); };
   });

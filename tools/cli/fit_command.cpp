@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/fit/fit_estimate.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/tile_fit.hpp"
@@ -24,6 +25,7 @@ struct FitArguments {
   FitFlags fit;
   ReaderFlags reader;
   VerbosityFlags verbosity;
+  BudgetFlags budget;
 };
 
 std::vector<double> number_list(const std::string& text, const char* option) {
@@ -39,8 +41,8 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   const auto start = std::chrono::steady_clock::now();
   if (io::extension_of(args.output) != "json")
     throw core::UsageError(args.output + ": the model is written as .json");
-  const fit::FitResult result =
-      fit_exemplar(args.input, args.fit, args.reader, arguments, args.verbosity);
+  const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments,
+                                             args.verbosity, args.budget.budget());
   io::write_model(result.model, args.output);
 
   print_model_summary(result.model, out);
@@ -104,10 +106,15 @@ fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std
 
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
-                            const VerbosityFlags& verbosity, geometry::Scene* fitted) {
-  flags.options(reader);  // its own checks, before reading anything
+                            const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
+                            geometry::Scene* fitted,
+                            const std::function<void(const geometry::Scene&)>& check_read) {
+  const fit::FitOptions options = flags.options(reader);  // its own checks, before reading
   verbosity.stage("reading " + input);
   geometry::Scene read = io::read_scene(input, reader.options());
+  core::check_budget(fit::estimate_fit(read, options).resources, budget, "the fit of " + input,
+                     "--quadrature, --directions or the thresholds");
+  if (check_read) check_read(read);
   const auto fit_one = [&](const geometry::Scene& scene, int times) {
     return fit_scene(scene, times, input, flags, reader, verbosity);
   };
@@ -260,6 +267,7 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   args->fit.add_to(*command);
   args->reader.add_to(*command);
   args->verbosity.add_to(*command);
+  args->budget.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) { return run_fit(*args, arguments, out); };
   });

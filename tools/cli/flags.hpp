@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -49,9 +50,13 @@ struct FitFlags {
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
 // reader and fit options. Fit failures become core::InputError naming the exemplar. `fitted`, when
 // given, receives the exemplar as fitted (a small tile repeated).
+// The fit and, when given, `check_read` (e.g. the output's budget) are checked against `budget`
+// right after reading, before any fitting.
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
-                            const VerbosityFlags& verbosity, geometry::Scene* fitted = nullptr);
+                            const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
+                            geometry::Scene* fitted = nullptr,
+                            const std::function<void(const geometry::Scene&)>& check_read = {});
 
 struct SampleFlags {
   std::string size, domain_file, intensity, boundary, trace, png;
@@ -62,6 +67,7 @@ struct SampleFlags {
   double shift_radius = 0.0;
   double png_scale = 0.0;
   VerbosityFlags verbosity;
+  BudgetFlags budget;
 
   // `sampler_options`: also --intensity, --shift-probability and --shift-radius, which only the
   // shape process's sampler takes.
@@ -72,6 +78,13 @@ struct SampleFlags {
   void check(const std::string& output, int dimension = 0) const;
   // The output domain (--size, --boundary, --domain, --intensity) for a `dimension`-D model.
   geometry::Domain domain(int dimension) const;
+  // Refuses an output of `exemplar`'s density over the domain that the budget cannot hold
+  // (--max-elements, --max-memory), before any work.
+  void check_budget(const geometry::Scene& exemplar) const;
+  // Chains that run at the same time (--chains, --threads and the machine's cores).
+  int chains_at_once() const;
+  // Steps a run may take: some hours at the sampler's fraction of a microsecond per step.
+  static constexpr long long kMaxIterations = 10'000'000'000;
   // The sampler's options from --iterations, --shift-probability, --shift-radius and --trace.
   sample::SamplerOptions sampler_options() const;
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the

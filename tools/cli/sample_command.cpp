@@ -2,6 +2,7 @@
 // the chains' runner and output writer every synthesis method's command shares.
 #include <filesystem>
 #include <memory>
+#include <thread>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
@@ -14,6 +15,7 @@
 #include "libshapeproc/io/text.hpp"
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "libshapeproc/sample/output_estimate.hpp"
 #include "libshapeproc/synthesis/run_chains.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
@@ -103,6 +105,22 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
                   "pixels per unit length of the PNG (default: 800 pixels along the longer side)")
       ->check(positive_number());
   verbosity.add_to(command);
+  budget.add_to(command);
+}
+
+int SampleFlags::chains_at_once() const {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, std::min(chains, threads > 0 ? threads : cores));
+}
+
+void SampleFlags::check_budget(const geometry::Scene& exemplar) const {
+  const double measure = exemplar.window_measure();
+  if (!(measure > 0)) return;
+  const double density = static_cast<double>(exemplar.elements.size()) / measure;
+  const model::ShapeProcessModel none;  // no β: the estimate comes from the density alone
+  core::check_budget(
+      sample::estimate_output(none, domain(exemplar.dimension), density, chains_at_once()),
+      budget.budget(), "the output", "--size");
 }
 
 void SampleFlags::check(const std::string& output, int dimension) const {
@@ -118,6 +136,10 @@ void SampleFlags::check(const std::string& output, int dimension) const {
         "--size: expected " + expected + " (positive)" +
         (dimension > 0 ? " for a " + std::to_string(dimension) + "D model" : std::string()) +
         ", got '" + size + "'");
+  }
+  if (iterations > kMaxIterations) {
+    throw core::UsageError("--iterations: at most " + std::to_string(kMaxIterations) +
+                           " (hours of sampling), got " + std::to_string(iterations));
   }
   check_output_extension(output, "-o");
   if (!png.empty() && io::extension_of(png) != "png")
@@ -157,6 +179,9 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
                      const geometry::Scene* start_tile) const {
   check(output, model.dimension);
   const geometry::Domain where = domain(model.dimension);
+  core::check_budget(
+      sample::estimate_output(model, where, io::recorded_exemplar_density(model), chains_at_once()),
+      budget.budget(), "the output", "--size");
   sample::SamplerOptions options = sampler_options();
   if (start_tile) options.start = geometry::tile_over(*start_tile, where.box());
   const sample::ShapeProcessSampler sampler(model, where, options);

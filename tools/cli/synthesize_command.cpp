@@ -188,6 +188,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
               "count");
         const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
         args->sample.check(args->output, exemplar.dimension);
+        args->sample.check_budget(exemplar);
         if (exemplar.dimension != 2)
           throw core::UsageError(args->input + ": --method ijiri grows 2D exemplars only");
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
@@ -224,6 +225,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
         palette.push_back({io::read_scene(args->input, args->reader.options()), boundary});
         const geometry::Scene& exemplar = palette.front().scene;
         args->sample.check(args->output, exemplar.dimension);
+        args->sample.check_budget(exemplar);
         if (args->growth.palette.empty() &&
             (args->growth.palette_rings > 0 || args->growth.palette_bounding_radius >= 0))
           throw core::UsageError(
@@ -257,6 +259,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       if (em) {
         const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
         args->sample.check(args->output, exemplar.dimension);
+        args->sample.check_budget(exemplar);
         const geometry::Domain domain = args->sample.domain(exemplar.dimension);
         const compare::EmOptions options = args->em.options(domain, args->sample.iterations);
         args->sample.verbosity.stage("analysing the exemplar");
@@ -270,8 +273,10 @@ void add_synthesize_command(CLI::App& app, Action& action,
       }
       args->fit.options(args->reader);  // its own checks, before reading or fitting anything
       geometry::Scene exemplar;
-      const fit::FitResult fitted = fit_exemplar(args->input, args->fit, args->reader, arguments,
-                                                 args->sample.verbosity, &exemplar);
+      const fit::FitResult fitted =
+          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity,
+                       args->sample.budget.budget(), &exemplar,
+                       [&](const geometry::Scene& read) { args->sample.check_budget(read); });
       if (!args->model.empty()) io::write_model(fitted.model, args->model);
       print_model_brief(fitted.model, out);
       if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
