@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/interruption.hpp"
 
 namespace shapeproc::core {
 
@@ -21,6 +22,7 @@ void write_file_atomically(const fs::path& target,
   std::random_device entropy;
   const fs::path temporary =
       fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+  const TemporaryFileMark mark(temporary.string());  // removed if a signal ends the process
   try {
     {
       std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

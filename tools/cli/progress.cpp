@@ -2,27 +2,9 @@
 
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 
 namespace shapeproc::cli {
-
-namespace {
-std::atomic<bool> interrupted{false};
-extern "C" void on_interrupt(int) {
-  interrupted = true;
-  std::signal(SIGINT, SIG_DFL);
-}
-}  // namespace
-
-InterruptFlag::InterruptFlag() {
-  interrupted = false;
-  std::signal(SIGINT, on_interrupt);
-}
-
-InterruptFlag::~InterruptFlag() { std::signal(SIGINT, SIG_DFL); }
-
-const std::atomic<bool>* InterruptFlag::flag() const { return &interrupted; }
 
 void VerbosityFlags::add_to(CLI::App& command) {
   command.add_flag("-q,--quiet", quiet, "no progress on standard error");

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <atomic>
 #include <chrono>
 #include <mutex>
 #include <string>
@@ -19,17 +18,6 @@ struct VerbosityFlags {
   bool show_progress() const;
   // A stage line on standard error with --verbose ("fit: quadrature ...").
   void stage(const std::string& line) const;
-};
-
-// While alive, Ctrl-C sets flag() instead of killing the process, so that a long run stops
-// cleanly (the chains throw core::Cancelled, nothing is written); a second Ctrl-C kills at once.
-class InterruptFlag {
- public:
-  InterruptFlag();
-  ~InterruptFlag();
-  InterruptFlag(const InterruptFlag&) = delete;
-  InterruptFlag& operator=(const InterruptFlag&) = delete;
-  const std::atomic<bool>* flag() const;
 };
 
 class ProgressBar {

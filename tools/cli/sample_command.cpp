@@ -7,6 +7,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/core/interruption.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -212,7 +213,7 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
   record.domain_file = domain_file;
   record.intensity_file = intensity;
   chains_options.record = std::move(record);
-  const InterruptFlag interrupt;
+  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
   chains_options.cancel = interrupt.flag();
   const bool sampler = synthesizer.method() == "shape-process";
   ProgressBar bar(sampler ? "sampling" : "synthesising", verbosity.show_progress());
