@@ -11,6 +11,20 @@ namespace shapeproc::core {
 
 namespace fs = std::filesystem;
 
+void check_writable(const fs::path& target) {
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  if (fs::is_directory(target, ec)) {
+    throw UsageError(target.string() + ": output is a directory, not a file");
+  }
+  std::random_device entropy;
+  const fs::path probe =
+      fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+  const bool created = static_cast<bool>(std::ofstream(probe, std::ios::binary));
+  fs::remove(probe, ec);
+  if (!created) throw UsageError(target.string() + ": cannot create the output file");
+}
+
 void write_file_atomically(const fs::path& target,
                            const std::function<void(std::ostream&)>& write) {
   std::error_code ec;

@@ -13,4 +13,9 @@ namespace shapeproc::core {
 void write_file_atomically(const std::filesystem::path& target,
                            const std::function<void(std::ostream&)>& write);
 
+// Checks before any long work that `target` can be written: its directory exists or can be
+// created, and a file can be created in it (then removed). Throws UsageError otherwise, so that a
+// run with several outputs does not write the first and fail on the second.
+void check_writable(const std::filesystem::path& target);
+
 }  // namespace shapeproc::core

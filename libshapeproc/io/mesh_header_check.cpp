@@ -37,7 +37,9 @@ class HeaderCheck {
     throw core::InputError(name_, line, message);
   }
 
-  // The next line, without its end; false at the end of the file. Lines are bounded in length.
+  // The next line of text, without its end; false at the end of the file. Lines are bounded in
+  // length, and hold no control characters (a NUL or vertical tab made OpenMesh's readers take
+  // counts from elsewhere, or loop).
   bool next_line(std::string& line) {
     line.clear();
     char c = 0;
@@ -46,6 +48,9 @@ class HeaderCheck {
       any = true;
       if (c == '\n') break;
       if (line.size() >= kMaxLine) fail(line_ + 1, "a line longer than 1 MiB");
+      const auto byte = static_cast<unsigned char>(c);
+      if ((byte < 0x20 && c != '\t' && c != '\r') || byte == 0x7f)
+        fail(line_ + 1, "a control character (byte " + std::to_string(byte) + ") in a text line");
       line.push_back(c);
     }
     if (!any) return false;
@@ -93,16 +98,15 @@ std::vector<std::string> words(const std::string& line) {
   return out;
 }
 
-// OFF: [ST][C][N]OFF [BINARY], then the counts "vertices faces edges".
+// OFF (text): [ST][C][N]OFF alone on the first line, then the line "vertices faces edges"
+// (OpenMesh's reader takes the counts from the line after the keyword, and reads no comment
+// before them).
 void check_off(HeaderCheck& check) {
   std::string line;
-  std::vector<std::string> tokens;
-  while (check.next_line(line)) {
-    tokens = words(line.substr(0, line.find('#')));
-    if (!tokens.empty()) break;
-  }
-  if (tokens.empty()) check.fail(0, "no OFF header");
-  const std::string& keyword = tokens[0];
+  if (!check.next_line(line)) check.fail(0, "no OFF header");
+  std::vector<std::string> tokens = words(line);
+  if (tokens.empty()) check.fail(1, "the first line is not OFF");
+  const std::string keyword = tokens[0];
   const std::size_t off = keyword.rfind("OFF");
   if (off == std::string::npos || off + 3 != keyword.size())
     check.fail(check.line(), "the first word is not OFF");
@@ -112,20 +116,20 @@ void check_off(HeaderCheck& check) {
     if (c != 'S' && c != 'T' && c != 'C' && c != 'N')
       check.fail(check.line(), "unknown OFF variant '" + core::printable(keyword, 40) + "'");
   }
-  const bool binary = tokens.size() > 1 && tokens[1] == "BINARY";
-  tokens.erase(tokens.begin(), tokens.begin() + (binary ? 2 : 1));
-  while (tokens.size() < 2 && check.next_line(line)) {
-    for (std::string& w : words(line.substr(0, line.find('#')))) tokens.push_back(std::move(w));
-  }
-  if (tokens.size() < 2) check.fail(check.line(), "no vertex and face counts after OFF");
+  if (tokens.size() == 2 && tokens[1] == "BINARY")
+    check.fail(check.line(), "binary OFF is not read: save the mesh as text OFF, PLY or OBJ");
+  if (tokens.size() > 1)
+    check.fail(check.line(), "the counts must be on the line after " + keyword);
+  if (!check.next_line(line)) check.fail(check.line(), "no vertex, face and edge counts");
+  tokens = words(line);
+  if (tokens.size() != 3 || line.find('#') != std::string::npos)
+    check.fail(check.line(), "expected the line 'vertices faces edges' after " + keyword +
+                                 ", got '" + core::printable(line, 60) + "'");
   const long long vertices = check.count(tokens[0], "the vertex count");
   const long long faces = check.count(tokens[1], "the face count");
-  // At least "0 0 0 " per vertex and "3 0 1 2 " per face as text; 12 and 16 bytes in binary.
-  const long double needed =
-      binary ? 12.0L * vertices + 16.0L * faces : 6.0L * vertices + 8.0L * faces - 1.0L;
-  check.fits(needed,
+  // At least "0 0 0 " per vertex and "3 0 1 2 " per face.
+  check.fits(6.0L * vertices + 8.0L * faces - 1.0L,
              std::to_string(vertices) + " vertices and " + std::to_string(faces) + " faces");
-  if (binary) return;
   // The vertices as text: OpenMesh's reader stops at a number it cannot read (1e999, nan) and
   // reports the faces after it instead.
   for (long long v = 0; v < vertices && check.next_line(line);) {
@@ -179,7 +183,7 @@ void check_ply(HeaderCheck& check) {
     if (w[0] == "end_header") {
       ended = true;
     } else if (w[0] == "format") {
-      if (w.size() != 3 ||
+      if (w.size() != 3 || w[2] != "1.0" ||
           (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
         check.fail(check.line(), "unknown format line '" + core::printable(line, 80) + "'");
       binary = w[1] != "ascii";

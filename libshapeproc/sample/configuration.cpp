@@ -22,6 +22,9 @@ Configuration::Configuration(const model::Interaction& interaction,
 double Configuration::log_interaction(const Element& xi, int skip, std::vector<Link>& links) const {
   near_.clear();
   links.clear();
+  // A model without interaction: nothing to measure (the grid, of one cell, would offer every
+  // element).
+  if (!(interaction_.range() > 0.0)) return 0.0;
   // Candidates nearest first (by the minimum-image distance of reference positions), so that a
   // hard core, most likely with the nearest, rejects after few measurements.
   candidates_.clear();

@@ -332,6 +332,26 @@ std::vector<HostileCase> table_and_mesh_cases() {
              "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n")},
        {"info", "@in.off"},
        "non-manifold"},
+      {"off_control_characters",
+       "OFF with NUL bytes and no line end (fuzzer: a 4.6 GB allocation)",
+       {file("in.off", std::string("OFF 0 3 \0\0\0\0\0\v3 0 3 2 00 \0\v3 0 3 0 3 2", 31))},
+       {"info", "@in.off"},
+       "a control character (byte 0)"},
+      {"off_counts_on_keyword_line",
+       "OFF with its counts on the keyword's line",
+       {file("in.off",
+             "OFF 4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")},
+       {"info", "@in.off"},
+       "the counts must be on the line after OFF"},
+      {"ply_bad_version",
+       "a PLY format line of version '\\3761.0' (fuzzer: OpenMesh looped)",
+       {file("in.ply",
+             "ply\nformat binary_little_endian \3761.0\nelement vertex 4\nproperty float "
+             "x\nproperty float y\nproperty float z\nelement face 4\nproperty list "
+             "uchar int vertex_indices\nend_header\n" +
+                 std::string(100, '\0'))},
+       {"info", "@in.ply"},
+       "unknown format line"},
       {"ply_huge_count",
        "a PLY header declaring 10^9 vertices",
        {file("in.ply",
@@ -433,6 +453,14 @@ std::vector<HostileCase> flag_cases() {
        {file("in.svg", dots()), file("out", "<dir>")},
        {"convert", "@in.svg", "-o", "@out"},
        "out"},
+      {"png_unwritable", "--png in a directory that cannot be made (the SVG was left behind)",
+       exemplar, synth({"--size", "100,100", "--png", "/proc/none/picture.png"}),
+       "cannot create the output file"},
+      {"model_unwritable",
+       "fit -o in a directory that cannot be made (found after the fit)",
+       exemplar,
+       {"fit", "@in.svg", "-o", "/proc/none/m.json"},
+       "cannot create the output file"},
       {"seed_not_number", "--seed abc", exemplar, synth({"--size", "100,100", "--seed", "abc"}),
        "--seed"},
       {"huge_value", "a 1 MB option value", exemplar, synth({"--size", std::string(1 << 20, '9')}),
@@ -478,7 +506,9 @@ TEST_P(HostileInput, OneLineExitTwoNothingWritten) {
     const std::string prefix = dir.path().string() + "/";
     for (std::size_t at; (at = line.find(prefix)) != std::string::npos;)
       line.erase(at, prefix.size());
-    std::cout << "CATALOGUE| " << c.input << " | `" << line << "` | " << r.code << " |\n";
+    std::string input;
+    for (const char ch : c.input) input += ch == '<' ? "&lt;" : std::string(1, ch);
+    std::cout << "CATALOGUE| " << input << " | `" << line << "` | " << r.code << " |\n";
   }
 }
 

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <memory>
 
+#include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/fit/fit_estimate.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -41,6 +42,7 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   const auto start = std::chrono::steady_clock::now();
   if (io::extension_of(args.output) != "json")
     throw core::UsageError(args.output + ": the model is written as .json");
+  core::check_writable(args.output);
   const fit::FitResult result = fit_exemplar(args.input, args.fit, args.reader, arguments,
                                              args.verbosity, args.budget.budget());
   io::write_model(result.model, args.output);

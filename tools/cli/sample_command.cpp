@@ -147,6 +147,9 @@ void SampleFlags::check(const std::string& output, int dimension) const {
     throw core::UsageError("--png: expected a .png file, got '" + png + "'");
   if (!trace.empty() && io::extension_of(trace) != "csv")
     throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
+  for (const std::string& file : {output, png, trace}) {
+    if (!file.empty()) core::check_writable(file);
+  }
   if (boundary == "torus" && !domain_file.empty())
     throw core::UsageError(
         "--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
