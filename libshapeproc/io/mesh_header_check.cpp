@@ -4,7 +4,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -144,6 +146,30 @@ void check_off(HeaderCheck& check) {
     }
     ++v;
   }
+  // The faces: 3 to 1024 corners naming existing vertices (OpenMesh took a corner count of -3
+  // as a size of 2^64 - 3).
+  for (long long f = 0; f < faces && check.next_line(line);) {
+    const std::vector<std::string> w = words(line.substr(0, line.find('#')));
+    if (w.empty()) continue;
+    long long corners = -1;
+    const auto [end, ec] = std::from_chars(w[0].data(), w[0].data() + w[0].size(), corners);
+    const bool count_ok = ec == std::errc() && end == w[0].data() + w[0].size() && corners >= 3 &&
+                          corners <= 1024 && static_cast<long long>(w.size()) > corners;
+    if (!count_ok)
+      check.fail(check.line(), "face " + std::to_string(f) +
+                                   " needs 3 to 1024 corners and their vertices: '" +
+                                   core::printable(line, 80) + "'");
+    for (long long k = 1; k <= corners; ++k) {
+      const std::string& token = w[static_cast<std::size_t>(k)];
+      long long index = -1;
+      const auto [at, error] = std::from_chars(token.data(), token.data() + token.size(), index);
+      if (error != std::errc() || at != token.data() + token.size() || index < 0 ||
+          index >= vertices)
+        check.fail(check.line(), "face " + std::to_string(f) + ": corner '" +
+                                     core::printable(token, 40) + "' names no vertex");
+    }
+    ++f;
+  }
 }
 
 // Bytes of a PLY scalar type in binary; 0 for an unknown type.
@@ -161,18 +187,114 @@ bool ply_integer_type(const std::string& type) {
          ply_type_size(type) > 0;
 }
 
+struct PlyProperty {
+  bool list;
+  std::string count_type, type, name;
+};
+
+struct PlyElement {
+  std::string name;
+  long long count;
+  long double min_bytes = 0;  // per item
+  std::vector<PlyProperty> properties;
+};
+
+// Reads PLY values one at a time, as text tokens or binary scalars of either byte order.
+class PlyValues {
+ public:
+  PlyValues(HeaderCheck& check, bool binary, bool big_endian)
+      : check_(check), binary_(binary), big_endian_(big_endian) {}
+
+  double next(const std::string& type, const std::string& what) {
+    if (!binary_) {
+      std::string token;
+      if (!(check_.stream() >> token)) check_.fail(0, "the data end before " + what);
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      if (end != token.c_str() + token.size() || !std::isfinite(value) ||
+          (ply_integer_type(type) && value != std::floor(value)))
+        check_.fail(0, what + ": '" + core::printable(token, 40) + "' is not a " + type);
+      return value;
+    }
+    const int size = ply_type_size(type);
+    std::array<unsigned char, 8> bytes{};
+    if (!check_.stream().read(reinterpret_cast<char*>(bytes.data()), size))
+      check_.fail(0, "the data end before " + what);
+    if (big_endian_) std::reverse(bytes.begin(), bytes.begin() + size);
+    return decode(type, bytes);
+  }
+
+ private:
+  static double decode(const std::string& type, const std::array<unsigned char, 8>& b) {
+    std::uint64_t bits = 0;
+    for (int k = 7; k >= 0; --k) bits = (bits << 8) | b[static_cast<std::size_t>(k)];
+    if (type == "float" || type == "float32") {
+      float f = 0;
+      const auto low = static_cast<std::uint32_t>(bits);
+      std::memcpy(&f, &low, 4);
+      return f;
+    }
+    if (type == "double" || type == "float64") {
+      double d = 0;
+      std::memcpy(&d, &bits, 8);
+      return d;
+    }
+    const int size = ply_type_size(type);
+    const bool is_signed = type == "char" || type == "int8" || type == "short" || type == "int16" ||
+                           type == "int" || type == "int32";
+    const std::uint64_t mask = size == 8 ? ~0ull : (1ull << (8 * size)) - 1;
+    const std::uint64_t raw = bits & mask;
+    if (is_signed && (raw >> (8 * size - 1)) != 0)
+      return static_cast<double>(static_cast<std::int64_t>(raw | ~mask));
+    return static_cast<double>(raw);
+  }
+
+  HeaderCheck& check_;
+  bool binary_, big_endian_;
+};
+
+// The data after the header: every value readable and finite, vertex positions finite, face
+// lists of 3 to 1024 corners naming existing vertices, other lists of 0 to 1024 items (OpenMesh
+// took a negative corner count as a size of 2^64 - 3).
+void check_ply_body(HeaderCheck& check, const std::vector<PlyElement>& elements, bool binary,
+                    bool big_endian) {
+  long long vertices = 0;
+  for (const PlyElement& e : elements)
+    if (e.name == "vertex") vertices = e.count;
+  PlyValues values(check, binary, big_endian);
+  for (const PlyElement& e : elements) {
+    for (long long item = 0; item < e.count; ++item) {
+      const std::string where = e.name + " " + std::to_string(item);
+      for (const PlyProperty& p : e.properties) {
+        if (!p.list) {
+          values.next(p.type, where);
+          continue;
+        }
+        const bool corners =
+            e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+        const double count = values.next(p.count_type, where);
+        if (count < (corners ? 3 : 0) || count > 1024)
+          check.fail(0, where + ": a list of " + core::format_general(count, 6) + " items" +
+                            (corners ? " (a face needs 3 to 1024 corners)" : " (at most 1024)"));
+        for (int k = 0; k < static_cast<int>(count); ++k) {
+          const double index = values.next(p.type, where);
+          if (corners && (index < 0 || index >= static_cast<double>(vertices)))
+            check.fail(0,
+                       where + ": corner " + core::format_general(index, 12) + " names no vertex");
+        }
+      }
+    }
+  }
+}
+
 // PLY: "ply", a format line, elements with their properties, "end_header".
 void check_ply(HeaderCheck& check) {
   std::string line;
   if (!check.next_line(line) || words(line) != std::vector<std::string>{"ply"})
     check.fail(1, "the first line is not 'ply'");
-  bool binary = false, format_seen = false, vertex_xyz = false, face_list = false;
-  struct Element {
-    std::string name;
-    long long count;
-    long double min_bytes = 0;  // per item
-  };
-  std::vector<Element> elements;
+  bool binary = false, big_endian = false, format_seen = false, vertex_xyz = false,
+       face_list = false;
+  std::vector<PlyElement> elements;
   std::vector<std::string> vertex_properties;
   bool ended = false;
   while (!ended && check.next_line(line)) {
@@ -187,14 +309,16 @@ void check_ply(HeaderCheck& check) {
           (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
         check.fail(check.line(), "unknown format line '" + core::printable(line, 80) + "'");
       binary = w[1] != "ascii";
+      big_endian = w[1] == "binary_big_endian";
       format_seen = true;
     } else if (w[0] == "element") {
       if (w.size() != 3) check.fail(check.line(), "an element line needs a name and a count");
-      elements.push_back({w[1], check.count(w[2], "an element count")});
+      elements.push_back({w[1], check.count(w[2], "an element count"), 0, {}});
     } else if (w[0] == "property") {
       if (elements.empty()) check.fail(check.line(), "a property before any element");
-      Element& e = elements.back();
+      PlyElement& e = elements.back();
       if (w.size() == 5 && w[1] == "list") {
+        e.properties.push_back({true, w[2], w[3], w[4]});
         if (!ply_integer_type(w[2]) || ply_type_size(w[3]) == 0)
           check.fail(check.line(), "bad list types in '" + core::printable(line, 80) + "'");
         if (e.name == "vertex") check.fail(check.line(), "a list property of vertices");
@@ -205,6 +329,7 @@ void check_ply(HeaderCheck& check) {
         }
         e.min_bytes += binary ? ply_type_size(w[2]) : 2;
       } else if (w.size() == 3 && ply_type_size(w[1]) > 0) {
+        e.properties.push_back({false, "", w[1], w[2]});
         if (e.name == "vertex") vertex_properties.push_back(w[2]);
         e.min_bytes += binary ? ply_type_size(w[1]) : 2;
       } else {
@@ -224,11 +349,12 @@ void check_ply(HeaderCheck& check) {
   if (!face_list) check.fail(check.line(), "no face element with a vertex_indices list");
   long double needed = 0;
   std::string declared;
-  for (const Element& e : elements) {
+  for (const PlyElement& e : elements) {
     needed += e.min_bytes * static_cast<long double>(e.count);
     declared += (declared.empty() ? "" : ", ") + std::to_string(e.count) + " " + e.name;
   }
   check.fits(needed - (binary ? 0 : 1), declared + " elements");
+  check_ply_body(check, elements, binary, big_endian);
 }
 
 // OBJ: faces must name existing vertices (1-based, or negative from the last one read) and have
