@@ -2,8 +2,9 @@
 # Usage: scripts/fuzz.sh [SECONDS [RUNS [TARGET...]]]
 # Builds the libFuzzer targets of tests/fuzz (in build-fuzz/, clang with ASan and UBSan) and runs
 # each for SECONDS (default 60), or until RUNS inputs when given (then SECONDS is a cap), from a
-# corpus seeded with data/ and tests/fuzz/seeds. Prints one line per target: executions, seconds,
-# result. Crash inputs are kept in build-fuzz/crashes/. Exit 1 when any target crashed, timed out
+# corpus seeded with data/ and tests/fuzz/seeds, with a fixed random seed (FUZZ_SEED, default 1:
+# a run of RUNS inputs from the seeds alone is repeatable). Prints one line per target:
+# executions, seconds, result. Crash inputs are kept in build-fuzz/crashes/. Exit 1 when any target crashed, timed out
 # (10 s per input) or ran out of memory (2 GB).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -49,7 +50,7 @@ for t in "${targets[@]}"; do
   work=$(mktemp -d)
   start=$SECONDS
   if (cd "$work" && "$root/build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" "${limit[@]}" \
-      -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+      -seed="${FUZZ_SEED:-1}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
       -artifact_prefix="$root/build-fuzz/crashes/$t-" "$root/build-fuzz/corpus/$t") \
       > "$log" 2>&1; then
     result=ok

@@ -100,7 +100,7 @@ std::vector<std::string> words(const std::string& line) {
   return out;
 }
 
-// OFF (text): [ST][C][N]OFF alone on the first line, then the line "vertices faces edges"
+// OFF (text): OFF alone on the first line, then the line "vertices faces edges"
 // (OpenMesh's reader takes the counts from the line after the keyword, and reads no comment
 // before them).
 void check_off(HeaderCheck& check) {
@@ -112,12 +112,9 @@ void check_off(HeaderCheck& check) {
   const std::size_t off = keyword.rfind("OFF");
   if (off == std::string::npos || off + 3 != keyword.size())
     check.fail(check.line(), "the first word is not OFF");
-  const std::string prefix = keyword.substr(0, off);
-  for (const char c : prefix) {
-    if (c == '4' || c == 'n') check.fail(check.line(), "4D and nD OFF files are not read");
-    if (c != 'S' && c != 'T' && c != 'C' && c != 'N')
-      check.fail(check.line(), "unknown OFF variant '" + core::printable(keyword, 40) + "'");
-  }
+  if (keyword != "OFF")
+    check.fail(check.line(), "only plain OFF is read (positions and faces), not " +
+                                 core::printable(keyword, 40) + ": save it as PLY or OBJ");
   if (tokens.size() == 2 && tokens[1] == "BINARY")
     check.fail(check.line(), "binary OFF is not read: save the mesh as text OFF, PLY or OBJ");
   if (tokens.size() > 1)
@@ -134,18 +131,24 @@ void check_off(HeaderCheck& check) {
              std::to_string(vertices) + " vertices and " + std::to_string(faces) + " faces");
   // The vertices as text: OpenMesh's reader stops at a number it cannot read (1e999, nan) and
   // reports the faces after it instead.
-  for (long long v = 0; v < vertices && check.next_line(line);) {
+  long long v = 0;
+  for (; v < vertices && check.next_line(line);) {
     const std::vector<std::string> w = words(line.substr(0, line.find('#')));
     if (w.empty()) continue;
+    // Exactly three numbers a line: OpenMesh reads the file as a stream of words, so a line of
+    // four would shift every later vertex and face.
     for (std::size_t k = 0; k < 3; ++k) {
       char* end = nullptr;
       const double value = k < w.size() ? std::strtod(w[k].c_str(), &end) : 0.0;
-      if (k >= w.size() || end != w[k].c_str() + w[k].size() || !std::isfinite(value))
+      if (w.size() != 3 || end != w[k].c_str() + w[k].size() || !std::isfinite(value))
         check.fail(check.line(), "vertex " + std::to_string(v) + " is not three finite numbers: '" +
                                      core::printable(line, 80) + "'");
     }
     ++v;
   }
+  if (v < vertices)
+    check.fail(check.line(), "the file ends after " + std::to_string(v) + " vertices");
+  if (faces == 0) return;
   // The faces: 3 to 1024 corners naming existing vertices (OpenMesh took a corner count of -3
   // as a size of 2^64 - 3).
   for (long long f = 0; f < faces && check.next_line(line);) {
@@ -154,10 +157,10 @@ void check_off(HeaderCheck& check) {
     long long corners = -1;
     const auto [end, ec] = std::from_chars(w[0].data(), w[0].data() + w[0].size(), corners);
     const bool count_ok = ec == std::errc() && end == w[0].data() + w[0].size() && corners >= 3 &&
-                          corners <= 1024 && static_cast<long long>(w.size()) > corners;
+                          corners <= 1024 && static_cast<long long>(w.size()) == corners + 1;
     if (!count_ok)
       check.fail(check.line(), "face " + std::to_string(f) +
-                                   " needs 3 to 1024 corners and their vertices: '" +
+                                   " needs 3 to 1024 corners and their vertices alone: '" +
                                    core::printable(line, 80) + "'");
     for (long long k = 1; k <= corners; ++k) {
       const std::string& token = w[static_cast<std::size_t>(k)];
@@ -169,7 +172,10 @@ void check_off(HeaderCheck& check) {
                                      core::printable(token, 40) + "' names no vertex");
     }
     ++f;
+    if (f == faces) return;
   }
+  check.fail(check.line(), "the file ends before its " + std::to_string(vertices) +
+                               " vertices and " + std::to_string(faces) + " faces");
 }
 
 // Bytes of a PLY scalar type in binary; 0 for an unknown type.
