@@ -59,7 +59,7 @@ for t in "${targets[@]}"; do
     status=1
   fi
   rm -rf "$work"
-  executed=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  executed=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   printf '%-10s %12s %8s %s\n' "$t" "$executed" "$((SECONDS - start))" "$result"
 done
 exit "$status"

@@ -58,9 +58,24 @@ std::string printable(const std::string& text, std::size_t limit) {
   while (end < text.size() && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
     --end;
   std::string out = text.substr(0, end);
-  for (char& ch : out) {
-    const auto byte = static_cast<unsigned char>(ch);
-    if (byte < 0x20 || byte == 0x7F) ch = '?';
+  for (std::size_t i = 0; i < out.size();) {
+    const auto byte = static_cast<unsigned char>(out[i]);
+    // A UTF-8 character's length from its first byte; 0 for a byte that cannot start one.
+    const std::size_t length = byte < 0x80           ? 1
+                               : (byte >> 5) == 0x6  ? 2
+                               : (byte >> 4) == 0xE  ? 3
+                               : (byte >> 3) == 0x1E ? 4
+                                                     : 0;
+    bool valid = length > 0 && i + length <= out.size();
+    for (std::size_t k = 1; valid && k < length; ++k)
+      valid = (static_cast<unsigned char>(out[i + k]) & 0xC0) == 0x80;
+    if (!valid) {  // a stray byte of another encoding, or a cut character
+      out[i++] = '?';
+    } else if (byte < 0x20 || byte == 0x7F) {
+      out[i++] = '?';
+    } else {
+      i += length;
+    }
   }
   if (end < text.size()) out += "... (" + std::to_string(text.size() - end) + " more bytes)";
   return out;

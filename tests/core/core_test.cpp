@@ -86,6 +86,10 @@ TEST(Printable, ControlCharactersAndLengthAreBounded) {
                       4),
             "ab\xc3\xa9"
             "... (2 more bytes)");
+  // Bytes that are not UTF-8 (Latin-1 "\xfe", a lone continuation byte) print as '?'.
+  EXPECT_EQ(printable("v\xfe"
+                      "1.0 \x80x \xe2\x82\xac"),
+            "v?1.0 ?x \xe2\x82\xac");
   EXPECT_EQ(xml_escape("<a href=\"x\">&</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&lt;/a&gt;");
 }
 
