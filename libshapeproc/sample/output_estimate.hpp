@@ -17,6 +17,8 @@ inline constexpr double kBytesPerElement = 2048;
 // Elements: `exemplar_density` (elements per unit measure, from the model's fit record) times the
 // domain's measure; without it, Σ_c β_c times the measure, the Poisson count (an upper bound for
 // an inhibitive model). Bytes: that many elements per chain, for `chains_at_once` chains.
+core::ResourceEstimate estimate_output(double exemplar_density, const geometry::Domain& domain,
+                                       int dimension, int chains_at_once);
 core::ResourceEstimate estimate_output(const model::ShapeProcessModel& model,
                                        const geometry::Domain& domain,
                                        std::optional<double> exemplar_density, int chains_at_once);

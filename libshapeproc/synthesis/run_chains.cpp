@@ -46,6 +46,11 @@ class ProgressSum {
 
 }  // namespace
 
+int chains_at_once(int chains, int threads) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, std::min(chains, threads > 0 ? threads : cores));
+}
+
 std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
                                         const ChainOptions& options) {
   core::check(options.chains >= 1, "run_chains",
@@ -94,9 +99,7 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
       }
     }
   };
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int thread_count =
-      std::max(1, std::min(chains, options.threads > 0 ? options.threads : cores));
+  const int thread_count = chains_at_once(chains, options.threads);
   std::vector<std::thread> pool;
   for (int t = 1; t < thread_count; ++t) pool.emplace_back(worker);
   worker();

@@ -30,6 +30,9 @@ struct ChainOptions {
 
 // Runs the chains; results in chain order. A chain that throws makes run_chains rethrow its
 // exception once every thread has stopped (the first chain's error in chain order).
+// Chains that run at the same time: `threads` (0: one per core), at most `chains`, at least 1.
+int chains_at_once(int chains, int threads);
+
 std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
                                         const ChainOptions& options);
 

@@ -2,7 +2,6 @@
 // the chains' runner and output writer every synthesis method's command shares.
 #include <filesystem>
 #include <memory>
-#include <thread>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
@@ -109,19 +108,15 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
   budget.add_to(command);
 }
 
-int SampleFlags::chains_at_once() const {
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, std::min(chains, threads > 0 ? threads : cores));
-}
+int SampleFlags::chains_at_once() const { return synthesis::chains_at_once(chains, threads); }
 
 void SampleFlags::check_budget(const geometry::Scene& exemplar) const {
   const double measure = exemplar.window_measure();
   if (!(measure > 0)) return;
   const double density = static_cast<double>(exemplar.elements.size()) / measure;
-  const model::ShapeProcessModel none;  // no β: the estimate comes from the density alone
-  core::check_budget(
-      sample::estimate_output(none, domain(exemplar.dimension), density, chains_at_once()),
-      budget.budget(), "the output", "--size");
+  core::check_budget(sample::estimate_output(density, domain(exemplar.dimension),
+                                             exemplar.dimension, chains_at_once()),
+                     budget.budget(), "the output", "--size");
 }
 
 void SampleFlags::check(const std::string& output, int dimension) const {
