@@ -11,31 +11,33 @@ namespace shapeproc::core {
 
 namespace fs = std::filesystem;
 
-void check_writable(const fs::path& target) {
+namespace {
+
+// Creates the target's directory, refuses a target that is a directory, and returns a name beside
+// it for a temporary file, unique enough for concurrent writers of the same target.
+fs::path temporary_beside(const fs::path& target) {
   std::error_code ec;
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   if (fs::is_directory(target, ec)) {
     throw UsageError(target.string() + ": output is a directory, not a file");
   }
   std::random_device entropy;
-  const fs::path probe =
-      fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+  return fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+}
+
+}  // namespace
+
+void check_writable(const fs::path& target) {
+  const fs::path probe = temporary_beside(target);
   const bool created = static_cast<bool>(std::ofstream(probe, std::ios::binary));
+  std::error_code ec;
   fs::remove(probe, ec);
   if (!created) throw UsageError(target.string() + ": cannot create the output file");
 }
 
 void write_file_atomically(const fs::path& target,
                            const std::function<void(std::ostream&)>& write) {
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  if (fs::is_directory(target, ec)) {
-    throw UsageError(target.string() + ": output is a directory, not a file");
-  }
-  // A name unique enough for concurrent writers of the same target.
-  std::random_device entropy;
-  const fs::path temporary =
-      fs::path(target.string() + ".tmp-" + std::to_string(entropy() % 1000000000u));
+  const fs::path temporary = temporary_beside(target);
   const TemporaryFileMark mark(temporary.string());  // removed if a signal ends the process
   try {
     {
@@ -47,6 +49,7 @@ void write_file_atomically(const fs::path& target,
     }
     fs::rename(temporary, target);
   } catch (...) {
+    std::error_code ec;
     fs::remove(temporary, ec);
     throw;
   }
