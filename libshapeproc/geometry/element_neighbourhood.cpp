@@ -83,17 +83,20 @@ struct CandidatePair {
 // every output neighbour (`near(a, visit)` calls visit(b) for a superset of its exemplar
 // partners of its key nearer than r/4) are sorted and paired first; then, only for the output
 // neighbours left without a partner, every other candidate of their key nearer than r
-// (`all(a, visit)`), among the exemplar neighbours still free. The pairs and their order are
-// those of one sort of every candidate. Buffers are reused by each thread.
+// (`all(a, visit)`), among the exemplar neighbours still free. The pairs are those of one sort
+// of every candidate (uncontested near pairs come first, unsorted). Buffers are reused by each
+// thread.
 //
 // `bound`: once Σ over the output neighbours of a lower bound of their pair's cost (their
 // nearest near candidate, else (r/4)²) reaches it, no pair is made and that sum is returned;
-// otherwise the result is -1.
+// likewise after the near pairs (their costs, and (r/4)² for each neighbour left); otherwise
+// the result is -1 (pairs made before a bound stops are to be discarded).
 template <class Near, class All, class F>
 double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
                    Near&& near_of, All&& all_of, F&& f, double bound) {
-  thread_local std::vector<CandidatePair> near, far;
+  thread_local std::vector<CandidatePair> near, contested, far;
   thread_local std::vector<char> used_output, used_exemplar;
+  thread_local std::vector<int> referrers;
   near.clear();
   const double cap = radius * radius, split = cap / 16.0;
   double lower = 0.0;
@@ -117,18 +120,52 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
   used_output.assign(output.size(), 0);
   used_exemplar.assign(exemplar.size(), 0);
   std::size_t paired = 0;
-  const auto take = [&](const std::vector<CandidatePair>& pairs) {
+  double near_sum = 0.0;  // the pairs' squared distances so far
+  // The greedy pass over `pairs` (grouped by output neighbour), closest first: a heap, popped
+  // only until every output neighbour in it is paired, instead of a full sort.
+  const auto take = [&](std::vector<CandidatePair>& pairs) {
+    std::size_t open = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (i == 0 || pairs[i - 1].output != pairs[i].output) ++open;
+    std::sort(pairs.begin(), pairs.end());
     for (const CandidatePair& p : pairs) {
+      if (open == 0) return;
       const auto a = static_cast<std::size_t>(p.output), b = static_cast<std::size_t>(p.exemplar);
       if (used_output[a] || used_exemplar[b]) continue;
       used_output[a] = used_exemplar[b] = 1;
       f(p.output, p.exemplar, p.cost);
+      near_sum += p.cost;
+      --open;
       if (++paired == output.size()) return;
     }
   };
-  std::sort(near.begin(), near.end());
-  take(near);
+  // A pair whose two sides have no other near candidate is taken whenever the sorted greedy
+  // pass reaches it and blocks nothing, so such pairs are taken first, unsorted (most pairs of a
+  // good candidate are); only the contested rest is sorted.
+  referrers.assign(exemplar.size(), 0);
+  for (const CandidatePair& p : near) ++referrers[static_cast<std::size_t>(p.exemplar)];
+  contested.clear();
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const CandidatePair& p = near[i];
+    const bool alone = (i == 0 || near[i - 1].output != p.output) &&
+                       (i + 1 == near.size() || near[i + 1].output != p.output);
+    if (alone && referrers[static_cast<std::size_t>(p.exemplar)] == 1) {
+      used_output[static_cast<std::size_t>(p.output)] = 1;
+      used_exemplar[static_cast<std::size_t>(p.exemplar)] = 1;
+      f(p.output, p.exemplar, p.cost);
+      near_sum += p.cost;
+      ++paired;
+    } else {
+      contested.push_back(p);
+    }
+  }
   if (paired == output.size()) return -1.0;
+  take(contested);
+  if (paired == output.size()) return -1.0;
+  // Every neighbour still free costs at least (r/4)² (a far pair or none), so the near pairs
+  // and that give a second, tighter lower bound before the far candidates are gathered.
+  const double after_near = near_sum + static_cast<double>(output.size() - paired) * split;
+  if (after_near >= bound) return after_near;
   far.clear();
   for (std::size_t a = 0; a < output.size(); ++a) {
     const Neighbour& o = output[a];
@@ -140,7 +177,6 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
       if (c >= split && c < cap) far.push_back({c, static_cast<int>(a), static_cast<int>(b)});
     });
   }
-  std::sort(far.begin(), far.end());
   take(far);
   return -1.0;
 }
@@ -230,40 +266,42 @@ double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbou
 // the offsets [−2r, 2r)^dim (offsets beyond fall in the border cells).
 
 PairingNeighbourhood::PairingNeighbourhood(Neighbourhood neighbours, double radius, int dimension)
-    : neighbours_(std::move(neighbours)), side_(radius / 4.0), dimension_(dimension) {
-  const int rows = dimension_ == 3 ? kCells * kCells : kCells;
+    : neighbours_(std::move(neighbours)), per_cell_(4.0 / radius), dimension_(dimension) {
+  cells_ = dimension_ == 3 ? kCells * kCells * kCells : kCells * kCells;
   struct Entry {
-    int key, row, column;
+    int key, cell;
     Neighbour neighbour;
   };
   std::vector<Entry> entries;
   entries.reserve(neighbours_.size());
   for (const Neighbour& n : neighbours_) {
     const int z = dimension_ == 3 ? axis_cell(n.offset.z()) : 0;
-    entries.push_back({n.key, z * kCells + axis_cell(n.offset.y()), axis_cell(n.offset.x()), n});
+    entries.push_back(
+        {n.key, (z * kCells + axis_cell(n.offset.y())) * kCells + axis_cell(n.offset.x()), n});
   }
   std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    return std::tie(a.key, a.row, a.column) < std::tie(b.key, b.row, b.column);
+    return std::tie(a.key, a.cell) < std::tie(b.key, b.cell);
   });
   neighbours_.clear();
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const Entry& e = entries[i];
-    if (distinct_keys_.empty() || distinct_keys_.back() != e.key) {
-      distinct_keys_.push_back(e.key);
-      row_start_.insert(row_start_.end(), static_cast<std::size_t>(rows + 1), static_cast<int>(i));
+  for (std::size_t first = 0; first < entries.size();) {
+    std::size_t last = first;
+    while (last < entries.size() && entries[last].key == entries[first].key) ++last;
+    distinct_keys_.push_back(entries[first].key);
+    std::size_t i = first;
+    for (int c = 0; c <= cells_; ++c) {
+      while (i < last && entries[i].cell < c) ++i;
+      cell_start_.push_back(static_cast<int>(i));
     }
+    first = last;
+  }
+  for (const Entry& e : entries) {
     keys_.push_back(e.key);
-    column_.push_back(e.column);
     neighbours_.push_back(e.neighbour);
-    // Rows after this one start after it (until a later entry says otherwise).
-    int* start =
-        row_start_.data() + (distinct_keys_.size() - 1) * static_cast<std::size_t>(rows + 1);
-    for (int r = e.row + 1; r <= rows; ++r) start[r] = static_cast<int>(i) + 1;
   }
 }
 
 int PairingNeighbourhood::axis_cell(double x) const {
-  return std::clamp(static_cast<int>(std::floor(x / side_)) + kCells / 2, 0, kCells - 1);
+  return std::clamp(static_cast<int>(std::floor(x * per_cell_)) + kCells / 2, 0, kCells - 1);
 }
 
 std::pair<std::size_t, std::size_t> PairingNeighbourhood::key_range(int key) const {

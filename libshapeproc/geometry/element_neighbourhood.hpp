@@ -59,9 +59,10 @@ class NeighbourhoodIndex {
 };
 
 // An exemplar neighbourhood prepared for many pairings (the neighbourhood EM's): its neighbours
-// sorted by key, then by cell of a grid of side r/4 over the offsets, so that the partners an
-// output neighbour may pair with first (those nearer than r/4) are found by a few binary
-// searches instead of a scan. Pairings against it equal those against its neighbours.
+// sorted by key, then by cell of a grid of side r/4 over the offsets (row by row, column by
+// column), with where each cell's neighbours start, so that the partners an output neighbour may
+// pair with first (those nearer than r/4) are one contiguous range per row of cells instead of a
+// scan. Pairings against it equal those against its neighbours.
 class PairingNeighbourhood {
  public:
   static constexpr int kCells = 16;  // per axis, over [−2r, 2r)
@@ -82,21 +83,16 @@ class PairingNeighbourhood {
   void for_each_within(int key, const Vec3& offset, int reach, F&& visit) const {
     const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), key);
     if (k == distinct_keys_.end() || *k != key) return;
-    const std::size_t rows = dimension_ == 3 ? kCells * kCells : kCells;
     const int* start =
-        row_start_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) * (rows + 1);
+        cell_start_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) * (cells_ + 1);
     const int x = axis_cell(offset.x()), y = axis_cell(offset.y());
     const int z = dimension_ == 3 ? axis_cell(offset.z()) : 0;
     const int reach_z = dimension_ == 3 ? reach : 0;
-    for (int dz = -reach_z; dz <= reach_z; ++dz) {
-      if (z + dz < 0 || z + dz >= kCells) continue;
-      for (int dy = -reach; dy <= reach; ++dy) {
-        if (y + dy < 0 || y + dy >= kCells) continue;
-        const int row = (z + dz) * kCells + (y + dy);
-        for (int i = start[row]; i < start[row + 1]; ++i) {
-          const int dx = column_[static_cast<std::size_t>(i)] - x;
-          if (dx >= -reach && dx <= reach) visit(static_cast<std::size_t>(i));
-        }
+    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, kCells - 1) + 1;
+    for (int cz = std::max(z - reach_z, 0); cz <= std::min(z + reach_z, kCells - 1); ++cz) {
+      for (int cy = std::max(y - reach, 0); cy <= std::min(y + reach, kCells - 1); ++cy) {
+        const int row = (cz * kCells + cy) * kCells;
+        for (int i = start[row + x0]; i < start[row + x1]; ++i) visit(static_cast<std::size_t>(i));
       }
     }
   }
@@ -104,11 +100,12 @@ class PairingNeighbourhood {
  private:
   int axis_cell(double x) const;
 
-  Neighbourhood neighbours_;  // sorted by key, row of the grid, column
-  std::vector<int> keys_, column_, distinct_keys_;
-  // Per distinct key, where each grid row's neighbours start (rows + 1 entries).
-  std::vector<int> row_start_;
-  double side_ = 1.0;
+  Neighbourhood neighbours_;  // sorted by key, then cell (z, y, x)
+  std::vector<int> keys_, distinct_keys_;
+  // Per distinct key, where each cell's neighbours start (cells_ + 1 entries).
+  std::vector<int> cell_start_;
+  int cells_ = 0;
+  double per_cell_ = 1.0;  // 1 / the cell side
   int dimension_ = 2;
 };
 
