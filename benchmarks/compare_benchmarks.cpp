@@ -57,8 +57,10 @@ void BM_EmIteration(benchmark::State& state, const char* file, const char* categ
   const double elements = static_cast<double>(start.output.elements());
   state.counters["elements"] = elements;
   state.counters["samples"] = static_cast<double>(start.output.samples.size());
+  // Seconds per iteration per 1,000 elements: the inverse of the rate of thousands of elements
+  // an iteration (kIsIterationInvariantRate multiplies by iterations and divides by seconds).
   state.counters["s_per_1000_elements"] =
-      benchmark::Counter(1000.0 / elements, benchmark::Counter::kIsIterationInvariantRate |
+      benchmark::Counter(elements / 1000.0, benchmark::Counter::kIsIterationInvariantRate |
                                                 benchmark::Counter::kInvert);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <tuple>
 #include <vector>
 
@@ -92,7 +93,7 @@ struct CandidatePair {
 // likewise after the near pairs (their costs, and (r/4)² for each neighbour left); otherwise
 // the result is -1 (pairs made before a bound stops are to be discarded).
 template <class Near, class All, class F>
-double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, double radius,
+double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, double radius,
                    Near&& near_of, All&& all_of, F&& f, double bound) {
   thread_local std::vector<CandidatePair> near, contested, far;
   thread_local std::vector<char> used_output, used_exemplar;
@@ -104,10 +105,7 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
     const Neighbour& o = output[a];
     double nearest = split;
     if (o.key >= 0) {
-      near_of(a, [&](std::size_t b) {
-        const Neighbour& e = exemplar[b];
-        if (e.key != o.key) return;
-        const double c = (o.offset - e.offset).squaredNorm();
+      near_of(a, [&](std::size_t b, double c) {
         if (c < split) {
           near.push_back({c, static_cast<int>(a), static_cast<int>(b)});
           nearest = std::min(nearest, c);
@@ -118,11 +116,11 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
     if (lower >= bound) return lower;
   }
   used_output.assign(output.size(), 0);
-  used_exemplar.assign(exemplar.size(), 0);
+  used_exemplar.assign(exemplar_size, 0);
   std::size_t paired = 0;
   double near_sum = 0.0;  // the pairs' squared distances so far
-  // The greedy pass over `pairs` (grouped by output neighbour), closest first: a heap, popped
-  // only until every output neighbour in it is paired, instead of a full sort.
+  // The greedy pass over `pairs` (grouped by output neighbour), closest first, stopping once
+  // every output neighbour in it is paired.
   const auto take = [&](std::vector<CandidatePair>& pairs) {
     std::size_t open = 0;
     for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -142,7 +140,7 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
   // A pair whose two sides have no other near candidate is taken whenever the sorted greedy
   // pass reaches it and blocks nothing, so such pairs are taken first, unsorted (most pairs of a
   // good candidate are); only the contested rest is sorted.
-  referrers.assign(exemplar.size(), 0);
+  referrers.assign(exemplar_size, 0);
   for (const CandidatePair& p : near) ++referrers[static_cast<std::size_t>(p.exemplar)];
   contested.clear();
   for (std::size_t i = 0; i < near.size(); ++i) {
@@ -170,10 +168,8 @@ double greedy_core(const Neighbourhood& output, const Neighbourhood& exemplar, d
   for (std::size_t a = 0; a < output.size(); ++a) {
     const Neighbour& o = output[a];
     if (used_output[a] || o.key < 0) continue;
-    all_of(a, [&](std::size_t b) {
-      const Neighbour& e = exemplar[b];
-      if (used_exemplar[b] || e.key != o.key) return;
-      const double c = (o.offset - e.offset).squaredNorm();
+    all_of(a, [&](std::size_t b, double c) {
+      if (used_exemplar[b]) return;
       if (c >= split && c < cap) far.push_back({c, static_cast<int>(a), static_cast<int>(b)});
     });
   }
@@ -189,11 +185,15 @@ double greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, 
   const auto by_key = [](const Neighbour& a, const Neighbour& b) { return a.key < b.key; };
   const bool sorted = std::is_sorted(exemplar.begin(), exemplar.end(), by_key);
   const auto scan = [&](std::size_t a, auto&& visit) {
+    const Neighbour& o = output[a];
     auto first = exemplar.begin(), last = exemplar.end();
-    if (sorted) std::tie(first, last) = std::equal_range(first, last, output[a], by_key);
-    for (auto it = first; it != last; ++it) visit(static_cast<std::size_t>(it - exemplar.begin()));
+    if (sorted) std::tie(first, last) = std::equal_range(first, last, o, by_key);
+    for (auto it = first; it != last; ++it)
+      if (it->key == o.key)
+        visit(static_cast<std::size_t>(it - exemplar.begin()),
+              (o.offset - it->offset).squaredNorm());
   };
-  return greedy_core(output, exemplar, radius, scan, scan, f, bound);
+  return greedy_core(output, exemplar.size(), radius, scan, scan, f, bound);
 }
 
 // The pairing against an indexed neighbourhood: near partners from the grid.
@@ -206,22 +206,25 @@ double greedy_pairs(const Neighbourhood& output, const PairingNeighbourhood& exe
   const auto all = [&](std::size_t a, auto&& visit) {
     exemplar.for_each_within(output[a].key, output[a].offset, 4, visit);
   };
-  return greedy_core(output, exemplar.neighbours(), radius, near, all, f, bound);
+  return greedy_core(output, exemplar.size(), radius, near, all, f, bound);
 }
 
-template <class Exemplar>
-double distance(const Neighbourhood& output, const Exemplar& exemplar,
-                const Neighbourhood& partners, double radius, double alpha, double bound,
+// `attribute_of(b)`: the attribute of exemplar neighbour b.
+template <class Exemplar, class Attribute>
+double distance(const Neighbourhood& output, const Exemplar& exemplar, Attribute&& attribute_of,
+                double radius, double alpha, double bound,
                 std::vector<std::pair<int, int>>* pairs = nullptr) {
   double sum = 0.0;
   std::size_t paired = 0;
   if (pairs) pairs->clear();
+  const double cap = radius * radius;
   const double lower = greedy_pairs(
       output, exemplar, radius,
       [&](int a, int b, double c) {
-        sum += alpha > 0.0 ? pair_cost(output[static_cast<std::size_t>(a)],
-                                       partners[static_cast<std::size_t>(b)], radius, alpha)
-                           : c;
+        if (alpha > 0.0 && output[static_cast<std::size_t>(a)].attribute !=
+                               attribute_of(static_cast<std::size_t>(b)))
+          c = std::min(c + alpha, cap);
+        sum += c;
         ++paired;
         if (pairs) pairs->emplace_back(a, b);
       },
@@ -253,21 +256,36 @@ std::vector<std::pair<int, int>> match_neighbourhoods(const Neighbourhood& outpu
 
 double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& exemplar,
                               double radius, double alpha, double bound) {
-  return distance(output, exemplar, exemplar, radius, alpha, bound);
+  return distance(
+      output, exemplar, [&](std::size_t b) { return exemplar[b].attribute; }, radius, alpha, bound);
 }
 
 double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
                               double radius, double alpha, double bound,
                               std::vector<std::pair<int, int>>* pairs) {
-  return distance(output, exemplar, exemplar.neighbours(), radius, alpha, bound, pairs);
+  if (bound < std::numeric_limits<double>::infinity()) {
+    const double lower = exemplar.lower_bound(output, radius * radius, bound);
+    if (lower >= bound) {
+      if (pairs) pairs->clear();
+      return lower;
+    }
+  }
+  return distance(
+      output, exemplar, [&](std::size_t b) { return exemplar.attribute(b); }, radius, alpha, bound,
+      pairs);
 }
 
 // PairingNeighbourhood: the neighbours sorted by key, then by cell of a grid of side r/4 over
 // the offsets [−2r, 2r)^dim (offsets beyond fall in the border cells).
 
 PairingNeighbourhood::PairingNeighbourhood(Neighbourhood neighbours, double radius, int dimension)
-    : neighbours_(std::move(neighbours)), per_cell_(4.0 / radius), dimension_(dimension) {
+    : neighbours_(std::move(neighbours)),
+      per_cell_(4.0 / radius),
+      dimension_(dimension),
+      radius_(radius) {
   cells_ = dimension_ == 3 ? kCells * kCells * kCells : kCells * kCells;
+  if (neighbours_.size() > std::numeric_limits<Start>::max())
+    throw std::length_error("a pairing neighbourhood holds at most 65,535 neighbours");
   struct Entry {
     int key, cell;
     Neighbour neighbour;
@@ -290,14 +308,84 @@ PairingNeighbourhood::PairingNeighbourhood(Neighbourhood neighbours, double radi
     std::size_t i = first;
     for (int c = 0; c <= cells_; ++c) {
       while (i < last && entries[i].cell < c) ++i;
-      cell_start_.push_back(static_cast<int>(i));
+      cell_start_.push_back(static_cast<Start>(i));
     }
     first = last;
   }
   for (const Entry& e : entries) {
     keys_.push_back(e.key);
     neighbours_.push_back(e.neighbour);
+    xyz_.insert(xyz_.end(),
+                {e.neighbour.offset.x(), e.neighbour.offset.y(), e.neighbour.offset.z()});
+    attributes_.push_back(e.neighbour.attribute);
   }
+  build_lower_bound_grid();
+}
+
+namespace {
+
+// Cells per axis of the lower bound's grid over [−r, r): side r/8 in 2D, r/4 in 3D.
+int bound_cells(int dimension) { return dimension == 3 ? 8 : 16; }
+
+}  // namespace
+
+void PairingNeighbourhood::build_lower_bound_grid() {
+  const int per_axis = bound_cells(dimension_);
+  const int depth = dimension_ == 3 ? per_axis : 1;
+  bound_cells_ = per_axis * per_axis * depth;
+  const double side = 2.0 * radius_ / per_axis;
+  const double cap = radius_ * radius_;
+  nearest_.assign(distinct_keys_.size() * static_cast<std::size_t>(bound_cells_),
+                  static_cast<float>(cap));
+  const auto gap = [&](double x, int cell) {
+    const double low = -radius_ + cell * side, high = low + side;
+    return x < low ? low - x : x > high ? x - high : 0.0;
+  };
+  for (std::size_t k = 0; k < distinct_keys_.size(); ++k) {
+    const auto [first, last] = key_range(distinct_keys_[k]);
+    float* field = nearest_.data() + k * static_cast<std::size_t>(bound_cells_);
+    for (int cz = 0; cz < depth; ++cz)
+      for (int cy = 0; cy < per_axis; ++cy)
+        for (int cx = 0; cx < per_axis; ++cx) {
+          double best = cap;
+          for (std::size_t i = first; i < last; ++i) {
+            const double gx = gap(xyz_[3 * i], cx), gy = gap(xyz_[3 * i + 1], cy);
+            const double gz = dimension_ == 3 ? gap(xyz_[3 * i + 2], cz) : 0.0;
+            best = std::min(best, gx * gx + gy * gy + gz * gz);
+          }
+          // Rounded down, so that the float never exceeds the distance it stands for.
+          float rounded = static_cast<float>(best);
+          if (static_cast<double>(rounded) > best) rounded = std::nextafter(rounded, 0.0f);
+          field[(cz * per_axis + cy) * per_axis + cx] = rounded;
+        }
+  }
+}
+
+double PairingNeighbourhood::lower_bound(const Neighbourhood& output, double cap,
+                                         double stop) const {
+  const int per_axis = bound_cells(dimension_);
+  const double per_side = per_axis / (2.0 * radius_);
+  const auto cell = [&](double x) {
+    return static_cast<int>(std::floor((x + radius_) * per_side));
+  };
+  double sum = 0.0;
+  for (const Neighbour& o : output) {
+    const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), o.key);
+    if (o.key < 0 || k == distinct_keys_.end() || *k != o.key) {
+      sum += cap;  // no partner of its key: unpaired
+    } else {
+      const int cx = cell(o.offset.x()), cy = cell(o.offset.y());
+      const int cz = dimension_ == 3 ? cell(o.offset.z()) : 0;
+      const int depth = dimension_ == 3 ? per_axis : 1;
+      // Offsets outside the grid (beyond r) are given no bound.
+      if (cx < 0 || cx >= per_axis || cy < 0 || cy >= per_axis || cz < 0 || cz >= depth) continue;
+      const float* field = nearest_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) *
+                                                 static_cast<std::size_t>(bound_cells_);
+      sum += std::min(cap, static_cast<double>(field[(cz * per_axis + cy) * per_axis + cx]));
+    }
+    if (sum >= stop) return sum;
+  }
+  return sum;
 }
 
 int PairingNeighbourhood::axis_cell(double x) const {

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -76,37 +77,61 @@ class PairingNeighbourhood {
 
   // The index range of the neighbours of `key`.
   std::pair<std::size_t, std::size_t> key_range(int key) const;
-  // Calls visit(index) for every neighbour of `key` in the cells up to `reach` cells from
-  // `offset`'s: a superset of those within reach · r/4 of it (reach 1: the near partners; 4:
-  // every partner nearer than r).
+  // Calls visit(index, squared distance to `offset`) for every neighbour of `key` in the cells
+  // up to `reach` cells from `offset`'s: a superset of those within reach · r/4 of it (reach 1:
+  // the near partners; 4: every partner nearer than r).
   template <class F>
   void for_each_within(int key, const Vec3& offset, int reach, F&& visit) const {
     const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), key);
     if (k == distinct_keys_.end() || *k != key) return;
-    const int* start =
+    const Start* start =
         cell_start_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) * (cells_ + 1);
     const int x = axis_cell(offset.x()), y = axis_cell(offset.y());
     const int z = dimension_ == 3 ? axis_cell(offset.z()) : 0;
     const int reach_z = dimension_ == 3 ? reach : 0;
     const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, kCells - 1) + 1;
+    const double ox = offset.x(), oy = offset.y(), oz = offset.z();
     for (int cz = std::max(z - reach_z, 0); cz <= std::min(z + reach_z, kCells - 1); ++cz) {
       for (int cy = std::max(y - reach, 0); cy <= std::min(y + reach, kCells - 1); ++cy) {
         const int row = (cz * kCells + cy) * kCells;
-        for (int i = start[row + x0]; i < start[row + x1]; ++i) visit(static_cast<std::size_t>(i));
+        for (int i = start[row + x0]; i < start[row + x1]; ++i) {
+          const auto j = static_cast<std::size_t>(i);
+          const double dx = xyz_[3 * j] - ox, dy = xyz_[3 * j + 1] - oy, dz = xyz_[3 * j + 2] - oz;
+          visit(j, dx * dx + dy * dy + dz * dz);
+        }
       }
     }
   }
+  int attribute(std::size_t i) const { return attributes_[i]; }
+
+  // A lower bound of |n(o) − n(e)| for `output` against this neighbourhood, with pair costs
+  // capped at `cap`: the sum over the output neighbours of min(cap, the squared distance from
+  // the cell of a fixed grid over [−r, r)^dim holding the neighbour to the nearest neighbour of
+  // its key here). Greedy pairing gives no neighbour a partner nearer than its nearest, so the
+  // sum bounds the distance from below. The sum stops once it reaches `stop`.
+  double lower_bound(const Neighbourhood& output, double cap, double stop) const;
 
  private:
   int axis_cell(double x) const;
+  void build_lower_bound_grid();
+
+  using Start = std::uint16_t;  // neighbourhoods hold fewer than 65,536 neighbours
 
   Neighbourhood neighbours_;  // sorted by key, then cell (z, y, x)
+  // The same neighbours packed for the pairing's scans: offsets (x, y, z), attributes.
+  std::vector<double> xyz_;
+  std::vector<int> attributes_;
   std::vector<int> keys_, distinct_keys_;
   // Per distinct key, where each cell's neighbours start (cells_ + 1 entries).
-  std::vector<int> cell_start_;
+  std::vector<Start> cell_start_;
+  // Per distinct key, per cell of the bound's grid (kBoundCells per axis over [−r, r)): the
+  // squared distance from the cell to the nearest neighbour of the key, rounded down, at most r².
+  std::vector<float> nearest_;
+  int bound_cells_ = 0;
   int cells_ = 0;
   double per_cell_ = 1.0;  // 1 / the cell side
   int dimension_ = 2;
+  double radius_ = 1.0;  // r (the bound's grid covers [−r, r))
 };
 
 // The greedy pairing of Ma et al.: (index in `output`, index in `exemplar`) pairs of one key,
