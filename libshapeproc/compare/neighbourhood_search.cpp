@@ -47,6 +47,9 @@ SearchResult search(const EmExemplar& exemplar, const OutputSamples& output,
   result.match.assign(n, -1);
   result.cost.assign(n, 0.0);
   result.votes.assign(n, {});
+  if (previous.votes.size() == n)
+    for (std::size_t s = 0; s < n; ++s) result.votes[s].reserve(previous.votes[s].size() + 4);
+  result.predictions.reserve(previous.predictions.size() + n);  // about as many as the last
   std::vector<char> seen(exemplar.samples.size(), 0);
   std::vector<int> candidates;
   std::vector<std::pair<int, int>> trial, pairs;  // a candidate's pairing, the best one's

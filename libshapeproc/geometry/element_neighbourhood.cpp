@@ -54,7 +54,7 @@ Neighbourhood NeighbourhoodIndex::around(const Vec3& position, int skip) const {
     if (j == skip) return;
     const std::size_t k = static_cast<std::size_t>(j);
     const Vec3 t = domain_.minimum_image(positions_[k] - position);
-    if (t.norm() >= radius_) return;
+    if (t.squaredNorm() >= radius_ * radius_) return;
     out.push_back({t, keys_[k], j, attributes_[k]});
   });
   std::sort(out.begin(), out.end(),
@@ -92,12 +92,12 @@ struct CandidatePair {
 // nearest near candidate, else (r/4)²) reaches it, no pair is made and that sum is returned;
 // likewise after the near pairs (their costs, and (r/4)² for each neighbour left); otherwise
 // the result is -1 (pairs made before a bound stops are to be discarded).
-template <class Near, class All, class F>
+template <class Near, class All, class Floor, class F>
 double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, double radius,
-                   Near&& near_of, All&& all_of, F&& f, double bound) {
+                   Near&& near_of, All&& all_of, Floor&& floor_of, F&& f, double bound) {
   thread_local std::vector<CandidatePair> near, contested, far;
   thread_local std::vector<char> used_output, used_exemplar;
-  thread_local std::vector<int> referrers;
+  thread_local std::vector<unsigned char> referrers;  // 0, 1 or 2 (two or more)
   near.clear();
   const double cap = radius * radius, split = cap / 16.0;
   double lower = 0.0;
@@ -112,6 +112,7 @@ double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, doubl
         }
       });
     }
+    if (nearest == split) nearest = std::max(split, floor_of(a));
     lower += nearest;
     if (lower >= bound) return lower;
   }
@@ -141,7 +142,10 @@ double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, doubl
   // pass reaches it and blocks nothing, so such pairs are taken first, unsorted (most pairs of a
   // good candidate are); only the contested rest is sorted.
   referrers.assign(exemplar_size, 0);
-  for (const CandidatePair& p : near) ++referrers[static_cast<std::size_t>(p.exemplar)];
+  for (const CandidatePair& p : near) {
+    unsigned char& r = referrers[static_cast<std::size_t>(p.exemplar)];
+    r = r == 0 ? 1 : 2;
+  }
   contested.clear();
   for (std::size_t i = 0; i < near.size(); ++i) {
     const CandidatePair& p = near[i];
@@ -193,7 +197,8 @@ double greedy_pairs(const Neighbourhood& output, const Neighbourhood& exemplar, 
         visit(static_cast<std::size_t>(it - exemplar.begin()),
               (o.offset - it->offset).squaredNorm());
   };
-  return greedy_core(output, exemplar.size(), radius, scan, scan, f, bound);
+  return greedy_core(
+      output, exemplar.size(), radius, scan, scan, [](std::size_t) { return 0.0; }, f, bound);
 }
 
 // The pairing against an indexed neighbourhood: near partners from the grid.
@@ -206,7 +211,9 @@ double greedy_pairs(const Neighbourhood& output, const PairingNeighbourhood& exe
   const auto all = [&](std::size_t a, auto&& visit) {
     exemplar.for_each_within(output[a].key, output[a].offset, 4, visit);
   };
-  return greedy_core(output, exemplar.size(), radius, near, all, f, bound);
+  const double cap = radius * radius;
+  const auto floor = [&](std::size_t a) { return exemplar.nearest_bound(output[a], cap); };
+  return greedy_core(output, exemplar.size(), radius, near, all, floor, f, bound);
 }
 
 // `attribute_of(b)`: the attribute of exemplar neighbour b.
@@ -263,13 +270,6 @@ double neighbourhood_distance(const Neighbourhood& output, const Neighbourhood& 
 double neighbourhood_distance(const Neighbourhood& output, const PairingNeighbourhood& exemplar,
                               double radius, double alpha, double bound,
                               std::vector<std::pair<int, int>>* pairs) {
-  if (bound < std::numeric_limits<double>::infinity()) {
-    const double lower = exemplar.lower_bound(output, radius * radius, bound);
-    if (lower >= bound) {
-      if (pairs) pairs->clear();
-      return lower;
-    }
-  }
   return distance(
       output, exemplar, [&](std::size_t b) { return exemplar.attribute(b); }, radius, alpha, bound,
       pairs);
@@ -319,6 +319,12 @@ PairingNeighbourhood::PairingNeighbourhood(Neighbourhood neighbours, double radi
                 {e.neighbour.offset.x(), e.neighbour.offset.y(), e.neighbour.offset.z()});
     attributes_.push_back(e.neighbour.attribute);
   }
+  for (std::size_t k = 0; k < distinct_keys_.size(); ++k) {
+    if (distinct_keys_[k] < 0) continue;
+    const auto key = static_cast<std::size_t>(distinct_keys_[k]);
+    if (slots_.size() <= key) slots_.resize(key + 1, -1);
+    slots_[key] = static_cast<int>(k);
+  }
   build_lower_bound_grid();
 }
 
@@ -361,31 +367,22 @@ void PairingNeighbourhood::build_lower_bound_grid() {
   }
 }
 
-double PairingNeighbourhood::lower_bound(const Neighbourhood& output, double cap,
-                                         double stop) const {
+double PairingNeighbourhood::nearest_bound(const Neighbour& o, double cap) const {
+  const int slot = slot_of(o.key);
+  if (slot < 0) return cap;  // no partner of its key: unpaired
   const int per_axis = bound_cells(dimension_);
   const double per_side = per_axis / (2.0 * radius_);
   const auto cell = [&](double x) {
     return static_cast<int>(std::floor((x + radius_) * per_side));
   };
-  double sum = 0.0;
-  for (const Neighbour& o : output) {
-    const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), o.key);
-    if (o.key < 0 || k == distinct_keys_.end() || *k != o.key) {
-      sum += cap;  // no partner of its key: unpaired
-    } else {
-      const int cx = cell(o.offset.x()), cy = cell(o.offset.y());
-      const int cz = dimension_ == 3 ? cell(o.offset.z()) : 0;
-      const int depth = dimension_ == 3 ? per_axis : 1;
-      // Offsets outside the grid (beyond r) are given no bound.
-      if (cx < 0 || cx >= per_axis || cy < 0 || cy >= per_axis || cz < 0 || cz >= depth) continue;
-      const float* field = nearest_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) *
-                                                 static_cast<std::size_t>(bound_cells_);
-      sum += std::min(cap, static_cast<double>(field[(cz * per_axis + cy) * per_axis + cx]));
-    }
-    if (sum >= stop) return sum;
-  }
-  return sum;
+  const int cx = cell(o.offset.x()), cy = cell(o.offset.y());
+  const int cz = dimension_ == 3 ? cell(o.offset.z()) : 0;
+  const int depth = dimension_ == 3 ? per_axis : 1;
+  // Offsets outside the grid (beyond r) are given no bound.
+  if (cx < 0 || cx >= per_axis || cy < 0 || cy >= per_axis || cz < 0 || cz >= depth) return 0.0;
+  const float* field =
+      nearest_.data() + static_cast<std::size_t>(slot) * static_cast<std::size_t>(bound_cells_);
+  return std::min(cap, static_cast<double>(field[(cz * per_axis + cy) * per_axis + cx]));
 }
 
 int PairingNeighbourhood::axis_cell(double x) const {

@@ -82,10 +82,9 @@ class PairingNeighbourhood {
   // the near partners; 4: every partner nearer than r).
   template <class F>
   void for_each_within(int key, const Vec3& offset, int reach, F&& visit) const {
-    const auto k = std::lower_bound(distinct_keys_.begin(), distinct_keys_.end(), key);
-    if (k == distinct_keys_.end() || *k != key) return;
-    const Start* start =
-        cell_start_.data() + static_cast<std::size_t>(k - distinct_keys_.begin()) * (cells_ + 1);
+    const int slot = slot_of(key);
+    if (slot < 0) return;
+    const Start* start = cell_start_.data() + static_cast<std::size_t>(slot) * (cells_ + 1);
     const int x = axis_cell(offset.x()), y = axis_cell(offset.y());
     const int z = dimension_ == 3 ? axis_cell(offset.z()) : 0;
     const int reach_z = dimension_ == 3 ? reach : 0;
@@ -104,14 +103,19 @@ class PairingNeighbourhood {
   }
   int attribute(std::size_t i) const { return attributes_[i]; }
 
-  // A lower bound of |n(o) − n(e)| for `output` against this neighbourhood, with pair costs
-  // capped at `cap`: the sum over the output neighbours of min(cap, the squared distance from
-  // the cell of a fixed grid over [−r, r)^dim holding the neighbour to the nearest neighbour of
-  // its key here). Greedy pairing gives no neighbour a partner nearer than its nearest, so the
-  // sum bounds the distance from below. The sum stops once it reaches `stop`.
-  double lower_bound(const Neighbourhood& output, double cap, double stop) const;
+  // A lower bound of output neighbour o's term of eq. 1 against this neighbourhood, pair costs
+  // capped at `cap`: min(cap, the squared distance from the cell of a fixed grid over [−r, r)^dim
+  // holding o to the nearest neighbour of o's key here). Greedy pairing gives no neighbour a
+  // partner nearer than its nearest.
+  double nearest_bound(const Neighbour& o, double cap) const;
 
  private:
+  // The index of `key` among the distinct keys, -1 when no neighbour has it.
+  int slot_of(int key) const {
+    return key >= 0 && static_cast<std::size_t>(key) < slots_.size()
+               ? slots_[static_cast<std::size_t>(key)]
+               : -1;
+  }
   int axis_cell(double x) const;
   void build_lower_bound_grid();
 
@@ -122,6 +126,7 @@ class PairingNeighbourhood {
   std::vector<double> xyz_;
   std::vector<int> attributes_;
   std::vector<int> keys_, distinct_keys_;
+  std::vector<int> slots_;  // per key up to the largest: its index in distinct_keys_, or -1
   // Per distinct key, where each cell's neighbours start (cells_ + 1 entries).
   std::vector<Start> cell_start_;
   // Per distinct key, per cell of the bound's grid (kBoundCells per axis over [−r, r)): the
