@@ -47,8 +47,13 @@ FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t st
 void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
                       geometry::Boundary boundary, geometry::EdgeTreatment edge,
                       const FidelityOptions& options, FidelityReport& report) {
-  const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
+  // A fit on the stationary window is checked as it was fitted: the window inside its torus.
+  const bool stationary = fit::fitted_on_stationary_window(model);
+  const geometry::Domain window =
+      stationary ? fit::stationary_domain(exemplar, model)
+                 : geometry::Domain(exemplar.window, exemplar.dimension, boundary);
   fit::ChainsSetting setting = options.sampling;
+  if (stationary) setting.observe_region = exemplar.window;
   if (edge == geometry::EdgeTreatment::border) {
     const fit::BorderCondition border = fit::border_condition(exemplar, model);
     setting.fixed = border.fixed;

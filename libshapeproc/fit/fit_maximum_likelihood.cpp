@@ -8,6 +8,7 @@
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
 
 namespace shapeproc::fit {
 
@@ -73,14 +74,40 @@ bool starts_at_exemplar(const model::ShapeProcessModel& model) {
   return e.contains("chains_start") && e["chains_start"] == "exemplar";
 }
 
+geometry::Domain stationary_domain(const geometry::Scene& exemplar,
+                                   const model::ShapeProcessModel& model) {
+  const geometry::Domain window(exemplar.window, exemplar.dimension, geometry::Boundary::open);
+  const double margin = sample::ShapeProcessSampler(model, window, {}).reach();
+  geometry::Box3 box = exemplar.window;
+  for (int axis = 0; axis < exemplar.dimension; ++axis) {
+    box.min()[axis] -= margin;
+    box.max()[axis] += margin;
+  }
+  return geometry::Domain(box, exemplar.dimension, geometry::Boundary::torus);
+}
+
+bool fitted_on_stationary_window(const model::ShapeProcessModel& model) {
+  if (model.fit_json.empty()) return false;
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
+  if (fit.is_discarded() || !fit.contains("estimator")) return false;
+  const nlohmann::json& e = fit["estimator"];
+  return e.contains("window") && e["window"] == "stationary";
+}
+
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options) {
-  const geometry::Domain window(exemplar.window, exemplar.dimension, fit_options.boundary);
   model::ShapeProcessModel start = mple.model;
+  const bool stationary = options.stationary_window &&
+                          fit_options.boundary == geometry::Boundary::open &&
+                          fit_options.edge == geometry::EdgeTreatment::none;
+  const geometry::Domain window =
+      stationary ? stationary_domain(exemplar, start)
+                 : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
   const std::vector<double> observed = observed_statistics(exemplar, start);
   MleOptions chains = options;
-  double measure = window.measure();
+  double measure = geometry::measure(exemplar.window, exemplar.dimension);
+  if (stationary) chains.sampling.observe_region = exemplar.window;
   if (fit_options.edge == geometry::EdgeTreatment::border) {
     const BorderCondition border = border_condition(exemplar, start);
     chains.sampling.fixed = border.fixed;
@@ -157,6 +184,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   }
   record["estimator"] = {{"method", "mcmc-mle"},
                          {"start", "mple"},
+                         {"window", stationary ? "stationary" : "own"},
                          {"chains_start", at_exemplar ? "exemplar" : "empty"},
                          {"unbounded", held},
                          {"iterations", mle.iterations},

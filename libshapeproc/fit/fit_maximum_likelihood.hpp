@@ -42,8 +42,20 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 // did (its fit record's `estimator.chains_start`); false for other models.
 bool starts_at_exemplar(const model::ShapeProcessModel& model);
 
-// The MLE on the exemplar's window: open for the edge treatment none, a torus for periodic, the
-// border condition for border.
+// The stationary window (MleOptions::stationary_window, docs/fit.md): a torus holding the
+// exemplar's open window with a margin of the model's reach (the farthest two interacting
+// reference positions can be, sample::ShapeProcessSampler::reach) on every side, so that the
+// window's elements see neighbours beyond its edge as in a larger drawing.
+geometry::Domain stationary_domain(const geometry::Scene& exemplar,
+                                   const model::ShapeProcessModel& model);
+
+// Whether a fitted model's maximum-likelihood chains sampled the stationary window (its fit
+// record's `estimator.window`); false for other models.
+bool fitted_on_stationary_window(const model::ShapeProcessModel& model);
+
+// The MLE on the exemplar's window: open for the edge treatment none (or, with
+// options.stationary_window, the window seen inside stationary_domain), a torus for periodic,
+// the border condition for border.
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options);

@@ -41,6 +41,11 @@ struct MleOptions {
   // strong attraction; 0 = no penalty. Inhibition (log γ < 0) is not penalised.
   double attraction_prior_sd = 1.5;
   double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
+  // Open windows without border correction: the chains sample a torus larger than the window by
+  // the model's reach on every side, and the estimate solves E_θ[t_W(X)] = t(z) for the
+  // statistics t_W of the window's part (fit::stationary_domain, docs/fit.md): the model of a
+  // larger drawing of which the exemplar is a piece, not of the drawing cut at its edges.
+  bool stationary_window = false;
   // Called after each iteration with its number and the largest |z| of the gaps. May be empty.
   std::function<void(int iteration, double worst_z)> progress;
 };

@@ -21,9 +21,16 @@ Eigen::Map<const RowMatrix> sample_matrix(const StatisticsMoments& m) {
   return {m.samples.data(), m.observations, m.parameters};
 }
 
-// Weighted mean and covariance of the rows of `t` (weights summing to 1).
-void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::VectorXd& weights,
-                      StatisticsMoments& m) {
+Eigen::Map<const RowMatrix> density_matrix(const StatisticsMoments& m) {
+  return m.density_samples.empty()
+             ? sample_matrix(m)
+             : Eigen::Map<const RowMatrix>(m.density_samples.data(), m.observations, m.parameters);
+}
+
+// Weighted mean and covariance of the rows of `t` (weights summing to 1), and the information
+// Cov(t, u) with the density's statistics `u` (the rows of `t` themselves when `u` is null).
+void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::Map<const RowMatrix>* u,
+                      const Eigen::VectorXd& weights, StatisticsMoments& m) {
   const Eigen::VectorXd mean = t.transpose() * weights;
   const RowMatrix centred = t.rowwise() - mean.transpose();
   const double correction = 1.0 / std::max(1e-12, 1.0 - weights.squaredNorm());  // unbiased
@@ -31,6 +38,14 @@ void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::VectorX
       correction * (centred.transpose() * weights.asDiagonal() * centred);
   m.mean.assign(mean.data(), mean.data() + mean.size());
   m.covariance.assign(covariance.data(), covariance.data() + covariance.size());  // symmetric
+  if (u) {
+    const Eigen::VectorXd u_mean = u->transpose() * weights;
+    const RowMatrix u_centred = u->rowwise() - u_mean.transpose();
+    const RowMatrix cross = correction * (centred.transpose() * weights.asDiagonal() * u_centred);
+    m.information.assign(cross.data(), cross.data() + cross.size());  // row-major
+  } else {
+    m.information = m.covariance;
+  }
   // A statistic every observation holds at one value (a packed exemplar's count, never changed)
   // has that mean and no variance exactly, not sums' rounding: the estimator tells it apart.
   const Eigen::Index p = t.cols();
@@ -39,7 +54,8 @@ void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::VectorX
     m.mean[static_cast<std::size_t>(k)] = t(0, k);
     for (Eigen::Index j = 0; j < p; ++j)
       m.covariance[static_cast<std::size_t>(k * p + j)] =
-          m.covariance[static_cast<std::size_t>(j * p + k)] = 0.0;
+          m.covariance[static_cast<std::size_t>(j * p + k)] =
+              m.information[static_cast<std::size_t>(k * p + j)] = 0.0;
   }
 }
 
@@ -71,6 +87,8 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sampler_options.fixed = setting.fixed;
   sampler_options.free_region = setting.free_region;
   sampler_options.start = setting.start;
+  sampler_options.observe_region = setting.observe_region;
+  const bool windowed = !setting.observe_region.isEmpty();
   const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
   synthesis::ChainOptions chains;
   chains.chains = setting.chains;
@@ -92,8 +110,12 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
     std::vector<double> batch(p, 0.0);
     std::size_t in_batch = 0;
     for (std::size_t i = skip; i < result.observations.size(); ++i) {
-      const std::vector<double>& t = result.observations[i];
+      const std::vector<double>& observation = result.observations[i];
+      const auto window_end = observation.begin() + static_cast<std::ptrdiff_t>(p);
+      const std::vector<double> t(observation.begin(), window_end);
       m.samples.insert(m.samples.end(), t.begin(), t.end());
+      if (windowed)
+        m.density_samples.insert(m.density_samples.end(), window_end, observation.end());
       ++m.observations;
       for (std::size_t k = 0; k < p; ++k) batch[k] += t[k];
       if (++in_batch == per_batch) {
@@ -108,7 +130,8 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   core::check(m.observations >= 2, "mle",
               "too few observations: raise the steps or lower the observation interval");
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(m.observations, 1.0 / m.observations);
-  weighted_moments(sample_matrix(m), uniform, m);
+  const Eigen::Map<const RowMatrix> u = density_matrix(m);
+  weighted_moments(sample_matrix(m), windowed ? &u : nullptr, uniform, m);
   m.standard_error = batch_standard_errors(batch_means, p);
   for (std::size_t k = 0; k < p; ++k)
     if (m.covariance[k * p + k] == 0.0) m.standard_error[k] = 0.0;
@@ -154,8 +177,9 @@ StatisticsMoments reweighted(const StatisticsMoments& sample, const std::vector<
   core::check(delta.size() == static_cast<std::size_t>(sample.parameters), "mle",
               "the parameter change has the wrong size");
   const Eigen::Map<const RowMatrix> t = sample_matrix(sample);
+  const Eigen::Map<const RowMatrix> u = density_matrix(sample);
   const Eigen::Map<const Eigen::VectorXd> d(delta.data(), sample.parameters);
-  Eigen::VectorXd log_w = t * d;
+  Eigen::VectorXd log_w = u * d;  // the density's ratio exp(δ · t) at each observation
   log_w.array() -= log_w.maxCoeff();
   Eigen::VectorXd w = log_w.array().exp();
   w /= w.sum();
@@ -164,7 +188,7 @@ StatisticsMoments reweighted(const StatisticsMoments& sample, const std::vector<
   m.parameters = sample.parameters;
   m.observations = sample.observations;
   m.standard_error = sample.standard_error;
-  weighted_moments(t, w, m);
+  weighted_moments(t, sample.density_samples.empty() ? nullptr : &u, w, m);
   return m;
 }
 

@@ -29,6 +29,11 @@ struct ChainsSetting {
   // configuration. Maximum-likelihood fits start at the exemplar, a state of high density: a
   // packed exemplar is then a state the chains hold rather than one they must find.
   std::vector<geometry::Element> start;
+  // The stationary window (docs/fit.md, "Stationary window"): when set, the chains sample a
+  // domain larger than the exemplar's window, and the statistics observed are those of the
+  // elements in this region (the window) and their pairs there, t_W, while the model's density
+  // is that of the whole domain's t; empty: t of the whole domain.
+  geometry::Box3 observe_region;
 };
 
 // Observations of t(X) and their moments.
@@ -38,6 +43,12 @@ struct StatisticsMoments {
   std::vector<double> mean;            // by θ index
   std::vector<double> standard_error;  // of the mean, from batch means over the chains
   std::vector<double> covariance;      // row-major, parameters x parameters
+  // ∂E_θ[t_W]/∂θ = Cov(t_W, t), row-major (rows t_W, columns t), t the density's statistic:
+  // the covariance itself without an observed region.
+  std::vector<double> information;
+  // Without an observed region empty; with one, t of the whole domain per observation (the
+  // statistic the density exponentiates, for reweighting), row-major like `samples`.
+  std::vector<double> density_samples;
   // Per statistic, the potential scale reduction over the chains (Gelman & Rubin 1992): near 1
   // when the chains agree, large when they sit in different states (a model that holds a packed
   // exemplar in some chains and loses it in others), infinite for chains constant at different

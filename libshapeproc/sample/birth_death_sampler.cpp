@@ -233,6 +233,9 @@ class ShapeProcessSampler::Chain {
 
   int size() const { return state_.size(); }
   const std::vector<double>& statistics() const { return state_.statistics(); }
+  void statistics_in(const geometry::Box3& region, std::vector<double>& out) const {
+    state_.statistics_in(region, out);
+  }
   double log_density() const { return log_density_; }
   const MoveCounts& moves() const { return moves_; }
   std::vector<Element> elements() const { return state_.elements(); }
@@ -317,7 +320,14 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   for (;; ++step) {
     chain.step();
     if (options_.observe_every > 0 && step % options_.observe_every == 0) {
-      result.observations.push_back(chain.statistics());
+      if (options_.observe_region.isEmpty()) {
+        result.observations.push_back(chain.statistics());
+      } else {
+        std::vector<double> t;
+        chain.statistics_in(options_.observe_region, t);
+        t.insert(t.end(), chain.statistics().begin(), chain.statistics().end());
+        result.observations.push_back(std::move(t));
+      }
     }
     if (options_.trace_every > 0 && step % options_.trace_every == 0) {
       result.trace.push_back({step, chain.size(), chain.log_density()});

@@ -44,6 +44,9 @@ struct SamplerOptions {
   // Record the sufficient statistics t(x) every so many steps (0: never), for Monte Carlo
   // estimates of E_θ[t] and Cov_θ[t] (maximum-likelihood fits).
   long long observe_every = 0;
+  // When set, each observation is t of the elements in this region (and the pairs within it,
+  // Configuration::statistics_in) followed by t(x) of the whole configuration: 2 × p values.
+  geometry::Box3 observe_region;
   // Border correction (math note "Edge treatment"): elements present from the start that are
   // never removed or moved, and the region where births and shifts place elements' reference
   // positions (empty: the whole domain). The chain then samples the elements of the region given

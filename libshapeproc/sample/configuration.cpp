@@ -119,6 +119,22 @@ void Configuration::move(int slot, const Vec3& position, double local,
   link(slot, local, links);
 }
 
+void Configuration::statistics_in(const geometry::Box3& region, std::vector<double>& out) const {
+  out.assign(statistics_.size(), 0.0);
+  const auto inside = [&](int slot) {
+    return region.contains(elements_[static_cast<std::size_t>(slot)].position);
+  };
+  for (const int slot : alive_) {
+    if (!inside(slot)) continue;
+    const Element& e = elements_[static_cast<std::size_t>(slot)];
+    out[static_cast<std::size_t>(e.category)] += 1.0;
+    if (const int k = interaction_.class_statistic(e.shape); k >= 0)
+      out[static_cast<std::size_t>(k)] += 1.0;
+    for (const Link& l : links_[static_cast<std::size_t>(slot)])
+      if (l.slot > slot && inside(l.slot)) out[static_cast<std::size_t>(l.parameter)] += 1.0;
+  }
+}
+
 std::vector<Element> Configuration::elements() const {
   std::vector<Element> out;
   std::vector<int> slots = alive_;

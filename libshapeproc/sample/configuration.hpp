@@ -63,6 +63,9 @@ class Configuration {
   // index elements per category, then pairs per interaction parameter (each pair once), then
   // elements per shape class. Kept up to date by add, remove and move.
   const std::vector<double>& statistics() const { return statistics_; }
+  // The same statistics of the elements whose reference positions lie in `region` (closed), and
+  // of the pairs with both there: a window's view of the configuration (the stationary MLE's).
+  void statistics_in(const geometry::Box3& region, std::vector<double>& out) const;
 
  private:
   void link(int slot, double local, const std::vector<Link>& links);

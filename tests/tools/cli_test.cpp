@@ -665,6 +665,30 @@ TEST(CliFit, MaximumLikelihoodMatchesTheExemplarsCount) {
   EXPECT_LE(std::abs(b_estimator["z"][0].get<double>()), b_estimator["tolerance"].get<double>());
 }
 
+// The stationary window: the record says so, the window's count is matched, `fidelity` checks
+// the model the way it was fitted, and the pseudo-likelihood alone refuses it.
+TEST(CliFit, AStationaryWindowIsFittedAndCheckedAsAPieceOfALargerDrawing) {
+  const testing::TempDir dir;
+  const std::string model = dir.file("s.json").string();
+  const Result r = run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "16", "--edge",
+                            "stationary", "-o", model, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json e = nlohmann::json::parse(testing::read_file(model))["fit"]["estimator"];
+  EXPECT_EQ(e["window"], "stationary");
+  EXPECT_TRUE(e["converged"].get<bool>());
+  EXPECT_EQ(e["observed"][0], 30.0);
+  EXPECT_LE(std::abs(e["z"][0].get<double>()), e["tolerance"].get<double>());
+  const Result checked = run_cli({"fidelity", data("svg/dots-random.svg"), "--model", model,
+                                  "--edge", "stationary", "--chains", "10", "--quiet"});
+  ASSERT_EQ(checked.code, 0) << checked.err;
+  EXPECT_NE(checked.out.find("own window, 10 chains"), std::string::npos) << checked.out;
+  const Result refused = run_cli({"fit", data("svg/dots-random.svg"), "--edge", "stationary",
+                                  "--estimator", "mpl", "-o", dir.file("m.json").string()});
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--edge stationary"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.json")));
+}
+
 TEST(CliCompare, EveryMethodOnOnePageWithVerdictsAndTimes) {
   const testing::TempDir dir;
   const std::filesystem::path page = dir.file("compare");

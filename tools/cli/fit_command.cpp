@@ -163,9 +163,10 @@ void FitFlags::add_to(CLI::App& command) {
   q->excludes(t);
   command
       .add_option("--edge", edge,
-                  "edge treatment: none, periodic or border; auto: periodic for a --tile, else "
+                  "edge treatment: none, periodic, border or stationary (maximum likelihood of "
+                  "the window as a piece of a larger drawing); auto: periodic for a --tile, else "
                   "none")
-      ->check(CLI::IsMember({"auto", "none", "periodic", "border"}))
+      ->check(CLI::IsMember({"auto", "none", "periodic", "border", "stationary"}))
       ->capture_default_str();
   add_measurement_kind_options(command, distance, direction);
   command
@@ -213,6 +214,7 @@ fit::MleOptions FitFlags::mle_options() const {
   o.sampling.chains = mle_chains;
   o.sampling.steps = mle_steps;
   o.sampling.seed = mle_seed;
+  o.stationary_window = edge == "stationary";
   return o;
 }
 
@@ -224,6 +226,8 @@ std::string FitFlags::edge_for(const ReaderFlags& reader) const {
 fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   fit::FitOptions o;
   const std::string edge = edge_for(reader);
+  if (edge == "stationary" && estimator != "mle")
+    throw core::UsageError("--edge stationary is a maximum-likelihood fit: use --estimator mle");
   o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");

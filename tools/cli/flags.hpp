@@ -25,7 +25,8 @@ struct FitFlags {
   int directions = 0;
   std::string quantiles = "0,0.1,0.2";
   std::string thresholds;
-  std::string edge = "auto";  // none, periodic or border; auto: periodic for a --tile, else none
+  std::string edge =
+      "auto";  // none, periodic, border or stationary; auto: periodic for a --tile, else none
   std::string distance = "shape";
   std::string direction = "gravitation";
   int quadrature = 0;
