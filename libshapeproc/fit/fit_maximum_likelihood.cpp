@@ -66,12 +66,21 @@ bool packed_exemplar(const model::ShapeProcessModel& mple) {
   return false;
 }
 
-bool starts_at_exemplar(const model::ShapeProcessModel& model) {
+namespace {
+
+// Whether the model's fit record holds `key` with `value` in its maximum-likelihood estimator.
+bool estimator_says(const model::ShapeProcessModel& model, const char* key, const char* value) {
   if (model.fit_json.empty()) return false;
   const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
   if (fit.is_discarded() || !fit.contains("estimator")) return false;
   const nlohmann::json& e = fit["estimator"];
-  return e.contains("chains_start") && e["chains_start"] == "exemplar";
+  return e.contains(key) && e[key] == value;
+}
+
+}  // namespace
+
+bool starts_at_exemplar(const model::ShapeProcessModel& model) {
+  return estimator_says(model, "chains_start", "exemplar");
 }
 
 geometry::Domain stationary_domain(const geometry::Scene& exemplar,
@@ -87,11 +96,7 @@ geometry::Domain stationary_domain(const geometry::Scene& exemplar,
 }
 
 bool fitted_on_stationary_window(const model::ShapeProcessModel& model) {
-  if (model.fit_json.empty()) return false;
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
-  if (fit.is_discarded() || !fit.contains("estimator")) return false;
-  const nlohmann::json& e = fit["estimator"];
-  return e.contains("window") && e["window"] == "stationary";
+  return estimator_says(model, "window", "stationary");
 }
 
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
