@@ -7,9 +7,9 @@
 # Columns: elements of the exemplar; largest |z| of the element counts (categories and shape
 # classes) and of the pair counts, 50 chains on the exemplar's own window, in standard errors that
 # add the fit's own Monte Carlo error (bands the attraction prior holds down are left out and
-# counted as "held"); density of an output
-# of 2 x 2 exemplars (torus) against the exemplar's; colliding pairs in the exemplar / the output;
-# p-value of the chi-square test of the output's shape classes (their number in brackets).
+# counted as "held"); mean density ± its standard error of 4 outputs (--outputs) of 2 x 2
+# exemplars (torus) against the exemplar's; colliding pairs in the exemplar / all outputs;
+# p-value of the chi-square test of the outputs' pooled shape classes (their number in brackets).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -lt 1 ] || [ ! -d "$1" ]; then
@@ -19,7 +19,7 @@ fi
 dir=$1
 shift
 shapeproc=${SHAPEPROC:-./build/tools/shapeproc}
-echo "| exemplar | elements | counts max abs(z) | pairs max abs(z) | density ratio | collisions exemplar / output | class chi-square p (classes) |"
+echo "| exemplar | elements | counts max abs(z) | pairs max abs(z) | density ratio (mean ± se) | collisions exemplar / outputs | class chi-square p (classes) |"
 echo "|---|---|---|---|---|---|---|"
 for file in "$dir"/*.svg "$dir"/*.obj "$dir"/*.csv; do
   [ -e "$file" ] || continue

@@ -13,6 +13,7 @@
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "libshapeproc/synthesis/run_chains.hpp"
 
 namespace shapeproc::evaluation {
 
@@ -98,7 +99,7 @@ int colliding_pairs(const geometry::Scene& scene, geometry::Boundary boundary) {
       metrics::compute_statistics(scene, o, core::Random(1)).collisions.pairs.size());
 }
 
-// 2. A larger output: density, collisions, shape-class mix.
+// 2. Larger outputs: density, collisions, shape-class mix.
 void check_output(const geometry::Scene& exemplar, const model::ShapeProcessModel& model,
                   geometry::Boundary boundary, const FidelityOptions& options,
                   FidelityReport& report) {
@@ -106,30 +107,50 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
   for (int axis = 0; axis < exemplar.dimension; ++axis)
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
-  core::Random random(options.sampling.seed);
   sample::SamplerOptions start;  // as `synthesize` starts: a packed exemplar repeated, else empty
   if (fit::starts_at_exemplar(model)) start.start = geometry::tile_over(exemplar, domain.box());
-  const sample::SampleResult output = sample::sample_shape_process(model, domain, start, random);
-  report.output_elements = static_cast<int>(output.scene.elements.size());
-  const double exemplar_measure = geometry::measure(exemplar.window, exemplar.dimension);
-  report.density_ratio =
-      (report.output_elements / domain.measure()) / (report.exemplar_elements / exemplar_measure);
+  const sample::ShapeProcessSampler sampler(model, domain, start);
+  synthesis::ChainOptions chains;
+  chains.chains = options.outputs;
+  chains.threads = options.sampling.threads;
+  chains.seed = options.sampling.seed;
+  const std::vector<synthesis::SynthesisResult> outputs = synthesis::run_chains(sampler, chains);
+
+  const double exemplar_density =
+      report.exemplar_elements / geometry::measure(exemplar.window, exemplar.dimension);
+  const std::size_t classes = model.shape_classes.size();
+  std::vector<double> in_output(classes, 0.0), ratios;
+  double total = 0.0;
+  for (const synthesis::SynthesisResult& output : outputs) {
+    const std::vector<geometry::Element>& elements = output.scene.elements;
+    ratios.push_back(static_cast<double>(elements.size()) / domain.measure() / exemplar_density);
+    total += static_cast<double>(elements.size());
+    report.output_collisions += colliding_pairs(output.scene, geometry::Boundary::torus);
+    for (const geometry::Element& e : elements)
+      if (classes > 0)
+        in_output[static_cast<std::size_t>(
+            model.shapes[static_cast<std::size_t>(e.shape)].shape_class)] += 1;
+  }
+  report.outputs = static_cast<int>(outputs.size());
+  report.output_elements = total / static_cast<double>(outputs.size());
+  double mean = 0.0, spread = 0.0;
+  for (double r : ratios) mean += r / static_cast<double>(ratios.size());
+  for (double r : ratios) spread += (r - mean) * (r - mean);
+  report.density_ratio = mean;
+  report.density_ratio_error = ratios.size() > 1
+                                   ? std::sqrt(spread / static_cast<double>(ratios.size() - 1) /
+                                               static_cast<double>(ratios.size()))
+                                   : 0.0;
   report.exemplar_collisions = colliding_pairs(exemplar, boundary);
-  report.output_collisions = colliding_pairs(output.scene, geometry::Boundary::torus);
 
   report.class_p_value = std::numeric_limits<double>::quiet_NaN();
-  const std::size_t classes = model.shape_classes.size();
-  if (classes < 2 || report.output_elements == 0) return;
-  std::vector<double> in_exemplar(classes, 0.0), in_output(classes, 0.0);
+  if (classes < 2 || total == 0) return;
+  std::vector<double> in_exemplar(classes, 0.0);
   for (const geometry::Element& e : exemplar.elements)
     in_exemplar[static_cast<std::size_t>(
         model.shapes[static_cast<std::size_t>(e.shape)].shape_class)] += 1;
-  for (const geometry::Element& e : output.scene.elements)
-    in_output[static_cast<std::size_t>(
-        model.shapes[static_cast<std::size_t>(e.shape)].shape_class)] += 1;
   for (std::size_t k = 0; k < classes; ++k) {
-    const double expected =
-        report.output_elements * in_exemplar[k] / static_cast<double>(report.exemplar_elements);
+    const double expected = total * in_exemplar[k] / static_cast<double>(report.exemplar_elements);
     if (expected > 0) report.class_chi_square += std::pow(in_output[k] - expected, 2) / expected;
   }
   report.class_degrees = static_cast<int>(classes) - 1;
@@ -149,6 +170,8 @@ FidelityReport check_fidelity(const geometry::Scene& exemplar,
                               geometry::EdgeTreatment edge, const FidelityOptions& options) {
   core::check(options.sampling.chains >= 2, "fidelity", "at least two chains are needed");
   core::check_positive("fidelity", "the output scale", options.scale);
+  core::check(options.outputs >= 1 && options.outputs <= 1000, "fidelity",
+              "the outputs must be 1 to 1000");
   FidelityReport report;
   report.exemplar_elements = static_cast<int>(exemplar.elements.size());
   core::check(report.exemplar_elements > 0, "fidelity", "the exemplar has no element");

@@ -3,9 +3,10 @@
 //   every
 //      sufficient statistic (elements per category, pairs per band, elements per shape class)
 //      against the exemplar's, in standard errors of that mean (batch means over the chains).
-//   2. One output of `scale` times each side on a torus, sampled to stationarity: its density
-//      against the exemplar's, its colliding pairs (shape distance 0), and a chi-square test of
-//      its shape-class counts against the exemplar's class shares.
+//   2. `outputs` outputs of `scale` times each side on a torus, sampled to stationarity: their
+//      mean density against the exemplar's with its standard error (one output of an attractive
+//      model varies by far more than 10%), their colliding pairs (shape distance 0), and a
+//      chi-square test of their pooled shape-class counts against the exemplar's class shares.
 // scripts/fidelity.sh runs it over a folder (`shapeproc fidelity`).
 #pragma once
 
@@ -34,6 +35,7 @@ struct FidelityOptions {
   // edge treatment).
   fit::ChainsSetting sampling = fidelity_chains();
   double scale = 2.0;  // the output's sides, in exemplar sides
+  int outputs = 4;     // independent outputs (chains of run_chains, seeded from sampling.seed)
 };
 
 struct StatisticCheck {
@@ -52,9 +54,13 @@ struct FidelityReport {
   std::vector<StatisticCheck> own_window;
   double worst_count_z = 0.0, worst_pair_z = 0.0;  // largest |z| of each kind
   int penalised = 0;                               // bands the attraction prior holds down
-  int exemplar_elements = 0, output_elements = 0;
-  double density_ratio = 0.0;                          // output density / exemplar density
-  int exemplar_collisions = 0, output_collisions = 0;  // colliding pairs
+  int exemplar_elements = 0;
+  int outputs = 0;
+  double output_elements = 0.0;  // the outputs' mean element count
+  // The outputs' mean density over the exemplar's, and the standard error of that mean (0 for
+  // one output).
+  double density_ratio = 0.0, density_ratio_error = 0.0;
+  int exemplar_collisions = 0, output_collisions = 0;  // colliding pairs (all outputs')
   // Chi-square test of the output's class counts against the exemplar's shares (NaN p-value
   // without shape classes).
   double class_chi_square = 0.0, class_p_value = 0.0;

@@ -38,11 +38,23 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
   ASSERT_EQ(r.own_window.size(), 1u);
   EXPECT_EQ(r.own_window[0].exemplar, 60.0);
   EXPECT_LT(r.worst_count_z, 4.0);
-  // The output has 4 exemplars' area: 240 expected, sd √240.
-  EXPECT_NEAR(r.output_elements, 240.0, 4 * std::sqrt(240.0));
+  // Each output has 4 exemplars' area: 240 expected, sd √240; their mean of 4 within 4 of its
+  // standard deviations √240 / 2, and the reported error near that (a standard deviation from 4
+  // outputs is only good to about 40%).
+  EXPECT_EQ(r.outputs, 4);
+  EXPECT_NEAR(r.output_elements, 240.0, 4 * std::sqrt(240.0) / 2);
   EXPECT_NEAR(r.density_ratio, r.output_elements / 240.0, 1e-12);
+  EXPECT_GT(r.density_ratio_error, 0.0);
+  EXPECT_LT(r.density_ratio_error, 3 * std::sqrt(240.0) / 2 / 240.0);
   EXPECT_EQ(r.output_collisions, 0);
   EXPECT_TRUE(std::isnan(r.class_p_value));
+  // One output: the first of the four (chain 0 keeps the seed), with no error.
+  options.outputs = 1;
+  const FidelityReport one = check_fidelity(exemplar, model, geometry::Boundary::open,
+                                            geometry::EdgeTreatment::none, options);
+  EXPECT_EQ(one.outputs, 1);
+  EXPECT_EQ(one.density_ratio_error, 0.0);
+  EXPECT_NEAR(one.output_elements, 240.0, 4 * std::sqrt(240.0));
 }
 
 }  // namespace

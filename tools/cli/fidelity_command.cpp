@@ -34,8 +34,9 @@ void print_row(const std::string& name, const evaluation::FidelityReport& r,
                const model::ShapeProcessModel& model, std::ostream& out) {
   out << "| " << name << " | " << r.exemplar_elements << " | " << g(r.worst_count_z) << " | "
       << g(r.worst_pair_z) << (r.penalised > 0 ? " (" + std::to_string(r.penalised) + " held)" : "")
-      << " | " << g(r.density_ratio) << " | " << r.exemplar_collisions << " / "
-      << r.output_collisions << " | "
+      << " | " << g(r.density_ratio)
+      << (r.outputs > 1 ? " ± " + g(r.density_ratio_error, 2) : std::string()) << " | "
+      << r.exemplar_collisions << " / " << r.output_collisions << " | "
       << (std::isnan(r.class_p_value)
               ? std::string("-")
               : g(r.class_p_value) + " (" + std::to_string(model.shape_classes.size()) + ")")
@@ -55,9 +56,11 @@ void print_report(const evaluation::FidelityReport& r, const evaluation::Fidelit
         << '\n';
   }
   out << "largest |z|: counts " << g(r.worst_count_z) << ", pairs " << g(r.worst_pair_z) << '\n';
-  out << "output " << g(o.scale) << " x each side (torus): " << r.output_elements
-      << " elements, density x" << g(r.density_ratio) << " the exemplar's; colliding pairs "
-      << r.output_collisions << " (exemplar " << r.exemplar_collisions << ")\n";
+  out << r.outputs << " output(s) " << g(o.scale)
+      << " x each side (torus): " << g(r.output_elements, 4) << " elements on average, density x"
+      << g(r.density_ratio) << (r.outputs > 1 ? " ± " + g(r.density_ratio_error, 2) : std::string())
+      << " the exemplar's; colliding pairs " << r.output_collisions << " (exemplar "
+      << r.exemplar_collisions << ")\n";
   if (!std::isnan(r.class_p_value))
     out << "shape classes: chi-square " << g(r.class_chi_square) << " on " << r.class_degrees
         << " degree(s) of freedom, p = " << g(r.class_p_value) << '\n';
@@ -109,6 +112,11 @@ void add_fidelity_command(CLI::App& app, Action& action,
   command->add_option("--seed", args->options.sampling.seed, "random seed")->capture_default_str();
   command->add_option("--scale", args->options.scale, "the output's sides, in exemplar sides")
       ->check(positive_number())
+      ->capture_default_str();
+  command
+      ->add_option("--outputs", args->options.outputs,
+                   "independent outputs whose mean density is checked")
+      ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_flag("--row", args->row,
                     "print one row of the fidelity table (scripts/fidelity.sh)");
