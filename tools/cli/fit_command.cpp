@@ -225,14 +225,14 @@ std::string FitFlags::edge_for(const ReaderFlags& reader) const {
 
 fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   fit::FitOptions o;
-  const std::string edge = edge_for(reader);
-  if (edge == "stationary" && estimator != "mle")
+  const std::string treatment = edge_for(reader);
+  if (treatment == "stationary" && estimator != "mle")
     throw core::UsageError("--edge stationary is a maximum-likelihood fit: use --estimator mle");
   o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");
   if (!thresholds.empty()) o.thresholds = number_list(thresholds, "--thresholds");
-  o.boundary = edge == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
-  o.edge = edge == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none;
+  o.boundary = treatment == "periodic" ? geometry::Boundary::torus : geometry::Boundary::open;
+  o.edge = treatment == "border" ? geometry::EdgeTreatment::border : geometry::EdgeTreatment::none;
   o.measurement.distance = distance_kind(distance);
   o.measurement.direction = direction_kind(direction);
   o.quadrature = quadrature;
