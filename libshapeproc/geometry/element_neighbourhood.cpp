@@ -359,7 +359,10 @@ void PairingNeighbourhood::build_lower_bound_grid() {
             const double gz = dimension_ == 3 ? gap(xyz_[3 * i + 2], cz) : 0.0;
             best = std::min(best, gx * gx + gy * gy + gz * gz);
           }
-          // Rounded down, so that the float never exceeds the distance it stands for.
+          // Lowered by a hair, for a query the cell's floor assigns here though rounding puts it
+          // just outside the cell's box, then rounded down, so that the float never exceeds the
+          // distance it stands for.
+          best = std::max(0.0, best * (1.0 - 1e-9) - 1e-12 * cap);
           float rounded = static_cast<float>(best);
           if (static_cast<double>(rounded) > best) rounded = std::nextafter(rounded, 0.0f);
           field[(cz * per_axis + cy) * per_axis + cx] = rounded;

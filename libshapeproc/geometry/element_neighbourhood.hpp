@@ -63,7 +63,8 @@ class NeighbourhoodIndex {
 // sorted by key, then by cell of a grid of side r/4 over the offsets (row by row, column by
 // column), with where each cell's neighbours start, so that the partners an output neighbour may
 // pair with first (those nearer than r/4) are one contiguous range per row of cells instead of a
-// scan. Pairings against it equal those against its neighbours.
+// scan, and with a coarser grid of lower bounds (nearest_bound) that lets a search drop a
+// candidate before pairing it. Pairings against it equal those against its neighbours.
 class PairingNeighbourhood {
  public:
   static constexpr int kCells = 16;  // per axis, over [−2r, 2r)
@@ -129,8 +130,9 @@ class PairingNeighbourhood {
   std::vector<int> slots_;  // per key up to the largest: its index in distinct_keys_, or -1
   // Per distinct key, where each cell's neighbours start (cells_ + 1 entries).
   std::vector<Start> cell_start_;
-  // Per distinct key, per cell of the bound's grid (kBoundCells per axis over [−r, r)): the
-  // squared distance from the cell to the nearest neighbour of the key, rounded down, at most r².
+  // Per distinct key, per cell of the bound's grid over [−r, r) (16 cells an axis in 2D, 8 in
+  // 3D): the squared distance from the cell to the nearest neighbour of the key, rounded down to
+  // a float, at most r².
   std::vector<float> nearest_;
   int bound_cells_ = 0;
   int cells_ = 0;
