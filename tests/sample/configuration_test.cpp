@@ -1,0 +1,38 @@
+#include "libshapeproc/sample/configuration.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/point_model.hpp"
+
+namespace shapeproc::sample {
+namespace {
+
+// Four points under one isotropic interaction with bands [0, 3) and [3, 6): A–B 2 apart (band 1),
+// B–C 5, A–D 4, B–D √20 (band 2), the others beyond 6. The window [0, 10]² holds A, B and D:
+// its statistics count them and their three pairs, not C nor the pair B–C.
+TEST(Configuration, AWindowsStatisticsCountItsElementsAndThePairsWithin) {
+  const model::ShapeProcessModel m = testing::point_model(0.01, {0.0, 3.0, 6.0}, {0.5, 0.5});
+  const model::Interaction interaction(m);
+  geometry::Scene space;
+  space.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(20, 20, 0));
+  space.categories.push_back({"points"});
+  space.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  const geometry::PairMeasurer measurer(space, m.measurement_options(false));
+  const geometry::Domain domain(space.window, 2, geometry::Boundary::open);
+  Configuration c(interaction, measurer, domain, 6.0);
+  std::vector<Link> links;
+  for (const Vec3& p : {Vec3(5, 5, 0), Vec3(7, 5, 0), Vec3(12, 5, 0), Vec3(5, 9, 0)}) {
+    const Element e{0, 0, p};
+    c.log_interaction(e, -1, links);
+    c.add(e, 0.0, links);
+  }
+  EXPECT_EQ(c.statistics(), (std::vector<double>{4, 1, 3}));
+  std::vector<double> window;
+  c.statistics_in(geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(10, 10, 0)), window);
+  EXPECT_EQ(window, (std::vector<double>{3, 1, 2}));
+  c.statistics_in(geometry::Box3(geometry::Vec3(6, 0, 0), geometry::Vec3(20, 20, 0)), window);
+  EXPECT_EQ(window, (std::vector<double>{2, 0, 1}));  // B and C, and their pair
+}
+
+}  // namespace
+}  // namespace shapeproc::sample
