@@ -11,6 +11,16 @@
 namespace shapeproc::fit {
 namespace {
 
+// Two chains of 2,000 steps of burn-in, then `steps` observed every `every`.
+ChainsSetting two_chains(long long steps, long long every) {
+  ChainsSetting setting;
+  setting.chains = 2;
+  setting.burn_in = 2000;
+  setting.steps = steps;
+  setting.observe_every = every;
+  return setting;
+}
+
 TEST(MaximumLikelihood, PoissonIsClosedForm) {
   const geometry::Domain window = geometry::Domain::from_sizes({100, 50}, geometry::Boundary::open);
   const MleResult mle =
@@ -131,11 +141,7 @@ TEST(MaximumLikelihood, PotentialScaleReductionTellsChainsThatDisagree) {
 // effective sample size shrinks as δ grows.
 TEST(MaximumLikelihood, ReweightingMovesAPoissonMeanByExpDelta) {
   const geometry::Domain window = geometry::Domain::from_sizes({10, 10}, geometry::Boundary::torus);
-  ChainsSetting setting;
-  setting.chains = 2;
-  setting.burn_in = 2000;
-  setting.steps = 60000;
-  setting.observe_every = 50;
+  const ChainsSetting setting = two_chains(60000, 50);
   const StatisticsMoments sample = statistics_moments(testing::point_model(0.5), window, setting);
   EXPECT_NEAR(sample.mean[0], 50.0, 4 * sample.standard_error[0]);
   double share = 0.0;
@@ -172,11 +178,7 @@ TEST(StationaryWindow, PoissonIsClosedFormOnTheWindow) {
 // variance from some 1,200 nearly independent observations: √(2/1200) ≈ 4%).
 TEST(StationaryWindow, AWindowsStatisticsAndTheirDerivative) {
   const geometry::Domain torus = geometry::Domain::from_sizes({20, 20}, geometry::Boundary::torus);
-  ChainsSetting setting;
-  setting.chains = 2;
-  setting.burn_in = 2000;
-  setting.steps = 120000;
-  setting.observe_every = 200;
+  ChainsSetting setting = two_chains(120000, 200);
   setting.observe_region = geometry::Box3(geometry::Vec3(5, 5, 0), geometry::Vec3(15, 15, 0));
   const StatisticsMoments m = statistics_moments(testing::point_model(0.5), torus, setting);
   ASSERT_EQ(m.density_samples.size(), m.samples.size());
