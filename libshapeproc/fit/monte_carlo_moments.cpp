@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "libshapeproc/core/assert.hpp"
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -111,11 +112,11 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
     std::size_t in_batch = 0;
     for (std::size_t i = skip; i < result.observations.size(); ++i) {
       const std::vector<double>& observation = result.observations[i];
-      const auto window_end = observation.begin() + static_cast<std::ptrdiff_t>(p);
-      const std::vector<double> t(observation.begin(), window_end);
-      m.samples.insert(m.samples.end(), t.begin(), t.end());
-      if (windowed)
-        m.density_samples.insert(m.density_samples.end(), window_end, observation.end());
+      SHAPEPROC_ASSERT(observation.size() == (windowed ? 2 : 1) * p,
+                       "an observation holds t (t_W, then t, with an observed region)");
+      const double* t = observation.data();  // t_W first when windowed, then the whole t
+      m.samples.insert(m.samples.end(), t, t + p);
+      if (windowed) m.density_samples.insert(m.density_samples.end(), t + p, t + 2 * p);
       ++m.observations;
       for (std::size_t k = 0; k < p; ++k) batch[k] += t[k];
       if (++in_batch == per_batch) {

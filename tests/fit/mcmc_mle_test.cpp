@@ -21,6 +21,17 @@ ChainsSetting two_chains(long long steps, long long every) {
   return setting;
 }
 
+// The MLE's chains for the Strauss-type models below: two of 10,000 steps of burn-in, then 40,000
+// observed every 50.
+MleOptions strauss_fit() {
+  MleOptions options;
+  options.sampling.chains = 2;
+  options.sampling.burn_in = 10000;
+  options.sampling.steps = 40000;
+  options.sampling.observe_every = 50;
+  return options;
+}
+
 TEST(MaximumLikelihood, PoissonIsClosedForm) {
   const geometry::Domain window = geometry::Domain::from_sizes({100, 50}, geometry::Boundary::open);
   const MleResult mle =
@@ -53,11 +64,7 @@ TEST(MaximumLikelihood, RecoversAPiecewiseStraussModelOnATorus) {
   model::ShapeProcessModel start = truth;
   start.categories[0].beta = observed[0] / window.measure();
   start.interactions[0].axes[0].gammas = {1.0, 1.0};
-  MleOptions options;
-  options.sampling.chains = 2;
-  options.sampling.burn_in = 10000;
-  options.sampling.steps = 40000;
-  options.sampling.observe_every = 50;
+  MleOptions options = strauss_fit();
   const MleResult mle = maximise_likelihood(start, window, observed, options);
   ASSERT_TRUE(mle.converged) << mle.iterations << " iterations";
   const std::vector<double> true_theta = {std::log(0.03), std::log(0.3), std::log(0.7)};
@@ -217,11 +224,7 @@ TEST(StationaryWindow, RecoversAStraussModelFromAPieceOfALargerPattern) {
   model::ShapeProcessModel start = truth;
   start.categories[0].beta = observed[0] / 4900.0;
   start.interactions[0].axes[0].gammas = {1.0, 1.0};
-  MleOptions options;
-  options.sampling.chains = 2;
-  options.sampling.burn_in = 10000;
-  options.sampling.steps = 40000;
-  options.sampling.observe_every = 50;
+  MleOptions options = strauss_fit();
   options.sampling.observe_region = window;
   const geometry::Domain torus(
       geometry::Box3(geometry::Vec3(34, 34, 0), geometry::Vec3(116, 116, 0)), 2,
