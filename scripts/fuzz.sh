@@ -28,7 +28,7 @@ seed() {  # seed TARGET PREFIX_BYTE FILES...
     { [ -n "$prefix" ] && printf '%b' "$prefix"; cat "$f"; } > "$dir/seed-$(basename "$f")"
   done
 }
-seed svg '\x00' data/svg/*.svg data/third-party/hero-patterns/*.svg
+seed svg '\x00' data/svg/*.svg data/third-party/hero-patterns/*.svg tests/fuzz/seeds/*.svg
 seed svg '\x05' data/third-party/hero-patterns/*.svg
 seed model '' tests/fuzz/seeds/*.json
 seed csv '\x01' data/points/*.csv tests/fuzz/seeds/*.csv

@@ -155,6 +155,32 @@ TEST(VisualInk, CapsAndClosedOutlines) {
   EXPECT_EQ(read(frame, false, true).elements.size(), 2u);
 }
 
+TEST(VisualInk, AStrokeOfTheFuzzersRescalingFindingKeepsEveryRing) {
+  // The fuzzer's input (tests/fuzz/seeds/svg-boost-rescale-overflow.svg): a stroked path of rings
+  // whose arcs reach 6666666666 beside coordinates near 100. Boost.Geometry's overlays rescaled
+  // them to 64-bit integers and overflowed: UBSan in the sanitizer build, and in Release an ink
+  // outline of 53 rings with one lost. On doubles every ring of the outline stays.
+  const std::string d =
+      "M116.12 26.694a9 9 0 1 1 0 18a9 9 0 1 1 0 -108zM116.12 30.294a5.4 5.4 0 1 0 0 10.8a5.4 5"
+      ".4 0 1 0 0 -10.8zM116.12 33.194a2.5 2.5 0 1 1 0 5a2.5 2.5 0 1 0 0 -5zM171.134 85.646a9 9"
+      " 0 1 1 0 18a9 9 0 1 1 0 -18zM171.134 89.246a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8zM"
+      "46.363 128.784a9 9 0 1 1 0 18a9 9 0 1 1 0 -18zM46.363 132.384a5.4 5.4 0 1 0 0 10.8a5.488"
+      "8888888888888888888888888888888888888888888888888888888888888888888888888888888888888888"
+      "88888 5.4 0 1 0 0 -10.8zM82.719 148.652a12 12 0 1 1 0 24a12 12 0 1 1 0 -24zM82.719 153.4"
+      "52a7.2 7.2 0 1 0 0 14.4a7.2 7.2 0 1 0 0 -14.4zM82.719 158.152a2.5 2.5 0 1 1 0 5a2.5 2.5 "
+      "0 1 1 06666666666 -5zM123.466 155.04a9 9 0 1 1 0 18a9 9 0 1 1 0 -19zM123.466 158.64a0.4 "
+      "5.4 0 1 0 0 10.8a5.4 6.4 0 1 0 0 -10.8zM140.53 116.797a12 12 0 1 1 0 2432a9 9 0 1 1 0 18"
+      "a9 9 0 1 1 0 -18zM162.014 180.032a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8zM162.014 18"
+      "2.932a2.5 2.5 0 1 1 0 5a2.5 2.5 0 1 1 0 -5zM134.559 60.792a9 9 0 1 1 0 18a9 9 0 1 1 0 -1"
+      "8zM134.559 64.392a5.4 5.4 0 1 0 0 10.8a5.4 5.4 0 1 0 0 -10.8z";
+  const Scene s =
+      read(R"(<path stroke="#000" fill="#2f855a" d=")" + d + R"("/>)", false, false, "0 0 200 200");
+  ASSERT_EQ(s.elements.size(), 2u);
+  std::size_t rings = 0;
+  for (const geometry::Shape& shape : s.shapes) rings += geometry::path_count(shape);
+  EXPECT_EQ(rings, 54u);
+}
+
 TEST(VisualElements, ReaderNotesWhenSubpathsAndElementsDisagree) {
   // One path of 8 dots inside a big ring's hole: read as seen, one element from 10 subpaths.
   std::string dots;
