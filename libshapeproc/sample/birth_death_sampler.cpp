@@ -175,7 +175,15 @@ class ShapeProcessSampler::Chain {
     for (int axis = 0; axis < s_.model_.dimension; ++axis)
       xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
     xi.category = static_cast<int>(random_.index(s_.shapes_of_.size()));
-    xi.shape = draw_shape(xi.category);
+    const auto& shapes = s_.shapes_of_[static_cast<std::size_t>(xi.category)];
+    const auto& cumulative = s_.shape_cumulative_[static_cast<std::size_t>(xi.category)];
+    if (cumulative.empty()) {
+      xi.shape = shapes[random_.index(shapes.size())];
+    } else {  // shapes in proportion to their class's weight (the birth ratio is unchanged)
+      const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), random_.uniform());
+      xi.shape =
+          shapes[std::min(shapes.size() - 1, static_cast<std::size_t>(at - cumulative.begin()))];
+    }
     const double log_lambda =
         s_.log_beta_[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
     const double log_ratio = log_lambda + s_.log_measure_categories_ - std::log(n + 1.0);
@@ -203,20 +211,10 @@ class ShapeProcessSampler::Chain {
     }
   }
 
-  // A shift, or for an element of a category with several shapes, with probability 1/2 a shape
-  // switch.
   void propose_shift() {
-    const int slot = uniform_slot();
-    if (slot < 0) {
-      ++moves_.shifts_proposed;
-      return;
-    }
-    if (s_.shapes_of_[static_cast<std::size_t>(state_.at(slot).category)].size() > 1 &&
-        random_.uniform() < 0.5) {
-      propose_switch(slot);
-      return;
-    }
     ++moves_.shifts_proposed;
+    const int slot = uniform_slot();
+    if (slot < 0) return;
     Element moved = state_.at(slot);
     moved.position += offset_in_ball();
     moved.position = s_.domain_.wrap(moved.position);
@@ -230,29 +228,6 @@ class ShapeProcessSampler::Chain {
       state_.move(slot, moved.position, local_term_, links_);
       log_density_ += new_term - old_term;
       ++moves_.shifts_accepted;
-    }
-  }
-
-  // The element at `slot` takes a shape drawn as a birth draws it, q(s') ∝ its class's weight
-  // over the class's shapes: the density's factor of a shape is proportional to q, so the
-  // Metropolis-Hastings ratio f(s') q(s) / (f(s) q(s')) leaves the interaction's alone,
-  // λ(x_i' | x \ x_i) / λ(x_i | x \ x_i) with β_c unchanged. Without it a held packed exemplar
-  // keeps its mix of shapes (crescents-grid's chains could not trade one size for another).
-  void propose_switch(int slot) {
-    ++moves_.switches_proposed;
-    Element reshaped = state_.at(slot);
-    reshaped.shape = draw_shape(reshaped.category);
-    if (reshaped.shape == state_.at(slot).shape) {
-      ++moves_.switches_accepted;  // the same state: accepted with probability 1
-      return;
-    }
-    const double new_term = log_lambda_over_beta(reshaped, slot);
-    if (!std::isfinite(new_term)) return;
-    const double old_term = state_.log_lambda_over_beta(slot);
-    if (std::log(random_.uniform()) < new_term - old_term) {
-      state_.reshape(slot, reshaped.shape, local_term_, links_);
-      log_density_ += new_term - old_term;  // the trace's density leaves the shapes' factors out
-      ++moves_.switches_accepted;
     }
   }
 
@@ -280,16 +255,6 @@ class ShapeProcessSampler::Chain {
       if (p[axis] < s_.free_region_.min()[axis] || p[axis] > s_.free_region_.max()[axis])
         return false;
     return true;
-  }
-
-  // A shape of the category: uniform, or with shape classes in proportion to the class's weight
-  // over its shapes (the birth ratio then takes β_c Σ w).
-  int draw_shape(int category) {
-    const auto& shapes = s_.shapes_of_[static_cast<std::size_t>(category)];
-    const auto& cumulative = s_.shape_cumulative_[static_cast<std::size_t>(category)];
-    if (cumulative.empty()) return shapes[random_.index(shapes.size())];
-    const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), random_.uniform());
-    return shapes[std::min(shapes.size() - 1, static_cast<std::size_t>(at - cumulative.begin()))];
   }
 
   // Uniform in the ball of radius ρ, by rejection from its bounding cube.
@@ -411,8 +376,6 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   out.counters = {{"births accepted", ratio(m.births_accepted, m.births_proposed)},
                   {"deaths", ratio(m.deaths_accepted, m.deaths_proposed)},
                   {"shifts", ratio(m.shifts_accepted, m.shifts_proposed)}};
-  if (m.switches_proposed > 0)
-    out.counters.emplace_back("shape switches", ratio(m.switches_accepted, m.switches_proposed));
   if (!options_.start.empty()) {
     out.counters.emplace_back("start elements kept", std::to_string(sampled.start_kept));
     out.counters.emplace_back("start elements left out", std::to_string(sampled.start_left_out));

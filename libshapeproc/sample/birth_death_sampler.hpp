@@ -8,10 +8,7 @@
 // - shift: an element chosen uniformly moves by an offset uniform in a ball of radius ρ (same shape
 //   and category; wrapped on a torus, rejected when it leaves an open domain); the proposal is
 //   symmetric, so it is accepted with probability min(1, λ(x_i' | x \ x_i) / λ(x_i | x \ x_i)) and
-//   the chain keeps the same target density. For an element of a category with several shapes,
-//   half of these steps are shape switches instead: the element takes a shape drawn as a birth
-//   draws it (by class weight), accepted with probability min(1, λ(x_i' | x \ x_i) /
-//   λ(x_i | x \ x_i)) with the same β_c, since the proposal cancels the shapes' factors.
+//   the chain keeps the same target density.
 // λ comes from model::Interaction and model::pair_effect, the implementation the fit uses; the
 // domain's mask and intensity map multiply β by a local factor (0 outside the mask).
 #pragma once
@@ -67,7 +64,6 @@ struct MoveCounts {
   long long births_accepted = 0, births_proposed = 0;
   long long deaths_accepted = 0, deaths_proposed = 0;
   long long shifts_accepted = 0, shifts_proposed = 0;
-  long long switches_accepted = 0, switches_proposed = 0;  // shape switches
 };
 
 struct SampleResult {

@@ -119,17 +119,6 @@ void Configuration::move(int slot, const Vec3& position, double local,
   link(slot, local, links);
 }
 
-void Configuration::reshape(int slot, int shape, double local, const std::vector<Link>& links) {
-  Element& e = elements_[static_cast<std::size_t>(slot)];
-  if (const int k = interaction_.class_statistic(e.shape); k >= 0)
-    statistics_[static_cast<std::size_t>(k)] -= 1.0;
-  e.shape = shape;
-  if (const int k = interaction_.class_statistic(e.shape); k >= 0)
-    statistics_[static_cast<std::size_t>(k)] += 1.0;
-  unlink(slot);
-  link(slot, local, links);
-}
-
 void Configuration::statistics_in(const geometry::Box3& region, std::vector<double>& out) const {
   out.assign(statistics_.size(), 0.0);
   const auto inside = [&](int slot) {

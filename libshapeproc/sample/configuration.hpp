@@ -57,15 +57,11 @@ class Configuration {
   // Moves an element to `position`, with its new local term and links.
   void move(int slot, const Vec3& position, double local, const std::vector<Link>& links);
 
-  // Gives an element another shape of its category at the same position, with its new local
-  // term and links.
-  void reshape(int slot, int shape, double local, const std::vector<Link>& links);
-
   std::vector<Element> elements() const;
 
   // The sufficient statistics t(x) of the configuration (Interaction::statistic_count): by θ
   // index elements per category, then pairs per interaction parameter (each pair once), then
-  // elements per shape class. Kept up to date by add, remove, move and reshape.
+  // elements per shape class. Kept up to date by add, remove and move.
   const std::vector<double>& statistics() const { return statistics_; }
   // The same statistics of the elements whose reference positions lie in `region` (closed), and
   // of the pairs with both there: a window's view of the configuration (the stationary MLE's).

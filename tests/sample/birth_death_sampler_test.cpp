@@ -120,47 +120,6 @@ TEST(BirthDeath, AStartConfigurationKeepsWhatTheHardCoreAllows) {
   EXPECT_THROW(ShapeProcessSampler(m, domain, options), core::ArgumentError);
 }
 
-// A lattice of 144 elements held by a hard core (no room for a birth, β so large that no death is
-// accepted), started all of the small shape: shape switches alone bring the mix to the classes'
-// weights, 1/4 and 3/4. The hard core is on the distance between centroids, so the shapes do not
-// interact and each element's shape is independently of class 1 with probability 3/4: the mean
-// over 10 chains of the class-1 count is within
-// 4 standard errors of 108 (sd sqrt(144 · 3/16) / sqrt(10)). The statistics kept by the switches
-// match a recount of the output.
-TEST(BirthDeath, ShapeSwitchesBringAHeldLatticeToTheClassWeights) {
-  const model::ShapeProcessModel m = io::parse_model(R"({
-  "format": "shapeproc-model", "version": 1, "dimension": 2,
-  "measurement": { "distance": "centroid", "direction": "centroid", "directions": 1 },
-  "categories": [ { "name": "squares", "beta": 1e6 } ],
-  "interaction": [ { "categories": [0, 0], "axes": [
-      { "direction": [1, 0], "thresholds": [4.4, 4.4], "gammas": [1.0] } ] } ],
-  "shape_classes": [ { "category": 0, "weight": 0.25 }, { "category": 0, "weight": 0.75 } ],
-  "shapes": [
-    { "category": 0, "class": 0, "geometry": { "type": "paths", "parts": [ { "d": "M0 0h0.2v0.2h-0.2z" } ] } },
-    { "category": 0, "class": 1, "geometry": { "type": "paths", "parts": [ { "d": "M0 0h0.4v0.4h-0.4z" } ] } } ]
-})",
-                                                     "switch.json");
-  const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::torus);
-  SamplerOptions options;
-  options.iterations = 20000;
-  for (int y = 0; y < 12; ++y)
-    for (int x = 0; x < 12; ++x) options.start.push_back({0, 0, Vec3(2.5 + 5 * x, 2.5 + 5 * y, 0)});
-  const int chains = 10;
-  double mean = 0.0;
-  for (int seed = 1; seed <= chains; ++seed) {
-    const SampleResult r = sample_with_seed(m, domain, options, static_cast<std::uint64_t>(seed));
-    ASSERT_EQ(r.scene.elements.size(), 144u);
-    double large = 0.0;
-    for (const geometry::Element& e : r.scene.elements) large += e.shape == 1 ? 1.0 : 0.0;
-    const model::Interaction interaction(m);
-    EXPECT_EQ(r.statistics[static_cast<std::size_t>(interaction.class_statistic(1))], large);
-    EXPECT_EQ(r.statistics[static_cast<std::size_t>(interaction.class_statistic(0))], 144 - large);
-    EXPECT_GT(r.moves.switches_accepted, 0);
-    mean += large / chains;
-  }
-  EXPECT_NEAR(mean, 108.0, 4.0 * std::sqrt(144.0 * 3.0 / 16.0 / chains));
-}
-
 // From a start four times too full, the chain still reaches its target: the count of a Poisson
 // process of mean 50 after 20,000 steps, over 40 chains, within 4 standard errors of 50.
 TEST(BirthDeath, FromAFullStartTheChainReachesItsTarget) {
