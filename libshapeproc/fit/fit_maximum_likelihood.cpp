@@ -88,10 +88,7 @@ geometry::Domain stationary_domain(const geometry::Scene& exemplar,
   const geometry::Domain window(exemplar.window, exemplar.dimension, geometry::Boundary::open);
   const double margin = sample::ShapeProcessSampler(model, window, {}).reach();
   geometry::Box3 box = exemplar.window;
-  for (int axis = 0; axis < exemplar.dimension; ++axis) {
-    box.min()[axis] -= margin;
-    box.max()[axis] += margin;
-  }
+  for (int axis = 0; axis < exemplar.dimension; ++axis) box.max()[axis] += margin;
   return geometry::Domain(box, exemplar.dimension, geometry::Boundary::torus);
 }
 

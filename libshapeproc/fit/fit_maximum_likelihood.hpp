@@ -43,9 +43,11 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 bool starts_at_exemplar(const model::ShapeProcessModel& model);
 
 // The stationary window (MleOptions::stationary_window, docs/fit.md): a torus holding the
-// exemplar's open window with a margin of the model's reach (the farthest two interacting
-// reference positions can be, sample::ShapeProcessSampler::reach) on every side, so that the
-// window's elements see neighbours beyond its edge as in a larger drawing.
+// exemplar's open window and one margin of the model's reach (the farthest two interacting
+// reference positions can be, sample::ShapeProcessSampler::reach) along each axis, so that the
+// window's elements see neighbours beyond its edge as in a larger drawing. The margin lies
+// beyond both edges of an axis at once (the torus wraps), and the window's two edges stay a reach
+// apart through it, so no pair of window elements meets across the wrap.
 geometry::Domain stationary_domain(const geometry::Scene& exemplar,
                                    const model::ShapeProcessModel& model);
 
