@@ -42,7 +42,7 @@ struct MleOptions {
   double attraction_prior_sd = 1.5;
   double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
   // Open windows without border correction: the chains sample a torus larger than the window by
-  // the model's reach on every side, and the estimate solves E_θ[t_W(X)] = t(z) for the
+  // the model's reach along each axis, and the estimate solves E_θ[t_W(X)] = t(z) for the
   // statistics t_W of the window's part (fit::stationary_domain, docs/fit.md): the model of a
   // larger drawing of which the exemplar is a piece, not of the drawing cut at its edges.
   bool stationary_window = false;
