@@ -20,14 +20,13 @@
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/sample/move_counts.hpp"
 #include "libshapeproc/synthesis/synthesizer.hpp"
 
-namespace shapeproc::geometry {
-class PairMeasurer;
-}
-namespace shapeproc::model {
-class Interaction;
-}
+namespace shapeproc::sample {
+struct ChainTables;
+struct ChainRegion;
+}  // namespace shapeproc::sample
 
 namespace shapeproc::sample {
 
@@ -57,13 +56,12 @@ struct SamplerOptions {
   // any other (a hybrid's start, compare/hybrid_synthesis.hpp). One outside the domain or that the
   // hard core forbids beside those before it is left out (SampleResult::start_left_out).
   std::vector<geometry::Element> start;
-};
-
-// How often each move was proposed and accepted.
-struct MoveCounts {
-  long long births_accepted = 0, births_proposed = 0;
-  long long deaths_accepted = 0, deaths_proposed = 0;
-  long long shifts_accepted = 0, shifts_proposed = 0;
+  // Parallel sampling of this one output by domain decomposition (domain_decomposition.hpp) on
+  // `threads` threads (0: one per core), where the domain is large enough to cut into cells of
+  // the model's reach; otherwise, and with fixed elements, a free region or observations, the
+  // whole-domain chain. The output does not depend on the threads.
+  bool decompose = false;
+  int threads = 0;
 };
 
 struct SampleResult {
@@ -77,6 +75,10 @@ struct SampleResult {
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
   int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
+  // A decomposed run: its cells, its sweeps and the pilot chain's density (0 otherwise). Its
+  // trace has one point per sweep, without a log density; its `statistics` stay empty.
+  int cells = 0, sweeps = 0;
+  double pilot_density = 0.0;
 };
 
 // The shape process as a synthesis method: construction validates the model and options and
@@ -96,32 +98,20 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   SampleResult sample(core::Random& random, const synthesis::ChainControl& control = {}) const;
 
   const geometry::Domain& domain() const { return domain_; }
-  double shift_radius() const { return shift_radius_; }
+  double shift_radius() const;
   // The farthest apart two interacting reference positions can be.
-  double reach() const { return reach_; }
+  double reach() const;
   // A torus whose smaller side is under twice the reach: an element can meet its own images, and
   // pairs seen at a nearer image take that image's band (a band with no exemplar pair refuses
   // them).
   bool torus_smaller_than_reach() const;
 
  private:
-  class Chain;
-
   model::ShapeProcessModel model_;
   geometry::Domain domain_;
   SamplerOptions options_;
-  geometry::Scene shape_space_;
-  std::unique_ptr<const model::Interaction> interaction_;
-  std::unique_ptr<const geometry::PairMeasurer> measurer_;
-  std::vector<std::vector<int>> shapes_of_;  // per category
-  // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
-  // weight shared equally by its shapes); empty: its shapes are equally likely.
-  std::vector<std::vector<double>> shape_cumulative_;
-  std::vector<double> log_beta_;         // per category
-  double log_measure_categories_ = 0.0;  // log(|R| C), R the free region (the domain by default)
-  geometry::Box3 free_region_;           // where births and shifts place elements
-  double shift_radius_ = 0.0;
-  double reach_ = 0.0;  // farthest apart two interacting reference positions can be
+  std::unique_ptr<const ChainTables> tables_;
+  std::unique_ptr<const ChainRegion> region_;  // the whole domain, or the free region
 };
 
 // One chain on `domain`, for one-off use.

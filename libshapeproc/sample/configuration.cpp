@@ -10,10 +10,11 @@ namespace shapeproc::sample {
 
 Configuration::Configuration(const model::Interaction& interaction,
                              const geometry::PairMeasurer& measurer, const geometry::Domain& domain,
-                             double reach)
+                             double reach, const geometry::Box3& grid_box)
     : interaction_(interaction),
       measurer_(measurer),
-      grid_(domain.box(), domain.dimension(), reach, domain.periodic()),
+      grid_(grid_box.isEmpty() ? domain.box() : grid_box, domain.dimension(), reach,
+            domain.periodic()),
       period_(domain.period()) {
   statistics_.assign(static_cast<std::size_t>(interaction.statistic_count()), 0.0);
   shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;

@@ -28,9 +28,12 @@ struct Link {
 // Elements in a vector (ids are slots; removed slots are reused) and a grid of their positions.
 class Configuration {
  public:
-  // `reach`: the farthest reference positions of two interacting elements can be.
+  // `reach`: the farthest reference positions of two interacting elements can be. The neighbour
+  // grid covers `grid_box` (empty: the domain's box), the part of the domain where the
+  // configuration's elements lie (a decomposition's cell and its surroundings).
   Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
-                const geometry::Domain& domain, double reach);
+                const geometry::Domain& domain, double reach,
+                const geometry::Box3& grid_box = geometry::Box3());
 
   int size() const { return static_cast<int>(alive_.size()); }
   const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }

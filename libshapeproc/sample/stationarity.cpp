@@ -8,9 +8,9 @@ namespace shapeproc::sample {
 // The means of the second half's two quarters, a quarter of the run apart: a trend that would
 // move the count by max(1, 1%) over as many steps again keeps the chain going (packed exemplars
 // creep up by an element every few ten thousand steps, with little noise).
-bool is_stationary(const std::vector<int>& counts) {
+bool is_stationary(const std::vector<int>& counts, std::size_t least) {
   const std::size_t half = counts.size() / 2, length = counts.size() - half;
-  if (length < 100) return false;
+  if (length < std::max<std::size_t>(least, 10)) return false;
   constexpr int kBatches = 10;
   std::vector<double> batch(kBatches, 0.0);
   const std::size_t per_batch = length / kBatches;

@@ -6,12 +6,14 @@
 // step limit (then it is not stationary).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace shapeproc::sample {
 
-// The test on counts recorded at even intervals: true when their second half looks stationary.
-bool is_stationary(const std::vector<int>& counts);
+// The test on counts recorded at even intervals: true when their second half (at least `least`
+// counts) looks stationary.
+bool is_stationary(const std::vector<int>& counts, std::size_t least = 100);
 
 class StationarityRule {
  public:

@@ -60,7 +60,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const std::function<void(const geometry::Scene&)>& check_read = {});
 
 struct SampleFlags {
-  std::string size, domain_file, intensity, boundary, trace, png;
+  std::string size, domain_file, intensity, boundary, trace, png, decompose = "auto";
   long long iterations = 0;
   std::uint64_t seed = 1;
   int chains = 1, threads = 0;
@@ -84,6 +84,9 @@ struct SampleFlags {
   void check_budget(const geometry::Scene& exemplar) const;
   // Chains that run at the same time (--chains, --threads and the machine's cores).
   int chains_at_once() const;
+  // Outputs expected to hold at least this many elements are sampled by domain decomposition
+  // under --decompose auto.
+  static constexpr double kDecomposeFrom = 10'000;
   // Steps a run may take: some hours at the sampler's fraction of a microsecond per step.
   static constexpr long long kMaxIterations = 10'000'000'000;
   // The sampler's options from --iterations, --shift-probability, --shift-radius and --trace.

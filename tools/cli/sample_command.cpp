@@ -7,6 +7,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/interruption.hpp"
+#include "libshapeproc/core/parallel_for.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -86,6 +87,12 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
         .add_option("--shift-radius", shift_radius,
                     "largest shift (default: half the interaction range)")
         ->check(non_negative_number());
+    command
+        .add_option("--decompose", decompose,
+                    "sample each output in parallel cells (domain decomposition, docs/sample.md): "
+                    "on, off, or auto (on for outputs of 10,000 elements or more)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
   }
   command.add_option("--seed", seed, "random seed")->capture_default_str();
   command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")
@@ -178,10 +185,14 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
                      const geometry::Scene* start_tile) const {
   check(output, model.dimension);
   const geometry::Domain where = domain(model.dimension);
-  core::check_budget(
-      sample::estimate_output(model, where, io::recorded_exemplar_density(model), chains_at_once()),
-      budget.budget(), "the output", "--size");
+  const core::ResourceEstimate estimate =
+      sample::estimate_output(model, where, io::recorded_exemplar_density(model), chains_at_once());
+  core::check_budget(estimate, budget.budget(), "the output", "--size");
   sample::SamplerOptions options = sampler_options();
+  options.decompose =
+      decompose == "on" || (decompose == "auto" && estimate.elements >= kDecomposeFrom);
+  // The threads left to each chain of those that run at once.
+  options.threads = std::max(1, core::loop_threads(threads, 1 << 20) / chains_at_once());
   if (start_tile) options.start = geometry::tile_over(*start_tile, where.box());
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())

@@ -1,0 +1,286 @@
+#include "libshapeproc/sample/birth_death_chain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "libshapeproc/core/assert.hpp"
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/model/interaction.hpp"
+
+namespace shapeproc::sample {
+
+namespace {
+
+constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
+
+// Per category, the cumulative probabilities of its shapes under the model's shape classes
+// (empty lists without classes), and the sum of its classes' weights in `weight_sum`. Drawing a
+// birth's shape from them and using β_c Σ w in the acceptance ratio samples the density with
+// class intensities β_c w_k.
+std::vector<std::vector<double>> shape_probabilities(const model::ShapeProcessModel& model,
+                                                     const std::vector<std::vector<int>>& shapes_of,
+                                                     std::vector<double>& weight_sum) {
+  weight_sum.assign(shapes_of.size(), 1.0);
+  std::vector<std::vector<double>> cumulative(shapes_of.size());
+  if (model.shape_classes.empty()) return cumulative;
+  std::vector<int> class_size(model.shape_classes.size(), 0);
+  for (const model::ModelShape& s : model.shapes)
+    ++class_size[static_cast<std::size_t>(s.shape_class)];
+  for (std::size_t c = 0; c < shapes_of.size(); ++c) {
+    double total = 0.0;
+    for (int s : shapes_of[c]) {
+      const std::size_t k =
+          static_cast<std::size_t>(model.shapes[static_cast<std::size_t>(s)].shape_class);
+      total += model.shape_classes[k].weight / class_size[k];
+      cumulative[c].push_back(total);
+    }
+    for (double& p : cumulative[c]) p /= total;
+    weight_sum[c] = 0.0;
+    for (const model::ShapeClass& k : model.shape_classes)
+      if (k.category == static_cast<int>(c)) weight_sum[c] += k.weight;
+  }
+  return cumulative;
+}
+
+}  // namespace
+
+ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain)
+    : dimension(model.dimension) {
+  shape_space = model.shape_space();
+  shape_space.window = domain.box();
+  interaction = std::make_unique<const model::Interaction>(model);
+  measurer = std::make_unique<const geometry::PairMeasurer>(
+      shape_space, model.measurement_options(domain.periodic()));
+  double max_radius = 0.0;
+  for (std::size_t s = 0; s < shape_space.shapes.size(); ++s)
+    max_radius = std::max(max_radius, measurer->radius(static_cast<int>(s)));
+  reach = interaction->range() + 2 * max_radius;
+  shapes_of.resize(model.categories.size());
+  if (model.shapes.empty()) {
+    for (auto& list : shapes_of) list.push_back(0);  // the point shape
+  } else {
+    for (std::size_t s = 0; s < model.shapes.size(); ++s)
+      shapes_of[static_cast<std::size_t>(model.shapes[s].category)].push_back(static_cast<int>(s));
+  }
+  std::vector<double> weight_sum;
+  shape_cumulative = shape_probabilities(model, shapes_of, weight_sum);
+  for (std::size_t c = 0; c < model.categories.size(); ++c)
+    log_beta.push_back(std::log(model.categories[c].beta * weight_sum[c]));
+}
+
+ChainTables::~ChainTables() = default;
+
+BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& region,
+                                 core::Random& random, const std::vector<Element>& fixed,
+                                 const std::vector<Element>& start)
+    : t_(tables),
+      r_(region),
+      random_(random),
+      state_(*tables.interaction, *tables.measurer, region.domain, tables.reach, region.grid_box) {
+  log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
+                            std::log(static_cast<double>(t_.shapes_of.size()));
+  for (const Element& e : fixed) {
+    const double term = log_lambda_over_beta(e, -1);
+    if (!std::isfinite(term))
+      throw core::ArgumentError("sample", "the fixed elements violate the model's hard core");
+    state_.add(e, local_term_, links_);
+    log_density_ += t_.log_beta[static_cast<std::size_t>(e.category)] + term;
+  }
+  fixed_ = state_.size();
+  add_start(start);
+}
+
+void BirthDeathChain::add_start(const std::vector<Element>& start) {
+  for (const Element& e : start) {
+    const double term = in_free_region(e.position) ? log_lambda_over_beta(e, -1) : kMinusInfinity;
+    if (!std::isfinite(term)) {
+      ++start_left_out_;
+      continue;
+    }
+    state_.add(e, local_term_, links_);
+    log_density_ += t_.log_beta[static_cast<std::size_t>(e.category)] + term;
+    ++start_kept_;
+  }
+}
+
+void BirthDeathChain::add_surroundings(const std::vector<Element>& around) {
+  SHAPEPROC_ASSERT(state_.size() == fixed_, "surroundings come before the free elements");
+  for (const Element& e : around) state_.add(e, 0.0, {});
+  fixed_ = state_.size();
+}
+
+void BirthDeathChain::step() {
+  const double move = random_.uniform();
+  const double p = r_.shift_probability;
+  if (move < p)
+    propose_shift();
+  else if ((move - p) < 0.5 * (1.0 - p))
+    propose_birth();
+  else
+    propose_death();
+}
+
+int BirthDeathChain::insert_at_random(int wanted, long long attempts) {
+  std::vector<double> cumulative;  // categories in proportion to β_c Σ w
+  for (double log_beta : t_.log_beta)
+    cumulative.push_back((cumulative.empty() ? 0.0 : cumulative.back()) + std::exp(log_beta));
+  int added = 0;
+  for (long long a = 0; a < attempts && added < wanted; ++a) {
+    Element xi = random_element();
+    const double u = random_.uniform() * cumulative.back();
+    xi.category = static_cast<int>(std::min<std::size_t>(
+        cumulative.size() - 1,
+        static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), u) -
+                                 cumulative.begin())));
+    xi.shape = random_shape(xi.category);
+    const double term = log_lambda_over_beta(xi, -1);
+    if (!std::isfinite(term)) continue;
+    if (local_term_ < 0.0 && std::log(random_.uniform()) >= local_term_) continue;
+    state_.add(xi, local_term_, links_);
+    log_density_ += t_.log_beta[static_cast<std::size_t>(xi.category)] + term;
+    ++added;
+  }
+  return added;
+}
+
+// A position uniform in the free region; category and shape are the caller's.
+Element BirthDeathChain::random_element() {
+  Element xi;
+  const geometry::Box3& box = r_.free_region;
+  for (int axis = 0; axis < t_.dimension; ++axis)
+    xi.position[axis] = random_.uniform(box.min()[axis], box.max()[axis]);
+  return xi;
+}
+
+// One of the category's shapes, in proportion to its class's weight (all alike without classes).
+int BirthDeathChain::random_shape(int category) {
+  const auto& shapes = t_.shapes_of[static_cast<std::size_t>(category)];
+  const auto& cumulative = t_.shape_cumulative[static_cast<std::size_t>(category)];
+  if (cumulative.empty()) return shapes[random_.index(shapes.size())];
+  const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), random_.uniform());
+  return shapes[std::min(shapes.size() - 1, static_cast<std::size_t>(at - cumulative.begin()))];
+}
+
+void BirthDeathChain::propose_birth() {
+  ++moves_.births_proposed;
+  const int n = state_.size() - fixed_;
+  Element xi = random_element();
+  xi.category = static_cast<int>(random_.index(t_.shapes_of.size()));
+  xi.shape = random_shape(xi.category);  // by class weight: the birth ratio is unchanged
+  const double log_lambda =
+      t_.log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
+  const double log_ratio = log_lambda + log_measure_categories_ - std::log(n + 1.0);
+  if (std::isfinite(log_lambda) && std::log(random_.uniform()) < log_ratio) {
+    state_.add(xi, local_term_, links_);
+    log_density_ += log_lambda;
+    ++moves_.births_accepted;
+  }
+}
+
+void BirthDeathChain::propose_death() {
+  ++moves_.deaths_proposed;
+  const int slot = uniform_slot();
+  if (slot < 0) return;
+  const int n = state_.size() - fixed_;
+  const Element& x = state_.at(slot);
+  const double log_lambda =
+      t_.log_beta[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
+  const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories_ - log_lambda;
+  if (std::log(random_.uniform()) < log_ratio) {
+    log_density_ -= log_lambda;
+    state_.remove(slot);
+    ++moves_.deaths_accepted;
+  }
+}
+
+void BirthDeathChain::propose_shift() {
+  ++moves_.shifts_proposed;
+  const int slot = uniform_slot();
+  if (slot < 0) return;
+  Element moved = state_.at(slot);
+  moved.position += offset_in_ball();
+  const geometry::Domain& domain = r_.domain;
+  bool inside;
+  if (r_.confined) {
+    inside = in_free_region(moved.position);
+  } else {
+    moved.position = domain.wrap(moved.position);
+    inside =
+        domain.periodic() || (domain.contains(moved.position) && in_free_region(moved.position));
+  }
+  const double new_term = inside ? log_lambda_over_beta(moved, slot) : kMinusInfinity;
+  if (!std::isfinite(new_term)) return;
+  const double old_term = state_.log_lambda_over_beta(slot);
+  if (std::log(random_.uniform()) < new_term - old_term) {
+    state_.move(slot, moved.position, local_term_, links_);
+    log_density_ += new_term - old_term;
+    ++moves_.shifts_accepted;
+  }
+}
+
+std::vector<Element> BirthDeathChain::elements() const { return state_.elements(); }
+
+std::vector<Element> BirthDeathChain::free_elements() const {
+  std::vector<Element> out;
+  out.reserve(static_cast<std::size_t>(size()));
+  for (int rank = fixed_; rank < state_.size(); ++rank)
+    out.push_back(state_.at(state_.slot_of_rank(static_cast<std::size_t>(rank))));
+  return out;
+}
+
+// A uniformly chosen free element's slot (fixed ones hold the first ranks: removals swap the last
+// rank into the gap); -1 (and no draw) when there is none.
+int BirthDeathChain::uniform_slot() {
+  const int n = state_.size() - fixed_;
+  return n == 0 ? -1
+                : state_.slot_of_rank(static_cast<std::size_t>(fixed_) +
+                                      random_.index(static_cast<std::uint64_t>(n)));
+}
+
+bool BirthDeathChain::in_free_region(const Vec3& p) const {
+  for (int axis = 0; axis < t_.dimension; ++axis)
+    if (p[axis] < r_.free_region.min()[axis] || p[axis] > r_.free_region.max()[axis]) return false;
+  return true;
+}
+
+// Uniform in the ball of radius ρ, by rejection from its bounding cube.
+Vec3 BirthDeathChain::offset_in_ball() {
+  const double radius = r_.shift_radius;
+  Vec3 offset = Vec3::Zero();
+  do {
+    for (int axis = 0; axis < t_.dimension; ++axis)
+      offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
+  } while (offset.squaredNorm() > radius * radius);
+  return offset;
+}
+
+// log of the domain's local factor of β at the element: −∞ outside the mask or where the
+// intensity map is black.
+double BirthDeathChain::log_local_factor(const Element& e) const {
+  const geometry::Domain& domain = r_.domain;
+  double factor = 0.0;
+  if (domain.intensity()) {
+    const double v = domain.intensity_at(e.position.head<2>());
+    if (!(v > 0.0)) return kMinusInfinity;
+    factor = std::log(v);
+  }
+  if (domain.mask() && !domain.contains(t_.measurer->proxies2()[static_cast<std::size_t>(e.shape)],
+                                        e.position.head<2>())) {
+    return kMinusInfinity;
+  }
+  return factor;
+}
+
+// log λ(e | x) − log β_c for a proposed element: the local factor, then (when it is finite) the
+// interactions with every element but `skip`, whose links go to links_. −∞ outside the mask or
+// on a hard core. The local part is kept in local_term_.
+double BirthDeathChain::log_lambda_over_beta(const Element& e, int skip) {
+  local_term_ = r_.domain.has_local_factor() ? log_local_factor(e) : 0.0;
+  links_.clear();
+  return std::isfinite(local_term_) ? local_term_ + state_.log_interaction(e, skip, links_)
+                                    : local_term_;
+}
+
+}  // namespace shapeproc::sample

@@ -1,0 +1,121 @@
+// One run of the birth-death Metropolis-Hastings chain (birth_death_sampler.hpp gives the moves
+// and their acceptance ratios): the configuration, the generator and the three moves, over a
+// region of the domain. The whole-domain sampler runs one chain over everything; the
+// domain-decomposition sampler (domain_decomposition.hpp) runs one per cell, the elements around
+// the cell held fixed.
+#pragma once
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/sample/configuration.hpp"
+#include "libshapeproc/sample/move_counts.hpp"
+
+namespace shapeproc::sample {
+
+// What every chain of one model shares, built once: the compiled interaction, the proxies, the
+// shapes of each category and their probabilities, log β per category.
+struct ChainTables {
+  ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain);
+  ~ChainTables();
+
+  int dimension = 2;
+  std::unique_ptr<const model::Interaction> interaction;
+  std::unique_ptr<const geometry::PairMeasurer> measurer;
+  geometry::Scene shape_space;              // the model's shapes, the domain's box as window
+  std::vector<std::vector<int>> shapes_of;  // per category
+  // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
+  // weight shared equally by its shapes); empty: its shapes are equally likely.
+  std::vector<std::vector<double>> shape_cumulative;
+  std::vector<double> log_beta;  // per category: log(β_c Σ_k w_k)
+  double reach = 0.0;            // farthest apart two interacting reference positions can be
+};
+
+// Where a chain moves elements.
+struct ChainRegion {
+  ChainRegion(geometry::Domain d, const geometry::Box3& free)
+      : domain(std::move(d)), free_region(free) {}
+
+  // The configuration's domain: its box bounds the neighbour grid, its boundary decides
+  // wrapping, its mask and intensity map give β's local factor.
+  geometry::Domain domain;
+  // Births place reference positions uniformly here; shifts that leave it are rejected (on an
+  // open domain; a torus wraps them unless `confined`).
+  geometry::Box3 free_region;
+  // What the neighbour grid covers (empty: the domain's box): the free region and the elements
+  // around it that can interact with it.
+  geometry::Box3 grid_box;
+  bool confined = false;  // a cell of a decomposition: shifts never leave the free region
+  double shift_probability = 1.0 / 3.0;
+  double shift_radius = 1.0;
+};
+
+class BirthDeathChain {
+ public:
+  // Starts from `fixed` (never moved or removed; their hard cores are checked) and then `start`
+  // (each kept unless outside the free region or forbidden by those before it).
+  BirthDeathChain(const ChainTables& tables, const ChainRegion& region, core::Random& random,
+                  const std::vector<Element>& fixed, const std::vector<Element>& start);
+
+  // Adds elements as the constructor adds `start` (each kept unless outside the free region or
+  // forbidden by those before it).
+  void add_start(const std::vector<Element>& start);
+
+  // Random sequential insertion, a burn-in's start rather than a Metropolis-Hastings move: up to
+  // `attempts` proposals of a new element (position uniform in the free region, category in
+  // proportion to β_c Σ w, shape by class weight), each kept when the hard core and the mask
+  // allow it (with an intensity map, with probability its local factor, at most 1), until
+  // `wanted` have been added. Returns how many were.
+  int insert_at_random(int wanted, long long attempts);
+
+  // Elements whose own pairs are not needed (the ring of a decomposition's cell): in the grid
+  // for the free elements' interactions, without links among themselves. Call before any other
+  // element is added.
+  void add_surroundings(const std::vector<Element>& around);
+
+  // One step: with the shift probability a shift, otherwise a birth or a death with equal
+  // probability.
+  void step();
+
+  int size() const { return state_.size(); }  // fixed elements included
+  int start_kept() const { return start_kept_; }
+  int start_left_out() const { return start_left_out_; }
+  const std::vector<double>& statistics() const { return state_.statistics(); }
+  void statistics_in(const geometry::Box3& region, std::vector<double>& out) const {
+    state_.statistics_in(region, out);
+  }
+  double log_density() const { return log_density_; }
+  const MoveCounts& moves() const { return moves_; }
+  std::vector<Element> elements() const;       // every element, fixed ones included
+  std::vector<Element> free_elements() const;  // those the chain may move or remove
+
+ private:
+  Element random_element();
+  int random_shape(int category);
+  void propose_birth();
+  void propose_death();
+  void propose_shift();
+  int uniform_slot();
+  bool in_free_region(const Vec3& p) const;
+  Vec3 offset_in_ball();
+  double log_local_factor(const Element& e) const;
+  double log_lambda_over_beta(const Element& e, int skip);
+
+  const ChainTables& t_;
+  const ChainRegion& r_;
+  core::Random& random_;
+  Configuration state_;
+  double log_measure_categories_ = 0.0;  // log(|R| C), R the free region
+  std::vector<Link> links_;              // of the last proposal
+  double local_term_ = 0.0;              // of the last proposal
+  double log_density_ = 0.0;             // unnormalised, tracked incrementally
+  int fixed_ = 0;                        // fixed elements, at ranks 0 … fixed_ − 1
+  int start_kept_ = 0, start_left_out_ = 0;
+  MoveCounts moves_;
+};
+
+}  // namespace shapeproc::sample
