@@ -11,9 +11,10 @@ NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double
   const geometry::Vec3 sizes = window.sizes();
   for (int axis = 0; axis < 3; ++axis) {
     const bool used = axis < dimension && sizes[axis] > 0;
-    // At most 256 cells per axis in 2D and 64 in 3D (a 256³ grid of empty cells took 400 MB); a
-    // cell never smaller than cell_size.
-    const int most = dimension == 3 ? 64 : 256;
+    // At most 1024 cells per axis in 2D (a million cells, 24 MB empty; 256 until the
+    // million-element outputs, which put several elements in a cell) and 64 in 3D (a 256³ grid of
+    // empty cells took 400 MB); a cell never smaller than cell_size.
+    const int most = dimension == 3 ? 64 : 1024;
     const int n = used && cell_size > 0
                       ? std::clamp(static_cast<int>(std::floor(sizes[axis] / cell_size)), 1, most)
                       : 1;

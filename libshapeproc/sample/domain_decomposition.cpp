@@ -18,7 +18,7 @@ namespace shapeproc::sample {
 namespace {
 
 constexpr double kElementsPerCell = 64;  // the cells' size at the pilot's density
-constexpr double kStepsPerElement = 20;  // steps of a visit per expected element of its cell
+constexpr double kStepsPerElement = 10;  // steps of a visit per expected element of its cell
 constexpr long long kLeastVisitSteps = 50;
 constexpr int kLeastSweeps = 10;
 constexpr int kMostSweeps = 1000;         // about 20,000 steps per element (automatic rule)
@@ -199,9 +199,11 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   const int dimension = tables.dimension;
   const std::uint64_t run_seed = random.index(std::numeric_limits<std::uint64_t>::max());
   const double density = pilot_density(model, tables, whole, mix(run_seed, 0, 0, 0));
-  std::optional<CellLayout> layout =
-      CellLayout::plan(domain, cell_side(tables.reach, density, dimension));
-  if (!layout) layout = CellLayout::plan(domain, tables.reach);
+  // Cells of the preferred side, or as large as the domain allows (4 per axis on a torus, 2 on an
+  // open domain), never under the reach.
+  const double fits = domain.box().sizes().head(dimension).minCoeff() / (domain.periodic() ? 4 : 2);
+  std::optional<CellLayout> layout = CellLayout::plan(
+      domain, std::max(tables.reach, std::min(cell_side(tables.reach, density, dimension), fits)));
   if (!layout)
     throw core::ArgumentError("sample", "the domain is too small to cut into cells of the reach");
   Cells cells(tables, whole, *layout, density);
