@@ -39,7 +39,7 @@ for file in "$@"; do
     output="out/compare/$name-$variant.svg"
     start=$(date +%s.%N)
     if ! log=$("$shapeproc" synthesize "$file" "${options[@]}" --method "$method" "${extra[@]}" \
-      --size "$size" --seed 1 --quiet -o "$output" --png "out/compare/$name-$variant.png" 2>&1); then
+      --size "$size" --seed 1 --quiet --force -o "$output" --png "out/compare/$name-$variant.png" 2>&1); then
       echo "| $name | $n | $variant | failed: $(tail -n 1 <<< "$log") |"
       continue
     fi

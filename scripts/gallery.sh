@@ -11,7 +11,7 @@ picture() {  # name exemplar size "reader options" [more synthesize options...]
   shift 4
   local output="out/gallery/$name-synthesis.${exemplar##*.}"
   # shellcheck disable=SC2086  # the reader options are words
-  "$shapeproc" synthesize "$exemplar" $reader "$@" --model "out/gallery/$name-model.json" --size "$size" --seed 1 -o "$output"
+  "$shapeproc" synthesize "$exemplar" $reader "$@" --model "out/gallery/$name-model.json" --size "$size" --seed 1 --force -o "$output"
   # shellcheck disable=SC2086
   "$shapeproc" report "$exemplar" "$output" $reader --model "out/gallery/$name-model.json" -o "out/gallery/$name-report"
   cp "out/gallery/$name-report/exemplar.png" "docs/images/$name-exemplar.png"

@@ -56,7 +56,7 @@ TEST(CliSynthesizeMaEm, OptionsOfTheOtherMethodAndNonsenseAreRefused) {
   expect_one_line_error(em({"--estimator", "mpl"}), 2, "--estimator is for --method shape-process");
   expect_one_line_error(em({"--shift-probability", "0.5"}), 2, "--shift-probability");
   expect_one_line_error(
-      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3"}), 2,
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3", "--force"}), 2,
       "--k is for --method ma-em");
   expect_one_line_error(em({"--samples-per-element", "0"}), 2, "--samples-per-element");
   expect_one_line_error(em({"--orientation-field", "north"}), 2, "--orientation-field");
@@ -113,8 +113,8 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
   const std::string out = dir.file("x.svg").string();
   const std::string exemplar = data("svg/dots-random.svg");
   const auto grow = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = {"synthesize", exemplar, "--method", "davison",
-                                     "-o",         out,      "--size",   "100,100"};
+    std::vector<std::string> args = {"synthesize", exemplar, "--method", "davison", "-o",
+                                     out,          "--size", "100,100",  "--force"};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_cli(args);
   };
@@ -128,10 +128,10 @@ TEST(CliSynthesizeDavison, OptionsOfOtherMethodsAreRefused) {
   EXPECT_NE(testing::read_file(out).find("growth.overlap&quot;,&quot;shapes"), std::string::npos);
   expect_one_line_error(grow({"--iterations", "5"}), 2, "--iterations");
   expect_one_line_error(
-      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--ratio", "3"}), 2,
-      "--ratio is for --method davison");
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--ratio", "3", "--force"}),
+      2, "--ratio is for --method davison");
   expect_one_line_error(
-      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3"}), 2,
+      run_cli({"synthesize", exemplar, "-o", out, "--size", "100,100", "--k", "3", "--force"}), 2,
       "--k is for --method ma-em or davison");
 }
 
@@ -141,8 +141,8 @@ TEST(CliSynthesizeDavison, APaletteGrowsTwoExemplarsSideBySide) {
   const std::string crescents = data("svg/crescents-grid.svg");
   const std::string dots = data("svg/dots-random.svg");
   const auto grow = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = {"synthesize", crescents, "--method", "davison", "-o",
-                                     out,          "--size",  "600,300",  "--seed",  "1"};
+    std::vector<std::string> args = {"synthesize", crescents, "--method", "davison", "-o",     out,
+                                     "--size",     "600,300", "--seed",   "1",       "--force"};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_cli(args);
   };
@@ -160,9 +160,9 @@ TEST(CliSynthesizeDavison, APaletteGrowsTwoExemplarsSideBySide) {
 
   expect_one_line_error(grow({"--palette-neighbourhood", "2"}), 2, "they need --palette");
   expect_one_line_error(grow({"--palette", dir.write("bad.svg", "<svg").string()}), 2, "bad.svg");
-  expect_one_line_error(
-      run_cli({"synthesize", crescents, "-o", out, "--size", "100,100", "--palette", dots}), 2,
-      "--palette is for --method davison");
+  expect_one_line_error(run_cli({"synthesize", crescents, "-o", out, "--size", "100,100",
+                                 "--palette", dots, "--force"}),
+                        2, "--palette is for --method davison");
 }
 
 TEST(CliSynthesizeDavison, A3DOutputIsMeasuredOnItsDomain) {

@@ -198,8 +198,11 @@ TEST(CliSample, SampleRecordsSeedAndParameters) {
   EXPECT_EQ(body(testing::read_file(again)), body(svg));
   expect_one_line_error(run_cli({"sample", model, "-o", out, "--size", "200"}), 2, "--size");
   expect_one_line_error(
-      run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1"}), 2,
+      run_cli({"sample", dir.file("none.json").string(), "-o", out, "--size", "1,1", "--force"}), 2,
       "no such file");
+  // An output that exists is not overwritten without --force.
+  expect_one_line_error(run_cli({"sample", model, "-o", out, "--size", "200,200"}), 2,
+                        "exists: give --force");
 }
 
 TEST(CliSample, ChainsDomainsMapsAndPictures) {
@@ -234,7 +237,7 @@ TEST(CliSample, ChainsDomainsMapsAndPictures) {
             std::string::npos);  // the domain is recorded
   // Bad domains and combinations.
   expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "400,400", "--domain",
-                                 data("maps/star.svg"), "--boundary", "torus"}),
+                                 data("maps/star.svg"), "--boundary", "torus", "--force"}),
                         2, "--boundary torus");
   const std::string not_png = dir.write("fake.png", "not a png").string();
   expect_one_line_error(run_cli({"sample", model, "-o", dir.file("x.svg").string(), "--size",
@@ -242,8 +245,16 @@ TEST(CliSample, ChainsDomainsMapsAndPictures) {
                         2, "fake.png");
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
   expect_one_line_error(run_cli({"sample", model, "-o", star, "--size", "40,40", "--domain",
-                                 data("svg/dots-random.csv")}),
+                                 data("svg/dots-random.csv"), "--force"}),
                         2, "--domain");
+  // Chains' outputs and records are never overwritten without --force: a second run of 2 chains
+  // refuses, naming the first file and counting the others.
+  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("t1.csv").string(), "--size",
+                                 "300,300", "--chains", "2", "--iterations", "10"}),
+                        2, "t1-1.csv exists (and 3 more of this run's outputs)");
+  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("p.png").string(), "--png",
+                                 dir.file("p.png").string(), "--size", "300,300"}),
+                        2, "twice");
 }
 
 TEST(CliEdit, EditsAreAppliedValidatedAndRecorded) {
@@ -368,14 +379,14 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   EXPECT_EQ(nlohmann::json::parse(stats.out).at("elements").get<int>(), 32);
   // An output torus under twice the reach (range 57, dots 4 wide: 2 (57 + 4) = 123) is said to
   // be one.
-  const Result small =
-      run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "60,60", "--iterations", "100"});
+  const Result small = run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "60,60",
+                                "--iterations", "100", "--force"});
   ASSERT_EQ(small.code, 0) << small.err;
   EXPECT_NE(small.out.find("warning: the output torus is smaller than twice the model's reach"),
             std::string::npos)
       << small.out;
-  const Result large = run_cli(
-      {"synthesize", tile, "--tile", "-o", out, "--size", "180,180", "--iterations", "100"});
+  const Result large = run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "180,180",
+                                "--iterations", "100", "--force"});
   ASSERT_EQ(large.code, 0) << large.err;
   EXPECT_EQ(large.out.find("warning: the output torus"), std::string::npos) << large.out;
 }

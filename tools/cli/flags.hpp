@@ -64,6 +64,7 @@ struct SampleFlags {
   long long iterations = 0;
   std::uint64_t seed = 1;
   int chains = 1, threads = 0;
+  bool force = false;  // overwrite existing outputs
   double shift_probability = sample::SamplerOptions{}.shift_probability;
   double shift_radius = 0.0;
   double png_scale = 0.0;
@@ -82,6 +83,9 @@ struct SampleFlags {
   // Refuses an output of `exemplar`'s density over the domain that the budget cannot hold
   // (--max-elements, --max-memory), before any work.
   void check_budget(const geometry::Scene& exemplar) const;
+  // Every file the run writes for `output`: each chain's output (suffixed -1, -2, ... with
+  // several chains) and its record beside a .csv, its picture and its trace.
+  std::vector<std::string> files_written(const std::string& output) const;
   // Chains that run at the same time (--chains, --threads and the machine's cores).
   int chains_at_once() const;
   // Outputs expected to hold at least this many elements are sampled by domain decomposition

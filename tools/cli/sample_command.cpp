@@ -1,5 +1,6 @@
 // shapeproc sample model.json -o out.svg --size W,H[,D]: birth-death Metropolis-Hastings; and
 // the chains' runner and output writer every synthesis method's command shares.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -99,6 +100,7 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
       ->check(CLI::Range(1, 1000));
   command.add_option("--threads", threads, "threads for the chains (default: one per core)")
       ->check(CLI::Range(0, 256));
+  command.add_flag("--force", force, "overwrite outputs that exist (refused otherwise)");
   command
       .add_option("--boundary", boundary,
                   "torus (periodic; default for plain rectangles and boxes) or open (default with "
@@ -113,6 +115,18 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
       ->check(positive_number());
   verbosity.add_to(command);
   budget.add_to(command);
+}
+
+std::vector<std::string> SampleFlags::files_written(const std::string& output) const {
+  std::vector<std::string> files;
+  for (int c = 0; c < chains; ++c) {
+    const std::string file = suffixed(output, c, chains);
+    files.push_back(file);
+    if (io::extension_of(file) == "csv") files.push_back(file + ".json");
+    if (!png.empty()) files.push_back(suffixed(png, c, chains));
+    if (!trace.empty()) files.push_back(suffixed(trace, c, chains));
+  }
+  return files;
 }
 
 int SampleFlags::chains_at_once() const { return synthesis::chains_at_once(chains, threads); }
@@ -151,6 +165,29 @@ void SampleFlags::check(const std::string& output, int dimension) const {
     throw core::UsageError("--trace: expected a .csv file, got '" + trace + "'");
   for (const std::string& file : {output, png, trace}) {
     if (!file.empty()) core::check_writable(file);
+  }
+  // No file written twice by one run (a chain's output over another's, -o and --png alike), and
+  // none that exists overwritten without --force.
+  std::vector<std::string> files = files_written(output);
+  std::vector<std::string> sorted = files;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+    throw core::UsageError("the run would write " + *twice +
+                           " twice: give -o, --png and --trace "
+                           "different names");
+  if (!force) {
+    int existing = 0;
+    std::string first;
+    for (const std::string& file : files) {
+      if (!std::filesystem::exists(file)) continue;
+      if (existing++ == 0) first = file;
+    }
+    if (existing > 0)
+      throw core::UsageError(
+          first + " exists" +
+          (existing > 1 ? " (and " + std::to_string(existing - 1) + " more of this run's outputs)"
+                        : std::string()) +
+          ": give --force to overwrite, or another -o");
   }
   if (boundary == "torus" && !domain_file.empty())
     throw core::UsageError(

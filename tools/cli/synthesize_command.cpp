@@ -2,6 +2,7 @@
 // the shape process (fit, then sample), the neighbourhood EM of Ma et al. 2011, the region growing
 // of Davison et al. 2018 or the seed-and-grow of Ijiri et al. 2008, through the same domain,
 // chains, outputs and pictures. The methods' own flags are in method_flags.
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -175,6 +176,10 @@ void add_synthesize_command(CLI::App& app, Action& action,
       if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
+      if (!args->model.empty() && !args->sample.force && std::filesystem::exists(args->model))
+        throw core::UsageError(args->model +
+                               " exists: give --force to overwrite, or another "
+                               "--model");
       args->sample.check(args->output);
       args->reader.options();
       synthesis::SynthesisRecord record;
