@@ -44,9 +44,11 @@ struct FitOptions {
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;
+  // Threads that integrate the quadrature (0: one per core); the fit does not depend on them.
+  int threads = 0;
   // Called at each stage ("proxies", "measurements", "quadrature", "optimisation") with the work
   // done and its total (0: not known); during the quadrature, with blocks of rows done, from the
-  // integrating threads (calls may come from two threads at once). May be empty.
+  // integrating threads (calls may come from several threads at once). May be empty.
   std::function<void(const char* stage, long long done, long long total)> progress;
 };
 

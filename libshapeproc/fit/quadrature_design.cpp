@@ -8,6 +8,7 @@
 #include <map>
 #include <thread>
 
+#include "libshapeproc/core/parallel_for.hpp"
 #include "libshapeproc/fit/line_quadrature.hpp"
 #include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
@@ -71,10 +72,11 @@ struct CellGrid {
   }
 };
 
-// Runs evaluate(begin, step) on up to two threads, each taking every step-th item.
+// Runs evaluate(begin, step) on `requested` threads (0: one per core), each taking every step-th
+// item.
 template <class F>
-void on_threads(const F& evaluate) {
-  const std::size_t threads = std::max(1u, std::min(2u, std::thread::hardware_concurrency()));
+void on_threads(int requested, const F& evaluate) {
+  const std::size_t threads = static_cast<std::size_t>(core::loop_threads(requested, 1 << 20));
   std::vector<std::thread> workers;
   for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(evaluate, t, threads);
   evaluate(0, threads);
@@ -104,10 +106,10 @@ std::vector<std::pair<int, int>> distinct_shapes(const std::vector<int>& shapes,
 // Dummies of a row are its cells left to right; the first of each (category, row, shape) carries
 // the whole line, the others nothing.
 void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid,
-                     const FitRegion& region, const LineContext& context,
+                     const FitRegion& region, const LineContext& context, int threads,
                      std::vector<std::vector<CellPart>>& parts) {
   const double row_length = grid.sizes.x();
-  on_threads([&](std::size_t begin, std::size_t step) {
+  on_threads(threads, [&](std::size_t begin, std::size_t step) {
     for (std::size_t d = begin; d < dummies.size(); d += step) {
       const Element& dummy = dummies[d].element;
       const int column = static_cast<int>(
@@ -128,7 +130,7 @@ void integrate_lines(const std::vector<Dummy>& dummies, const CellGrid& grid,
 // of a block (the results do not depend on the blocks).
 void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::size_t>& block_start,
                      const CellGrid& grid, const FitRegion& region, CellContext context,
-                     double range, int refinement, const FitProgress& progress,
+                     double range, int refinement, int threads, const FitProgress& progress,
                      std::vector<std::vector<CellPart>>& parts) {
   Vec3 cell_size = Vec3::Zero();
   for (int axis = 0; axis < region.dimension; ++axis)
@@ -138,7 +140,7 @@ void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::s
   context.top_corner = 0.5 * cell_size.norm();
   std::atomic<std::size_t> next_block{0}, done{0};
   const long long blocks = static_cast<long long>(block_start.size()) - 1;
-  on_threads([&](std::size_t, std::size_t) {
+  on_threads(threads, [&](std::size_t, std::size_t) {
     CornerCache cache;
     for (std::size_t b = next_block++; b + 1 < block_start.size(); b = next_block++) {
       if (progress) progress("quadrature", static_cast<long long>(done.load()), blocks);
@@ -248,7 +250,7 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     context.dimension = dimension;
     context.period = period;
     context.tolerance = 1e-6 * grid.longest;
-    integrate_lines(dummies, grid, region, context, parts);
+    integrate_lines(dummies, grid, region, context, options.threads, parts);
   } else {
     geometry::NeighbourGrid neighbours(
         exemplar.window, dimension,
@@ -260,7 +262,7 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     const CellContext context{&interaction, &measurer, &exemplar.elements,
                               &neighbours,  dimension, period};
     integrate_cells(dummies, block_start, grid, region, context, range, options.refinement,
-                    options.progress, parts);
+                    options.threads, options.progress, parts);
   }
 
   // Lines: the data points' share comes off every line of their category alike, so that the

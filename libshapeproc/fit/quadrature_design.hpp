@@ -24,9 +24,9 @@ struct QuadratureDesign {
   bool lines = false;   // rows of cells integrated as exact lines
 };
 
-// The design for `exemplar` (its statistics in `statistics`), integrated on up to two threads
-// (the result does not depend on the thread count). `window`: the exemplar's window as a domain,
-// a torus for the periodic edge treatment.
+// The design for `exemplar` (its statistics in `statistics`), integrated on FitOptions::threads
+// threads (the result does not depend on the thread count). `window`: the exemplar's window as a
+// domain, a torus for the periodic edge treatment.
 QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
                                    const FitRegion& region, const geometry::PairMeasurer& measurer,
                                    const model::Interaction& interaction,

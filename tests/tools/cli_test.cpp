@@ -143,6 +143,22 @@ TEST(CliFit, FitShowAndPlot) {
   EXPECT_NE(testing::read_file(plot).find("<svg"), std::string::npos);
 }
 
+// The quadrature and the maximum likelihood's chains run on --threads threads; the model does not
+// depend on them.
+TEST(CliFit, TheModelDoesNotDependOnTheThreads) {
+  const testing::TempDir dir;
+  std::vector<nlohmann::json> models;
+  for (const char* threads : {"1", "3"}) {
+    const std::string model = dir.file(std::string("m") + threads + ".json").string();
+    const Result r = run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "12",
+                              "--mle-steps", "5000", "--threads", threads, "-o", model});
+    ASSERT_EQ(r.code, 0) << r.err;
+    models.push_back(nlohmann::json::parse(testing::read_file(model)));
+  }
+  EXPECT_EQ(models[0].at("categories"), models[1].at("categories"));
+  EXPECT_EQ(models[0].at("interaction"), models[1].at("interaction"));
+}
+
 TEST(CliFit, BadInputAndOptions) {
   const testing::TempDir dir;
   dir.write("broken.json", "{\"format\": \"shapeproc-model\",\n \"version\": 1,\n}");

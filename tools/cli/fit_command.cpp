@@ -209,8 +209,17 @@ void FitFlags::add_to(CLI::App& command) {
       ->capture_default_str();
 }
 
+void FitFlags::add_threads_to(CLI::App& command) {
+  command
+      .add_option("--threads", threads,
+                  "threads of the quadrature and of the maximum likelihood's chains (default: one "
+                  "per core; the model does not depend on them)")
+      ->check(CLI::Range(0, 256));
+}
+
 fit::MleOptions FitFlags::mle_options() const {
   fit::MleOptions o;
+  o.sampling.threads = threads;
   o.sampling.chains = mle_chains;
   o.sampling.steps = mle_steps;
   o.sampling.seed = mle_seed;
@@ -225,6 +234,7 @@ std::string FitFlags::edge_for(const ReaderFlags& reader) const {
 
 fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   fit::FitOptions o;
+  o.threads = threads;
   const std::string treatment = edge_for(reader);
   if (treatment == "stationary" && estimator != "mle")
     throw core::UsageError("--edge stationary is a maximum-likelihood fit: use --estimator mle");
@@ -271,6 +281,7 @@ void add_fit_command(CLI::App& app, Action& action, const std::vector<std::strin
   command->add_option("EXEMPLAR", args->input, "input file")->required();
   command->add_option("-o,--output", args->output, "model file (.json)")->required();
   args->fit.add_to(*command);
+  args->fit.add_threads_to(*command);
   args->reader.add_to(*command);
   args->verbosity.add_to(*command);
   args->budget.add_to(*command);

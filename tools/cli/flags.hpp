@@ -39,8 +39,11 @@ struct FitFlags {
   int mle_chains = fit::MleOptions{}.sampling.chains;
   long long mle_steps = fit::MleOptions{}.sampling.steps;
   std::uint64_t mle_seed = fit::MleOptions{}.sampling.seed;
+  int threads = 0;  // of the quadrature and the MLE's chains; 0: one per core
 
   void add_to(CLI::App& command);
+  // --threads, for commands that have no other (fit; synthesize passes its sampling threads).
+  void add_threads_to(CLI::App& command);
   // The edge treatment, with auto resolved for the reader's flags.
   std::string edge_for(const ReaderFlags& reader) const;
   fit::FitOptions options(const ReaderFlags& reader) const;  // throws core::UsageError

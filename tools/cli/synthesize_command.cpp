@@ -277,6 +277,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
         return args->sample.run(method, args->output, std::move(record), out);
       }
       args->fit.options(args->reader);  // its own checks, before reading or fitting anything
+      args->fit.threads = args->sample.threads;
       geometry::Scene exemplar;
       const fit::FitResult fitted =
           fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity,
