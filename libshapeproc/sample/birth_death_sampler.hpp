@@ -79,6 +79,9 @@ struct SampleResult {
   // trace has one point per sweep, without a log density; its `statistics` stay empty.
   int cells = 0, sweeps = 0;
   double pilot_density = 0.0;
+  // The cells of the last sweep: their side and the offset of their boundaries from the domain's
+  // lower corner (to look for seams there).
+  geometry::Vec3 cell_side = geometry::Vec3::Zero(), cell_offset = geometry::Vec3::Zero();
 };
 
 // The shape process as a synthesis method: construction validates the model and options and

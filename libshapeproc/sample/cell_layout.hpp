@@ -22,6 +22,7 @@ class CellLayout {
   // Shifts the cell boundaries by `offset`, each coordinate in [0, the cell's side).
   void set_offset(const geometry::Vec3& offset);
   const geometry::Vec3& side() const { return side_; }
+  const geometry::Vec3& offset() const { return offset_; }
 
   int count() const { return total_; }
   int colours() const { return 1 << dimension_; }

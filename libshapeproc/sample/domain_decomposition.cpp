@@ -21,9 +21,11 @@ constexpr double kElementsPerCell = 64;  // the cells' size at the pilot's densi
 constexpr double kStepsPerElement = 10;  // steps of a visit per expected element of its cell
 constexpr long long kLeastVisitSteps = 50;
 constexpr int kLeastSweeps = 10;
-constexpr int kMostSweeps = 1000;         // about 20,000 steps per element (automatic rule)
+constexpr int kMostSweeps = 200;          // about 2,000 steps per element (automatic rule)
 constexpr std::size_t kLeastCounts = 24;  // the stationarity test's counts (one per colour visit)
-constexpr double kPilotReaches = 6;       // the pilot torus's side, in reaches
+// The pilot torus's side in reaches (2D, 3D): a few hundred elements at the shipped exemplars'
+// densities; a 3D torus of 6 reaches held 2,800 pebbles and took minutes.
+constexpr double kPilotReaches2 = 6, kPilotReaches3 = 2.5;
 constexpr long long kPilotStepsPerElement = 200;
 constexpr long long kPilotMostSteps = 2'000'000;
 constexpr long long kInsertAttempts = 30;  // random sequential insertion: tries per element wanted
@@ -41,7 +43,7 @@ std::uint64_t mix(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std::uin
 }
 
 // The model's stationary density (elements per unit measure): exact without interaction, else the
-// mean count over the second half of a chain on a torus of kPilotReaches reaches (at most the
+// mean count over the second half of a chain on a torus of kPilotReaches2 or 3 reaches (at most the
 // domain's sizes), run until that half looks stationary and the chain has made
 // kPilotStepsPerElement steps per element. It sets the fill's target and the visits' lengths, so
 // it need not be precise: the decomposed chain itself reaches the model's count.
@@ -55,7 +57,9 @@ double pilot_density(const model::ShapeProcessModel& model, const ChainTables& t
   const geometry::Box3& box = whole.domain.box();
   geometry::Vec3 sizes = geometry::Vec3::Zero();
   for (int axis = 0; axis < tables.dimension; ++axis)
-    sizes[axis] = std::min(box.sizes()[axis], kPilotReaches * tables.reach);
+    sizes[axis] =
+        std::min(box.sizes()[axis],
+                 (tables.dimension == 3 ? kPilotReaches3 : kPilotReaches2) * tables.reach);
   const geometry::Domain torus(geometry::Box3(box.min(), box.min() + sizes), tables.dimension,
                                geometry::Boundary::torus);
   const ChainTables pilot_tables(model, torus);
@@ -277,6 +281,8 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   result.cells = cells.layout().count();
   result.sweeps = done;
   result.pilot_density = density;
+  result.cell_side = cells.layout().side();
+  result.cell_offset = cells.layout().offset();
   return result;
 }
 

@@ -173,3 +173,51 @@ TEST(DomainDecomposition, MomentsAgreeWithTheWholeDomainChain) {
 
 }  // namespace
 }  // namespace shapeproc::sample
+
+namespace shapeproc::sample {
+namespace {
+
+// No seam: pairs closer than 3 cross the last sweep's cell boundaries as often as a stationary
+// pattern's would. A pair d apart, placed at random, crosses the lines x = o + k s or y = o + k s
+// with probability p(d) = |d_x| / s + |d_y| / s − |d_x| |d_y| / s²; over 40 outputs of a Strauss
+// process on a 160 × 160 torus in 16 cells of 40, the crossing pairs' count is within 3 standard
+// deviations (Σ p (1 − p)) of Σ p. (A sampler that handled the boundaries wrongly would thin or
+// crowd the pairs there.)
+TEST(DomainDecomposition, PairsCrossCellBoundariesAsOftenAsAnywhere) {
+  const model::ShapeProcessModel m = testing::point_model(0.08, {1.0, 3.0}, {0.4});
+  const geometry::Domain domain =
+      geometry::Domain::from_sizes({160, 160}, geometry::Boundary::torus);
+  double crossing = 0, expected = 0, variance = 0;
+  for (std::uint64_t run = 0; run < 40; ++run) {
+    SamplerOptions options;
+    options.decompose = true;
+    const ShapeProcessSampler sampler(m, domain, options);
+    core::Random random(900 + run);
+    const SampleResult r = sampler.sample(random);
+    ASSERT_EQ(r.cells, 16);
+    const Vec3 side = r.cell_side, offset = r.cell_offset;
+    const auto& points = r.scene.elements;
+    const auto cell = [&](double v, int axis) {
+      return std::floor((v - offset[axis]) / side[axis]);
+    };
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      for (std::size_t j = i + 1; j < points.size(); ++j) {
+        const Vec3 d =
+            geometry::minimum_image(points[j].position - points[i].position, Vec3(160, 160, 0));
+        if (d.norm() >= 3) continue;
+        const Vec3 a = points[i].position, b = a + d;  // b unwrapped next to a
+        const bool crosses = cell(a.x(), 0) != cell(b.x(), 0) || cell(a.y(), 1) != cell(b.y(), 1);
+        const double px = std::abs(d.x()) / side.x(), py = std::abs(d.y()) / side.y();
+        const double p = px + py - px * py;
+        crossing += crosses ? 1 : 0;
+        expected += p;
+        variance += p * (1 - p);
+      }
+    }
+  }
+  ASSERT_GT(expected, 100) << "the test needs crossing pairs";
+  EXPECT_NEAR(crossing, expected, 3 * std::sqrt(variance));
+}
+
+}  // namespace
+}  // namespace shapeproc::sample
