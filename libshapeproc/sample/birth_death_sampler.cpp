@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
@@ -111,6 +112,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
     break;
   }
   result.iterations = step;
+  result.trend = rule.last_check();
   if (automatic && control.progress) control.progress(step, step);
   result.moves = chain.moves();
   result.statistics = chain.statistics();
@@ -141,6 +143,13 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   out.counters = {{"births accepted", ratio(m.births_accepted, m.births_proposed)},
                   {"deaths", ratio(m.deaths_accepted, m.deaths_proposed)},
                   {"shifts", ratio(m.shifts_accepted, m.shifts_proposed)}};
+  if (options_.iterations <= 0 && sampled.trend.first > 0) {
+    const CountTrend& t = sampled.trend;
+    record.options.emplace_back("stationarity", "mean counts " + core::format_general(t.first, 6) +
+                                                    " then " + core::format_general(t.second, 6) +
+                                                    ", standard error of the change " +
+                                                    core::format_general(t.standard_error, 3));
+  }
   if (sampled.cells > 0) {
     out.counters.emplace_back("cells", std::to_string(sampled.cells));
     out.counters.emplace_back("sweeps", std::to_string(sampled.sweeps));

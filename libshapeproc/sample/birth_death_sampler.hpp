@@ -21,6 +21,7 @@
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 #include "libshapeproc/sample/move_counts.hpp"
+#include "libshapeproc/sample/stationarity.hpp"
 #include "libshapeproc/synthesis/synthesizer.hpp"
 
 namespace shapeproc::sample {
@@ -75,6 +76,9 @@ struct SampleResult {
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
   int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
+  // The automatic rule's last check: the mean counts of the two quarters it compared and the
+  // standard error of their difference (zero with --iterations).
+  CountTrend trend;
   // A decomposed run: its cells, its sweeps and the pilot chain's density (0 otherwise). Its
   // trace has one point per sweep, without a log density; its `statistics` stay empty.
   int cells = 0, sweeps = 0;

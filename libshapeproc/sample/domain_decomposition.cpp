@@ -266,9 +266,10 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
       if (steps >= options.iterations) break;
       continue;
     }
-    if (number >= kLeastSweeps && counts.size() >= 2 * kLeastCounts &&
-        is_stationary(counts, kLeastCounts))
-      break;
+    if (number >= kLeastSweeps && counts.size() >= 2 * kLeastCounts) {
+      result.trend = count_trend(counts, kLeastCounts);
+      if (result.trend.stationary) break;
+    }
     if (number >= kMostSweeps) {
       result.stationary = false;
       break;

@@ -8,9 +8,9 @@ namespace shapeproc::sample {
 // The means of the second half's two quarters, a quarter of the run apart: a trend that would
 // move the count by max(1, 1%) over as many steps again keeps the chain going (packed exemplars
 // creep up by an element every few ten thousand steps, with little noise).
-bool is_stationary(const std::vector<int>& counts, std::size_t least) {
+CountTrend count_trend(const std::vector<int>& counts, std::size_t least) {
   const std::size_t half = counts.size() / 2, length = counts.size() - half;
-  if (length < std::max<std::size_t>(least, 10)) return false;
+  if (length < std::max<std::size_t>(least, 10)) return {};
   constexpr int kBatches = 10;
   std::vector<double> batch(kBatches, 0.0);
   const std::size_t per_batch = length / kBatches;
@@ -26,13 +26,17 @@ bool is_stationary(const std::vector<int>& counts, std::size_t least) {
   double variance = 0.0;
   for (double m : batch) variance += (m - mean) * (m - mean) / (kBatches - 1);
   const double standard_error = std::sqrt(variance * (2.0 / (kBatches / 2)));
-  return std::abs(second - first) <= 0.25 * std::max(1.0, 0.01 * mean) + 2.0 * standard_error;
+  return {std::abs(second - first) <= 0.25 * std::max(1.0, 0.01 * mean) + 2.0 * standard_error,
+          first, second, standard_error};
 }
 
 StationarityRule::Verdict StationarityRule::after_step(long long step, int elements) {
   if (step % kStride == 0) counts_.push_back(elements);
   if (step < next_check_) return Verdict::keep_going;
-  if (step >= kStepsPerElement * elements && is_stationary(counts_)) return Verdict::stationary;
+  if (step >= kStepsPerElement * elements) {
+    last_ = count_trend(counts_);
+    if (last_.stationary) return Verdict::stationary;
+  }
   if (step >= max_steps_) return Verdict::gave_up;
   next_check_ = std::min(max_steps_, std::max(step + 10000, step + step / 4));
   return Verdict::keep_going;

@@ -11,9 +11,17 @@
 
 namespace shapeproc::sample {
 
-// The test on counts recorded at even intervals: true when their second half (at least `least`
-// counts) looks stationary.
-bool is_stationary(const std::vector<int>& counts, std::size_t least = 100);
+// The test on counts recorded at even intervals: the means of the second half's two quarters,
+// the standard error of their difference (batch means), and whether they agree within the rule's
+// tolerance; not stationary with fewer than `least` counts in the second half.
+struct CountTrend {
+  bool stationary = false;
+  double first = 0.0, second = 0.0, standard_error = 0.0;
+};
+CountTrend count_trend(const std::vector<int>& counts, std::size_t least = 100);
+inline bool is_stationary(const std::vector<int>& counts, std::size_t least = 100) {
+  return count_trend(counts, least).stationary;
+}
 
 class StationarityRule {
  public:
@@ -22,12 +30,15 @@ class StationarityRule {
   enum class Verdict { keep_going, stationary, gave_up };
   // Called after every step with the element count.
   Verdict after_step(long long step, int elements);
+  // The last check's quarters (all zero before the first check).
+  const CountTrend& last_check() const { return last_; }
 
  private:
   static constexpr long long kMinimumSteps = 20000, kStride = 10, kStepsPerElement = 1000;
   long long max_steps_;
   long long next_check_ = kMinimumSteps;
   std::vector<int> counts_;  // every kStride steps
+  CountTrend last_;
 };
 
 }  // namespace shapeproc::sample

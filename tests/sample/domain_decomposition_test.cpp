@@ -91,6 +91,10 @@ TEST(DomainDecomposition, SameSeedSameOutputWithAnyThreadsAndNoHardCoreBroken) {
   const SampleResult one = decomposed(m, domain, 5, 1);
   const SampleResult two = decomposed(m, domain, 5, 2);
   ASSERT_GT(one.cells, 0) << "the domain is decomposed";
+  // The automatic rule stopped on its test, whose quarters the result keeps.
+  EXPECT_TRUE(one.stationary);
+  EXPECT_TRUE(one.trend.stationary);
+  EXPECT_GT(one.trend.first, 0.0);
   ASSERT_GT(one.scene.elements.size(), 50U);
   ASSERT_EQ(one.scene.elements.size(), two.scene.elements.size());
   for (std::size_t i = 0; i < one.scene.elements.size(); ++i)
