@@ -7,7 +7,11 @@ namespace shapeproc::geometry {
 
 NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size,
                              bool periodic)
-    : window_(window), dimension_(dimension), periodic_(periodic) {
+    : NeighbourGrid(window, dimension, cell_size, {periodic, periodic, periodic}) {}
+
+NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size,
+                             const std::array<bool, 3>& periodic_axes)
+    : window_(window), dimension_(dimension), periodic_(periodic_axes) {
   const geometry::Vec3 sizes = window.sizes();
   for (int axis = 0; axis < 3; ++axis) {
     const bool used = axis < dimension && sizes[axis] > 0;
@@ -36,7 +40,7 @@ Eigen::Vector3i NeighbourGrid::cell_of(const geometry::Vec3& p) const {
 bool NeighbourGrid::wrap(Eigen::Vector3i& c) const {
   for (int axis = 0; axis < 3; ++axis) {
     if (c[axis] >= 0 && c[axis] < counts_[axis]) continue;
-    if (!periodic_) return false;
+    if (!periodic_[static_cast<std::size_t>(axis)]) return false;
     c[axis] = ((c[axis] % counts_[axis]) + counts_[axis]) % counts_[axis];
   }
   return true;

@@ -13,6 +13,9 @@ class NeighbourGrid {
  public:
   // Cells of at least `cell_size` covering `window`; with `periodic`, queries wrap around.
   NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size, bool periodic);
+  // The same, wrapping only along the axes where `periodic_axes` is true.
+  NeighbourGrid(const geometry::Box3& window, int dimension, double cell_size,
+                const std::array<bool, 3>& periodic_axes);
 
   void insert(int id, const geometry::Vec3& position);
   void remove(int id, const geometry::Vec3& position);
@@ -48,7 +51,7 @@ class NeighbourGrid {
 
   geometry::Box3 window_;
   int dimension_;
-  bool periodic_;
+  std::array<bool, 3> periodic_{};
   Eigen::Vector3i counts_;
   geometry::Vec3 cell_;
   std::vector<std::vector<int>> cells_;

@@ -78,7 +78,8 @@ BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& r
     : t_(tables),
       r_(region),
       random_(random),
-      state_(*tables.interaction, *tables.measurer, region.domain, tables.reach, region.grid_box) {
+      state_(*tables.interaction, *tables.measurer, region.domain, tables.reach, region.grid_box,
+             region.period) {
   log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
                             std::log(static_cast<double>(t_.shapes_of.size()));
   for (const Element& e : fixed) {
@@ -204,6 +205,12 @@ void BirthDeathChain::propose_shift() {
   const geometry::Domain& domain = r_.domain;
   bool inside;
   if (r_.confined) {
+    for (int axis = 0; axis < t_.dimension; ++axis) {
+      const double period = r_.period[axis];
+      if (period > 0)
+        moved.position[axis] -=
+            period * std::floor((moved.position[axis] - r_.free_region.min()[axis]) / period);
+    }
     inside = in_free_region(moved.position);
   } else {
     moved.position = domain.wrap(moved.position);

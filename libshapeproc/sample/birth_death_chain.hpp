@@ -50,6 +50,9 @@ struct ChainRegion {
   // around it that can interact with it.
   geometry::Box3 grid_box;
   bool confined = false;  // a cell of a decomposition: shifts never leave the free region
+  // A decomposition's cell that spans a torus along an axis it does not cut: the torus's period
+  // along that axis (0 along the others). The configuration and the shifts wrap along it.
+  geometry::Vec3 period = geometry::Vec3::Zero();
   double shift_probability = 1.0 / 3.0;
   double shift_radius = 1.0;
 };

@@ -5,6 +5,7 @@
 // random offset, so that no cell boundary stays in place.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -15,14 +16,18 @@ namespace shapeproc::sample {
 class CellLayout {
  public:
   // The layout of `domain` with cells at least `side` long, or nothing when the domain is too
-  // small to cut: a torus needs an even number of cells, at least 4, along each axis (so that a
-  // cell and the ring around it never meet their own images); an open domain at least 2.
+  // small to cut along any axis. A torus is cut along an axis into an even number of cells, at
+  // least 4 (so that a cell and the ring around it never meet their own images), an open domain
+  // into at least 2; an axis too short for that is not cut: every cell spans it (a thin slab).
   static std::optional<CellLayout> plan(const geometry::Domain& domain, double side);
 
   // Shifts the cell boundaries by `offset`, each coordinate in [0, the cell's side).
   void set_offset(const geometry::Vec3& offset);
   const geometry::Vec3& side() const { return side_; }
   const geometry::Vec3& offset() const { return offset_; }
+  bool cut(int axis) const { return cut_[static_cast<std::size_t>(axis)]; }
+  // Along the torus's axes that are not cut, its period (cells wrap around there); 0 elsewhere.
+  geometry::Vec3 spanned_period() const;
 
   int count() const { return total_; }
   int colours() const { return 1 << dimension_; }
@@ -50,6 +55,7 @@ class CellLayout {
   geometry::Vec3 side_ = geometry::Vec3::Ones();
   geometry::Vec3 offset_ = geometry::Vec3::Zero();
   int total_ = 1;
+  std::array<bool, 3> cut_{};
 };
 
 }  // namespace shapeproc::sample

@@ -10,12 +10,14 @@ namespace shapeproc::sample {
 
 Configuration::Configuration(const model::Interaction& interaction,
                              const geometry::PairMeasurer& measurer, const geometry::Domain& domain,
-                             double reach, const geometry::Box3& grid_box)
+                             double reach, const geometry::Box3& grid_box, const Vec3& period)
     : interaction_(interaction),
       measurer_(measurer),
       grid_(grid_box.isEmpty() ? domain.box() : grid_box, domain.dimension(), reach,
-            domain.periodic()),
-      period_(domain.period()) {
+            period.isZero()
+                ? std::array<bool, 3>{domain.periodic(), domain.periodic(), domain.periodic()}
+                : std::array<bool, 3>{period.x() > 0, period.y() > 0, period.z() > 0}),
+      period_(period.isZero() ? domain.period() : period) {
   statistics_.assign(static_cast<std::size_t>(interaction.statistic_count()), 0.0);
   shape_distances_ = measurer.options().distance == geometry::DistanceKind::shape;
 }

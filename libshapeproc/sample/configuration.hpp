@@ -30,10 +30,13 @@ class Configuration {
  public:
   // `reach`: the farthest reference positions of two interacting elements can be. The neighbour
   // grid covers `grid_box` (empty: the domain's box), the part of the domain where the
-  // configuration's elements lie (a decomposition's cell and its surroundings).
+  // configuration's elements lie (a decomposition's cell and its surroundings). `period`, when
+  // not zero, replaces the domain's torus period: the configuration wraps along the axes where it
+  // is positive (a cell that spans a torus along an axis the decomposition does not cut).
   Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
                 const geometry::Domain& domain, double reach,
-                const geometry::Box3& grid_box = geometry::Box3());
+                const geometry::Box3& grid_box = geometry::Box3(),
+                const Vec3& period = Vec3::Zero());
 
   int size() const { return static_cast<int>(alive_.size()); }
   const Element& at(int slot) const { return elements_[static_cast<std::size_t>(slot)]; }

@@ -126,7 +126,9 @@ class Cells {
     const geometry::Box3 box = layout_.box(cell);
     if (!(measure(cell) > 0)) return {};
     const geometry::Vec3 centre = box.center();
-    const geometry::Vec3 margin = geometry::Vec3::Constant(tables_.reach);
+    geometry::Vec3 margin = geometry::Vec3::Zero();  // none along the axes cells span
+    for (int axis = 0; axis < tables_.dimension; ++axis)
+      if (layout_.cut(axis)) margin[axis] = tables_.reach;
     geometry::Box3 grid(box.min() - margin, box.max() + margin);
     if (!whole_.domain.periodic()) grid = grid.intersection(whole_.domain.box());
     ChainRegion region{whole_.domain.periodic()
@@ -135,6 +137,7 @@ class Cells {
                        box};
     region.grid_box = grid;
     region.confined = true;
+    region.period = layout_.spanned_period();
     region.shift_probability = whole_.shift_probability;
     region.shift_radius = whole_.shift_radius;
     std::vector<Element> around, own;
@@ -205,7 +208,12 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   const double density = pilot_density(model, tables, whole, mix(run_seed, 0, 0, 0));
   // Cells of the preferred side, or as large as the domain allows (4 per axis on a torus, 2 on an
   // open domain), never under the reach.
-  const double fits = domain.box().sizes().head(dimension).minCoeff() / (domain.periodic() ? 4 : 2);
+  const double least_cells = domain.periodic() ? 4 : 2;
+  double fits = std::numeric_limits<double>::infinity();  // over the axes that can be cut
+  for (int axis = 0; axis < dimension; ++axis) {
+    const double size = domain.box().sizes()[axis];
+    if (size >= least_cells * tables.reach) fits = std::min(fits, size / least_cells);
+  }
   std::optional<CellLayout> layout = CellLayout::plan(
       domain, std::max(tables.reach, std::min(cell_side(tables.reach, density, dimension), fits)));
   if (!layout)
@@ -229,6 +237,7 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
       std::vector<int> ids;
       for (int c = 0; c < cells.layout().count(); ++c)
         if (cells.layout().colour(c) == colour) ids.push_back(c);
+      if (ids.empty()) continue;  // a colour of an axis that is not cut
       core::parallel_for(static_cast<long long>(ids.size()), options.threads, [&](long long i) {
         const int cell = ids[static_cast<std::size_t>(i)];
         const std::uint64_t seed =

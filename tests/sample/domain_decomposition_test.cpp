@@ -46,6 +46,24 @@ TEST(CellLayout, ColoursKeepNeighboursApartOnATorus) {
   EXPECT_FALSE(CellLayout::plan(torus, 30.0));
 }
 
+// A strip: a 160 × 8 torus in cells of at least 3 is cut into 52 along its length and not at
+// all across (8 holds 2 cells of 3, under the 4 a torus needs): every cell spans the strip's
+// width and wraps around it.
+TEST(CellLayout, AThinAxisIsNotCut) {
+  const geometry::Domain strip = geometry::Domain::from_sizes({160, 8}, geometry::Boundary::torus);
+  std::optional<CellLayout> layout = CellLayout::plan(strip, 3.0);
+  ASSERT_TRUE(layout);
+  EXPECT_EQ(layout->count(), 52);
+  EXPECT_TRUE(layout->cut(0));
+  EXPECT_FALSE(layout->cut(1));
+  EXPECT_EQ(layout->spanned_period(), Vec3(0, 8, 0));
+  layout->set_offset(Vec3(1.5, 2.5, 0));
+  EXPECT_EQ(layout->box(7).min().y(), 0.0);
+  EXPECT_EQ(layout->box(7).max().y(), 8.0);
+  EXPECT_EQ(layout->around(7).size(), 2U);
+  EXPECT_EQ(layout->cell_of(Vec3(1.6, 7.9, 0)), layout->cell_of(Vec3(1.6, 0.1, 0)));
+}
+
 // An open 100 × 60 domain in cells of 20 (5 × 3) gets one partial cell more along each axis; the
 // cells' boxes tile the domain whatever the offset.
 TEST(CellLayout, AnOpenDomainIsTiledByItsShiftedCells) {
@@ -180,6 +198,45 @@ TEST(DomainDecomposition, MomentsAgreeWithTheWholeDomainChain) {
 
 namespace shapeproc::sample {
 namespace {
+
+// The same Strauss process on a 320 × 8 torus strip, cut along its length only (the cells wrap
+// across it): 60 decomposed outputs against 60 whole-domain outputs of 300,000 steps, mean count
+// and close pairs within 3 standard errors of the difference.
+TEST(DomainDecomposition, AStripCutAlongItsLengthKeepsTheModel) {
+  const model::ShapeProcessModel m = testing::point_model(0.08, {1.0, 3.0}, {0.4});
+  const geometry::Domain strip = geometry::Domain::from_sizes({320, 8}, geometry::Boundary::torus);
+  constexpr int kRuns = 60;
+  double count[2] = {0, 0}, count2[2] = {0, 0}, pairs[2] = {0, 0}, pairs2[2] = {0, 0};
+  for (int run = 0; run < kRuns; ++run) {
+    for (int whole = 0; whole < 2; ++whole) {
+      SamplerOptions options;
+      options.decompose = whole == 0;
+      if (whole) options.iterations = 300000;
+      const ShapeProcessSampler sampler(m, strip, options);
+      core::Random random(static_cast<std::uint64_t>(1000 * whole + run + 1));
+      const SampleResult r = sampler.sample(random);
+      if (whole == 0) ASSERT_GT(r.cells, 0);
+      double close = 0;
+      const auto& e = r.scene.elements;
+      for (std::size_t i = 0; i < e.size(); ++i)
+        for (std::size_t j = i + 1; j < e.size(); ++j)
+          if (geometry::minimum_image(e[j].position - e[i].position, Vec3(320, 8, 0)).norm() < 3)
+            close += 1;
+      const double n = static_cast<double>(e.size());
+      count[whole] += n / kRuns;
+      count2[whole] += n * n / kRuns;
+      pairs[whole] += close / kRuns;
+      pairs2[whole] += close * close / kRuns;
+    }
+  }
+  const auto se = [&](const double* mean, const double* square) {
+    double v = 0;
+    for (int k = 0; k < 2; ++k) v += (square[k] - mean[k] * mean[k]) / (kRuns - 1);
+    return std::sqrt(v);
+  };
+  EXPECT_NEAR(count[0], count[1], 3 * se(count, count2));
+  EXPECT_NEAR(pairs[0], pairs[1], 3 * se(pairs, pairs2));
+}
 
 // No seam: pairs closer than 3 cross the last sweep's cell boundaries as often as a stationary
 // pattern's would. A pair d apart, placed at random, crosses the lines x = o + k s or y = o + k s
