@@ -11,6 +11,7 @@
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "tests/point_model.hpp"
+#include "tests/squares_model.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -88,16 +89,7 @@ TEST(BirthDeath, FixedElementsStayAndBirthsKeepToTheFreeRegion) {
   EXPECT_NEAR(mean, expected, 4 * std::sqrt(expected / runs));
 }
 
-const char* kSquares = R"({
-  "format": "shapeproc-model", "version": 1, "dimension": 2,
-  "categories": [ { "name": "squares", "beta": 0.2 } ],
-  "interaction": [ { "categories": [0, 0], "axes": [
-      { "direction": [1, 0], "thresholds": [2, 6], "gammas": [0.5] },
-      { "direction": [0.7071067811865476, 0.7071067811865476], "thresholds": [4, 6], "gammas": [0.5] },
-      { "direction": [0, 1], "thresholds": [8, 10], "gammas": [0.5] },
-      { "direction": [-0.7071067811865476, 0.7071067811865476], "thresholds": [4, 6], "gammas": [0.5] } ] } ],
-  "shapes": [ { "category": 0, "geometry": { "type": "paths", "parts": [ { "d": "M0 0h6v1h-6z" } ] } } ]
-})";
+const char* const kSquares = testing::kSquaresModel;
 
 // A start configuration: elements the hard core allows are kept (and then moved and removed like
 // any other), one closer than the hard core to one before it and one outside the domain are left

@@ -9,6 +9,7 @@
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/sample/cell_layout.hpp"
 #include "tests/point_model.hpp"
+#include "tests/squares_model.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -79,16 +80,7 @@ TEST(CellLayout, AnOpenDomainIsTiledByItsShiftedCells) {
   EXPECT_EQ(layout->cell_of(Vec3(99.9, 59.9, 0)), layout->count() - 1);
 }
 
-const char* kSquares = R"({
-  "format": "shapeproc-model", "version": 1, "dimension": 2,
-  "categories": [ { "name": "squares", "beta": 0.2 } ],
-  "interaction": [ { "categories": [0, 0], "axes": [
-      { "direction": [1, 0], "thresholds": [2, 6], "gammas": [0.5] },
-      { "direction": [0.7071067811865476, 0.7071067811865476], "thresholds": [4, 6], "gammas": [0.5] },
-      { "direction": [0, 1], "thresholds": [8, 10], "gammas": [0.5] },
-      { "direction": [-0.7071067811865476, 0.7071067811865476], "thresholds": [4, 6], "gammas": [0.5] } ] } ],
-  "shapes": [ { "category": 0, "geometry": { "type": "paths", "parts": [ { "d": "M0 0h6v1h-6z" } ] } } ]
-})";
+const char* const kSquares = testing::kSquaresModel;
 
 SampleResult decomposed(const model::ShapeProcessModel& m, const geometry::Domain& domain,
                         std::uint64_t seed, int threads) {
