@@ -93,6 +93,7 @@ class Cells {
   // Moves every element to the cell that holds it under the current offset.
   void sort_into_cells(std::vector<Element> elements) {
     cells_.assign(static_cast<std::size_t>(layout_.count()), {});
+    left_out_.resize(cells_.size(), 0);
     for (const Element& e : elements)
       cells_[static_cast<std::size_t>(layout_.cell_of(e.position))].push_back(e);
   }
@@ -166,6 +167,9 @@ class Cells {
     std::vector<Element>& mine = cells_[static_cast<std::size_t>(cell)];
     mine = chain.free_elements();
     for (Element& e : mine) e.position = whole_.domain.wrap(e.position);
+    // Own elements the hard core refused on entering (start elements in conflict; none after the
+    // first visit): written by this cell's visit only.
+    left_out_[static_cast<std::size_t>(cell)] += chain.start_left_out();
     return chain.moves();
   }
 
@@ -181,6 +185,14 @@ class Cells {
   CellLayout layout_;
   double density_;
   std::vector<std::vector<Element>> cells_;
+  std::vector<int> left_out_;  // per cell
+
+ public:
+  int left_out() const {
+    int n = 0;
+    for (int k : left_out_) n += k;
+    return n;
+  }
 };
 
 }  // namespace
@@ -258,7 +270,7 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   result.stationary = true;
   if (!options.start.empty()) {
     cells.sort_into_cells(options.start);  // kept where the hard core allows, at the first visit
-    result.start_kept = static_cast<int>(options.start.size());
+    result.start_kept = static_cast<int>(options.start.size());  // less those left out, below
   } else {
     sweep(0, true);
   }
@@ -285,6 +297,8 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     }
   }
   result.iterations = steps;
+  result.start_left_out = cells.left_out();
+  result.start_kept -= result.start_left_out;
   for (const MoveCounts& m : moves) result.moves += m;
   result.scene = tables.shape_space;
   result.scene.elements = cells.all();

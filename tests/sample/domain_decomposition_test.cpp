@@ -121,6 +121,23 @@ TEST(DomainDecomposition, SameSeedSameOutputWithAnyThreadsAndNoHardCoreBroken) {
   }
 }
 
+// A start configuration is kept where the hard core allows: of two points 0.5 apart (hard core
+// 1), whichever cell is visited second refuses its own.
+TEST(DomainDecomposition, AStartKeepsWhatTheHardCoreAllows) {
+  const model::ShapeProcessModel m = testing::point_model(0.08, {1.0, 3.0}, {0.4});
+  const geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
+  SamplerOptions options;
+  options.decompose = true;
+  options.iterations = 10;
+  options.start = {{0, 0, Vec3(10, 10, 0)}, {0, 0, Vec3(10.5, 10, 0)}, {0, 0, Vec3(30, 30, 0)}};
+  const ShapeProcessSampler sampler(m, domain, options);
+  core::Random random(4);
+  const SampleResult r = sampler.sample(random);
+  ASSERT_GT(r.cells, 0);
+  EXPECT_EQ(r.start_kept, 2);
+  EXPECT_EQ(r.start_left_out, 1);
+}
+
 // Count, close pairs and mean nearest-neighbour distance of points on a torus.
 struct PointMoments {
   double count = 0, pairs = 0, nearest = 0;
