@@ -104,6 +104,13 @@ class Cells {
     return out;
   }
 
+  // Start elements the hard core refused, over every visit so far.
+  int left_out() const {
+    int n = 0;
+    for (int k : left_out_) n += k;
+    return n;
+  }
+
   long long size() const {
     long long n = 0;
     for (const auto& cell : cells_) n += static_cast<long long>(cell.size());
@@ -114,10 +121,8 @@ class Cells {
 
   // The steps of a visit: fixed by the pilot's density and the cell's measure.
   long long visit_steps(int cell) const {
-    const double expected = density_ * measure(cell);
-    return expected > 0 || measure(cell) > 0
-               ? std::max(kLeastVisitSteps, std::llround(kStepsPerElement * expected))
-               : 0;
+    if (!(measure(cell) > 0)) return 0;  // an open domain's empty partial cell
+    return std::max(kLeastVisitSteps, std::llround(kStepsPerElement * density_ * measure(cell)));
   }
 
   // Updates `cell` given the elements around it: `steps` birth-death steps, or (fill) random
@@ -186,13 +191,6 @@ class Cells {
   double density_;
   std::vector<std::vector<Element>> cells_;
   std::vector<int> left_out_;  // per cell
-
- public:
-  int left_out() const {
-    int n = 0;
-    for (int k : left_out_) n += k;
-    return n;
-  }
 };
 
 }  // namespace
