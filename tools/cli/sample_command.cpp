@@ -98,7 +98,10 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
   command.add_option("--seed", seed, "random seed")->capture_default_str();
   command.add_option("--chains", chains, "independent chains; outputs get -1, -2, ... suffixes")
       ->check(CLI::Range(1, 1000));
-  command.add_option("--threads", threads, "threads for the chains (default: one per core)")
+  command
+      .add_option("--threads", threads,
+                  "threads for the chains, and for the cells of each output when decomposed "
+                  "(default: one per core; outputs do not depend on them)")
       ->check(CLI::Range(0, 256));
   command.add_flag("--force", force, "overwrite outputs that exist (refused otherwise)");
   command
