@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <system_error>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
@@ -182,7 +183,8 @@ void SampleFlags::check(const std::string& output, int dimension) const {
     int existing = 0;
     std::string first;
     for (const std::string& file : files) {
-      if (!std::filesystem::exists(file)) continue;
+      std::error_code error;  // a name the system refuses (too long) is no existing file
+      if (!std::filesystem::exists(file, error)) continue;
       if (existing++ == 0) first = file;
     }
     if (existing > 0)

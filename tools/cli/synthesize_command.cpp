@@ -4,6 +4,7 @@
 // chains, outputs and pictures. The methods' own flags are in method_flags.
 #include <filesystem>
 #include <memory>
+#include <system_error>
 #include <vector>
 
 #include "libshapeproc/compare/hybrid_synthesis.hpp"
@@ -176,7 +177,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
       if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
       if (!args->model.empty() && io::extension_of(args->model) != "json")
         throw core::UsageError(args->model + ": the model is written as .json");
-      if (!args->model.empty() && !args->sample.force && std::filesystem::exists(args->model))
+      std::error_code missing;  // a name the system refuses (too long) is no existing file
+      if (!args->model.empty() && !args->sample.force &&
+          std::filesystem::exists(args->model, missing))
         throw core::UsageError(args->model +
                                " exists: give --force to overwrite, or another "
                                "--model");
