@@ -11,6 +11,7 @@
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "tests/point_model.hpp"
+#include "tests/sample/hard_core_check.hpp"
 #include "tests/squares_model.hpp"
 
 namespace shapeproc::sample {
@@ -137,16 +138,7 @@ TEST(BirthDeath, HardCoreIsNeverViolated) {
   options.iterations = 30000;
   const SampleResult result = sample_with_seed(m, domain, options, 11);
   ASSERT_GT(result.scene.elements.size(), 10u);
-  const geometry::PairMeasurer measurer(result.scene, m.measurement_options(true));
-  for (std::size_t i = 0; i < result.scene.elements.size(); ++i) {
-    for (std::size_t j = i + 1; j < result.scene.elements.size(); ++j) {
-      const geometry::Measurement pair =
-          measurer.measure(result.scene.elements[i], result.scene.elements[j]);
-      EXPECT_GE(pair.distance,
-                m.interactions[0].axes[static_cast<std::size_t>(pair.axis)].thresholds[0])
-          << i << " " << j;
-    }
-  }
+  EXPECT_EQ(testing::hard_core_violations(result.scene, m), std::vector<std::string>{});
 }
 
 TEST(BirthDeath, SameSeedSameOutput) {
