@@ -20,7 +20,7 @@ namespace {
 constexpr double kElementsPerCell = 64;  // the cells' size at the pilot's density
 constexpr double kStepsPerElement = 10;  // steps of a visit per expected element of its cell
 constexpr long long kLeastVisitSteps = 50;
-constexpr int kLeastSweeps = 10;
+constexpr int kLeastSweeps = 20;
 constexpr int kMostSweeps = 200;          // about 2,000 steps per element (automatic rule)
 constexpr std::size_t kLeastCounts = 24;  // the stationarity test's counts (one per colour visit)
 // The pilot torus's side in reaches (2D, 3D): a few hundred elements at the shipped exemplars'
