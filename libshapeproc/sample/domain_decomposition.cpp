@@ -150,7 +150,7 @@ class Cells {
     for (int other : layout_.around(cell)) {
       for (Element e : cells_[static_cast<std::size_t>(other)]) {
         e.position = layout_.image_near(e.position, centre);
-        if (within(grid, e.position)) around.push_back(e);
+        if (grid.contains(e.position)) around.push_back(e);
       }
     }
     for (Element e : cells_[static_cast<std::size_t>(cell)]) {
@@ -179,12 +179,6 @@ class Cells {
   }
 
  private:
-  bool within(const geometry::Box3& box, const geometry::Vec3& p) const {
-    for (int axis = 0; axis < tables_.dimension; ++axis)
-      if (p[axis] < box.min()[axis] || p[axis] > box.max()[axis]) return false;
-    return true;
-  }
-
   const ChainTables& tables_;
   const ChainRegion& whole_;
   CellLayout layout_;
