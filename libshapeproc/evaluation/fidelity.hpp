@@ -2,7 +2,8 @@
 //   1. On the exemplar's own window and edge treatment, `chains` chains of the model: the mean of
 //   every
 //      sufficient statistic (elements per category, pairs per band, elements per shape class)
-//      against the exemplar's, in standard errors of that mean (batch means over the chains).
+//      against the exemplar's, in Monte Carlo standard errors of that mean
+//      (fit/effective_sample_size.hpp).
 //   2. `outputs` outputs of `scale` times each side on a torus, sampled to stationarity: their
 //      mean density against the exemplar's with its standard error (one output of an attractive
 //      model varies by far more than 10%), their colliding pairs (shape distance 0), and a
@@ -41,7 +42,7 @@ struct FidelityOptions {
 struct StatisticCheck {
   std::string name;
   double exemplar = 0.0, mean = 0.0;
-  // Of the gap between the chains' mean and the exemplar's value: the chains' batch-means error
+  // Of the gap between the chains' mean and the exemplar's value: the chains' Monte Carlo error
   // and, for a maximum-likelihood fit, the Monte Carlo error of the fit's own expectations (its
   // estimate is only as precise as its last sample), added in quadrature.
   double standard_error = 0.0;

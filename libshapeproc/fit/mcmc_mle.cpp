@@ -66,8 +66,19 @@ constexpr double kDiverged = 10;            // a gap this many times the best on
 constexpr double kMaxOvershoot = 10;        // stationary window: the largest step division
 // Chains that disagree more than this (R-hat) are not at one stationary state: a model that
 // holds a packed exemplar in some chains and loses it in others, or chains still drifting. Their
-// batch-means errors are then inflated by the disagreement, and small z would be no evidence.
+// errors are then inflated by the disagreement, and small z would be no evidence.
 constexpr double kMaxRHat = 1.1;
+// A gap within the tolerance counts only when every free statistic's sample is worth this many
+// independent observations (effective_sample_size.hpp): chains held at a packed exemplar that
+// mix slowly (dashes-rows: 3 from 4 chains of 50,000 steps) give errors as large as the gaps
+// themselves, and a test passed with them says nothing. Such a sample is drawn again at the same
+// θ with proportionally more chains, at most kMostChainFactor times the setting's.
+// A statistic whose mean is known to within kNegligibleError (a tenth of an element or pair) is
+// trusted whatever its effective size: a packed lattice's count that the chains leave once in a
+// long while has almost no variance and almost no effective observations.
+constexpr double kMinEffectiveSize = 20;
+constexpr double kNegligibleError = 0.1;
+constexpr int kMostChainFactor = 16;
 
 using Clock = std::chrono::steady_clock;
 
@@ -110,8 +121,12 @@ class Newton {
         g.gap[i] -= theta[k] * precision;
         g.information(i, i) += precision;
       }
+      // A gap of a tenth of an element or pair is matched, however small its error: a packed
+      // lattice's chains lose an element once in a long while, so that more chains shrink the
+      // error faster than the gap, which only an infinite parameter closes.
       const double se = std::max(m.standard_error[k], 1e-9);
-      g.worst_z = std::max(g.worst_z, std::abs(g.gap[i]) / se);
+      if (std::abs(g.gap[i]) > kNegligibleError)
+        g.worst_z = std::max(g.worst_z, std::abs(g.gap[i]) / se);
     }
     if (windowed_) g.overshoot = overshoot(m);
     return g;
@@ -337,8 +352,23 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     std::vector<double> theta, expected, expected_error;
     double worst_z = std::numeric_limits<double>::infinity();
     double worst_r_hat = std::numeric_limits<double>::infinity();
-  } best;  // by the gap alone: ranking iterates whose chains agree first picked, on
-           // crescents-grid, an early one where every chain had lost the exemplar alike (|z| 538)
+    double ranking_z = std::numeric_limits<double>::infinity();
+  } best;  // by the gap: ranking iterates whose chains agree first picked, on crescents-grid, an
+           // early one where every chain had lost the exemplar alike (|z| 538)
+  // The largest |z| with each error no larger than a sample worth kMinEffectiveSize independent
+  // observations would give: a sample of too few has large errors, and every gap looks small in
+  // them; ranked this way it still competes, on the precision it should have had.
+  const auto ranking_z = [&](const StatisticsMoments& m, const Gap& g) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      const std::size_t k = free[i];
+      const double spread = std::sqrt(std::max(0.0, m.covariance[k * p + k]) / kMinEffectiveSize);
+      const double se =
+          std::max(std::min(m.standard_error[k], std::max(spread, kNegligibleError)), 1e-9);
+      worst = std::max(worst, std::abs(g.gap[static_cast<Eigen::Index>(i)]) / se);
+    }
+    return worst;
+  };
   double last_r_hat = 1.0;
   // Chains started at a packed exemplar hold it and are not meant to mix: their R-hat reflects
   // the rare element one of them lost (dashes-rows 1.39), and is not asked of them.
@@ -349,10 +379,19 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       if (k < m.r_hat.size()) worst = std::max(worst, m.r_hat[k]);
     return worst;
   };
+  const auto least_effective = [&](const StatisticsMoments& m) {
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t k : free)
+      if (k < m.effective_size.size() && m.standard_error[k] > kNegligibleError)
+        least = std::min(least, m.effective_size[k]);
+    return least;
+  };
+  int chain_factor = 1;  // more chains where the sample is worth too few independent observations
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
     ChainsSetting setting = options.sampling;
     setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
+    setting.chains *= chain_factor;
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
     const StatisticsMoments m = statistics_moments(model, window, setting);
     r.expected = m.mean;
@@ -382,15 +421,17 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       continue;  // simulate again without them
     }
     const Gap g = newton->gap(m, r.theta);
-    if (options.progress) options.progress(r.iterations, g.worst_z);
-    const Iterate here{r.theta, m.mean, m.standard_error, g.worst_z, worst_r_hat(m)};
-    const bool improved = here.worst_z < best.worst_z;
+    const double effective = least_effective(m);
+    if (options.progress) options.progress({r.iterations, g.worst_z, effective, setting.chains});
+    const Iterate here{r.theta,   m.mean,         m.standard_error,
+                       g.worst_z, worst_r_hat(m), ranking_z(m, g)};
+    const bool improved = here.ranking_z < best.ranking_z;
     last_r_hat = here.worst_r_hat;
     if (improved) best = here;
     // Step control: a step that made the gap much worse than the best iterate's is undone, and
     // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
     // parameters where they hold almost nothing and the gaps explode).
-    if (g.worst_z > kDiverged * best.worst_z && g.worst_z > r.tolerance) {
+    if (here.ranking_z > kDiverged * best.ranking_z && g.worst_z > r.tolerance) {
       r.theta = best.theta;
       newton->shorten_steps();
       continue;
@@ -407,6 +448,15 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         rough = false;  // within tolerance at a quarter of the precision: check at full length
         continue;
       }
+      if (effective < kMinEffectiveSize && chain_factor < kMostChainFactor) {
+        const double more = std::ceil(kMinEffectiveSize / std::max(1.0, effective));
+        chain_factor = static_cast<int>(std::min<double>(kMostChainFactor, chain_factor * more));
+        estimates.clear();  // those of the smaller samples would hold the average back
+        continue;           // the same θ again, with a sample whose test means something
+      }
+    }
+    if (g.worst_z <= r.tolerance && (here.worst_r_hat <= kMaxRHat || held_start) &&
+        effective >= kMinEffectiveSize) {
       r.converged = true;
       // The estimate: the maximum of the likelihood as the final sample approximates it
       // (Geyer & Thompson), averaged with the final phase's earlier estimates, where the
@@ -430,7 +480,10 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         r.iterations == options.max_iterations ||
         std::chrono::duration<double>(Clock::now() - clock).count() > options.max_seconds;
     if (last) break;  // θ stays where the reported expectations were estimated
-    if (rough) {
+    if (rough || g.worst_z > kNearTolerance * r.tolerance) {
+      // Far from the tolerance the steps are not noise to be averaged away: a larger sample
+      // (more chains) that finds a gap the smaller ones hid moves θ at full steps again.
+      estimates.clear();
       r.theta = newton->reweighted_steps(m, g, r.theta);
     } else {
       estimates.push_back(newton->reweighted_steps(m, g, r.theta));

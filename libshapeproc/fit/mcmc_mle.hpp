@@ -10,7 +10,9 @@
 // its effective size stays above half (Geyer & Thompson 1992), so a simulation serves several
 // steps. The first simulations are short (a quarter of the steps) until the gaps are within the
 // tolerance at their precision; the fit stops when no free component of t(z) − E_θ[t] differs
-// significantly from 0 in a full-length simulation (MleOptions::significance). The estimate is
+// significantly from 0 in a full-length simulation (MleOptions::significance) whose sample is
+// worth at least 20 independent observations of each statistic (effective_sample_size.hpp; a
+// smaller one is drawn again at the same θ with proportionally more chains). The estimate is
 // then the maximum of the likelihood that this last sample approximates by reweighting (its
 // expectations reweighted to it), unless the reweighting leaves too small an effective sample.
 // Bands without an observed pair stay at γ = 0 (status boundary); a model without interaction
@@ -26,6 +28,15 @@
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
+
+// What one iteration of the fit reports.
+struct MleProgress {
+  int iteration = 0;
+  double worst_z = 0.0;  // the largest |z| of the gaps
+  // The smallest effective sample size of a free statistic (effective_sample_size.hpp).
+  double effective_size = 0.0;
+  int chains = 0;  // the simulation's chains
+};
 
 struct MleOptions {
   ChainsSetting sampling;  // the chains of each iteration
@@ -46,8 +57,8 @@ struct MleOptions {
   // statistics t_W of the window's part (fit::stationary_domain, docs/fit.md): the model of a
   // larger drawing of which the exemplar is a piece, not of the drawing cut at its edges.
   bool stationary_window = false;
-  // Called after each iteration with its number and the largest |z| of the gaps. May be empty.
-  std::function<void(int iteration, double worst_z)> progress;
+  // Called after each iteration (MleProgress). May be empty.
+  std::function<void(const MleProgress&)> progress;
 };
 
 struct MleResult {

@@ -6,6 +6,7 @@
 
 #include "libshapeproc/core/assert.hpp"
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/fit/effective_sample_size.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/synthesis/run_chains.hpp"
@@ -13,8 +14,6 @@
 namespace shapeproc::fit {
 
 namespace {
-
-constexpr int kBatchesPerChain = 5;
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -60,21 +59,6 @@ void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::Map<con
   }
 }
 
-// Standard errors of the mean from batch means: each chain's kept observations in
-// kBatchesPerChain consecutive batches.
-std::vector<double> batch_standard_errors(const std::vector<std::vector<double>>& batch_means,
-                                          std::size_t p) {
-  const double batches = static_cast<double>(batch_means.size());
-  std::vector<double> se(p, 0.0);
-  for (std::size_t k = 0; k < p; ++k) {
-    double bm = 0.0, bv = 0.0;
-    for (const auto& b : batch_means) bm += b[k] / batches;
-    for (const auto& b : batch_means) bv += (b[k] - bm) * (b[k] - bm) / std::max(1.0, batches - 1);
-    se[k] = std::sqrt(bv / batches);
-  }
-  return se;
-}
-
 }  // namespace
 
 StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
@@ -100,16 +84,10 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   StatisticsMoments m;
   const std::size_t p = static_cast<std::size_t>(model::Interaction(model).statistic_count());
   m.parameters = static_cast<int>(p);
-  std::vector<std::vector<double>> batch_means;
   const std::size_t skip = static_cast<std::size_t>(setting.burn_in / setting.observe_every);
   std::vector<std::pair<int, int>> chain_rows;
   for (const synthesis::SynthesisResult& result : results) {
     const int first_row = m.observations;
-    const std::size_t kept =
-        result.observations.size() > skip ? result.observations.size() - skip : 0;
-    const std::size_t per_batch = std::max<std::size_t>(1, kept / kBatchesPerChain);
-    std::vector<double> batch(p, 0.0);
-    std::size_t in_batch = 0;
     for (std::size_t i = skip; i < result.observations.size(); ++i) {
       const std::vector<double>& observation = result.observations[i];
       SHAPEPROC_ASSERT(observation.size() == (windowed ? 2 : 1) * p,
@@ -118,13 +96,6 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
       m.samples.insert(m.samples.end(), t, t + p);
       if (windowed) m.density_samples.insert(m.density_samples.end(), t + p, t + 2 * p);
       ++m.observations;
-      for (std::size_t k = 0; k < p; ++k) batch[k] += t[k];
-      if (++in_batch == per_batch) {
-        for (double& b : batch) b /= static_cast<double>(per_batch);
-        batch_means.push_back(batch);
-        batch.assign(p, 0.0);
-        in_batch = 0;
-      }
     }
     chain_rows.emplace_back(first_row, m.observations);
   }
@@ -133,9 +104,15 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(m.observations, 1.0 / m.observations);
   const Eigen::Map<const RowMatrix> u = density_matrix(m);
   weighted_moments(sample_matrix(m), windowed ? &u : nullptr, uniform, m);
-  m.standard_error = batch_standard_errors(batch_means, p);
-  for (std::size_t k = 0; k < p; ++k)
-    if (m.covariance[k * p + k] == 0.0) m.standard_error[k] = 0.0;
+  m.standard_error.assign(p, 0.0);
+  m.effective_size.assign(p, static_cast<double>(m.observations));
+  for (std::size_t k = 0; k < p; ++k) {
+    if (m.covariance[k * p + k] == 0.0) continue;
+    const EffectiveSize e =
+        effective_size(m.samples, m.parameters, static_cast<int>(k), chain_rows);
+    m.standard_error[k] = e.standard_error;
+    m.effective_size[k] = e.effective;
+  }
   m.r_hat = potential_scale_reduction(m, chain_rows);
   return m;
 }

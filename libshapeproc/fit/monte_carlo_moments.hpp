@@ -1,8 +1,9 @@
 // Monte Carlo moments of the sufficient statistics t(X) of a shape-process model: chains of the
-// project's sampler on a domain, their observations of t after the burn-in, means with batch-mean
-// standard errors, and importance reweighting of the same observations to a nearby θ
-// (Geyer & Thompson 1992): for θ' = θ + δ the weights w_j ∝ exp(δ · t_j) turn the sample at θ
-// into estimates at θ', valid while the effective sample size stays a large share of the sample.
+// project's sampler on a domain, their observations of t after the burn-in, means with their Monte
+// Carlo standard errors (effective_sample_size.hpp), and importance reweighting of the same
+// observations to a nearby θ (Geyer & Thompson 1992): for θ' = θ + δ the weights w_j ∝ exp(δ · t_j)
+// turn the sample at θ into estimates at θ', valid while the effective sample size stays a large
+// share of the sample.
 #pragma once
 
 #include <cstdint>
@@ -41,8 +42,13 @@ struct StatisticsMoments {
   int parameters = 0;
   std::vector<double> samples;         // row-major, observations x parameters
   std::vector<double> mean;            // by θ index
-  std::vector<double> standard_error;  // of the mean, from batch means over the chains
-  std::vector<double> covariance;      // row-major, parameters x parameters
+  std::vector<double> standard_error;  // of the mean (effective_sample_size.hpp)
+  // Per statistic, the observations' worth in independent ones (effective_sample_size.hpp): small
+  // where the chains sit in different states and rarely leave them (a packed exemplar held by
+  // some chains and lost by others), so that no mean of this sample is yet to be trusted. The
+  // number of observations for a constant statistic; empty after reweighting.
+  std::vector<double> effective_size;
+  std::vector<double> covariance;  // row-major, parameters x parameters
   // ∂E_θ[t_W]/∂θ = Cov(t_W, t), row-major (rows t_W, columns t), t the density's statistic:
   // the covariance itself without an observed region.
   std::vector<double> information;

@@ -90,10 +90,12 @@ fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std
     if (flags.estimator == "mle") {
       fit::MleOptions mle = flags.mle_options();
       ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
-      mle.progress = [&](int iteration, double worst_z) {
-        verbosity.stage("mle: iteration " + std::to_string(iteration) + ", largest |z| " +
-                        core::format_general(worst_z, 3));
-        iterations.update(iteration, mle.max_iterations);
+      mle.progress = [&](const fit::MleProgress& at) {
+        verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
+                        core::format_general(at.worst_z, 3) + ", effective sample " +
+                        core::format_general(at.effective_size, 3) + " (" +
+                        std::to_string(at.chains) + " chains)");
+        iterations.update(at.iteration, mle.max_iterations);
       };
       result = fit::refine_to_maximum_likelihood(exemplar, options, std::move(result), mle);
       iterations.finish();
