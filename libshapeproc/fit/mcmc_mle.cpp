@@ -443,7 +443,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         stalled >= kStalledAfter) {
       rough = false;
     }
-    if (g.worst_z <= r.tolerance && (here.worst_r_hat <= kMaxRHat || held_start)) {
+    if (g.worst_z <= r.tolerance) {
       if (rough) {
         rough = false;  // within tolerance at a quarter of the precision: check at full length
         continue;

@@ -1,16 +1,21 @@
 #include "libshapeproc/fit/tile_fit.hpp"
 
+#include <utility>
+
 #include "libshapeproc/geometry/tile_repeat.hpp"
 
 namespace shapeproc::fit {
 
-TileFit fit_tile(const geometry::Scene& tile,
-                 const std::function<FitResult(const geometry::Scene&, int)>& fit_scene) {
-  TileFit out;
+namespace {
+
+// The repeat and its fit, before refinement.
+void choose_repeats(const geometry::Scene& tile,
+                    const std::function<FitResult(const geometry::Scene&, int)>& fit_scene,
+                    TileFit& out) {
   out.repeats = geometry::tile_repeats(tile.elements.size());
   out.exemplar = geometry::repeat_tile(tile, out.repeats);
   out.result = fit_scene(out.exemplar, out.repeats);
-  if (out.repeats <= 1) return out;
+  if (out.repeats <= 1) return;
   const int needed =
       geometry::repeats_to_hold(tile, out.result.model.interaction_range(), out.repeats);
   const auto times = [](int k) { return std::to_string(k) + " x " + std::to_string(k); };
@@ -27,6 +32,16 @@ TileFit fit_tile(const geometry::Scene& tile,
     out.exemplar = geometry::repeat_tile(tile, needed);
     out.result = fit_scene(out.exemplar, needed);
   }
+}
+
+}  // namespace
+
+TileFit fit_tile(const geometry::Scene& tile,
+                 const std::function<FitResult(const geometry::Scene&, int)>& fit_scene,
+                 const std::function<FitResult(const geometry::Scene&, int, FitResult)>& refine) {
+  TileFit out;
+  choose_repeats(tile, fit_scene, out);
+  if (refine) out.result = refine(out.exemplar, out.repeats, std::move(out.result));
   return out;
 }
 

@@ -28,8 +28,13 @@ struct TileFit {
   std::vector<std::string> notes;  // a refit, or one that would need too many repeats
 };
 
-// Fits `tile` (2D) with `fit_scene(exemplar, repeats)`, repeated as above.
-TileFit fit_tile(const geometry::Scene& tile,
-                 const std::function<FitResult(const geometry::Scene&, int)>& fit_scene);
+// Fits `tile` (2D) with `fit_scene(exemplar, repeats)`, repeated as above, then, when `refine` is
+// given, refines that fit with `refine(exemplar, repeats, fit)` (the maximum likelihood). The
+// interactions' reach depends on the thresholds alone, so the repeat is chosen before the costly
+// refinement, which runs once.
+TileFit fit_tile(
+    const geometry::Scene& tile,
+    const std::function<FitResult(const geometry::Scene&, int)>& fit_scene,
+    const std::function<FitResult(const geometry::Scene&, int, FitResult)>& refine = {});
 
 }  // namespace shapeproc::fit

@@ -1,5 +1,6 @@
 // The tile-fitting policy: a small tile is fitted repeated, and refitted once on a repeat that
-// holds the interactions its first fit found; a fit that would need too many repeats says so.
+// holds the interactions its first fit found; a fit that would need too many repeats says so;
+// the refinement (the maximum likelihood) runs once, on the repeat chosen.
 #include "libshapeproc/fit/tile_fit.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,7 @@ geometry::Scene two_dot_tile() {
   geometry::Scene tile;
   tile.window = Box3(Vec3(0, 0, 0), Vec3(10, 6, 0));
   tile.categories.push_back({"dots"});
-  for (const geometry::Vec2 centre : {geometry::Vec2(2, 3), geometry::Vec2(7, 3)}) {
+  for (const geometry::Vec2& centre : {geometry::Vec2(2, 3), geometry::Vec2(7, 3)}) {
     geometry::Drawable2 dot;
     dot.paths.push_back(geometry::ellipse_path(centre, 1, 1));
     geometry::add_element(tile, geometry::Shape{geometry::PlanarShape{{dot}}, "dot"}, 0);
@@ -67,6 +68,22 @@ TEST(TileFit, RefitsOnceOnARepeatThatHoldsTheRange) {
   EXPECT_NE(fit.notes[0].find("15 x 15"), std::string::npos) << fit.notes[0];
 }
 
+TEST(TileFit, TheRefinementRunsOnceOnTheRepeatChosen) {
+  const geometry::Scene tile = two_dot_tile();
+  StubFit far{10.0, {}};
+  std::vector<int> refined;
+  const TileFit fit =
+      fit_tile(tile, std::ref(far), [&](const geometry::Scene& scene, int repeats, FitResult r) {
+        refined.push_back(repeats);
+        EXPECT_EQ(scene.elements.size(), 2u * static_cast<std::size_t>(repeats * repeats));
+        r.notes.push_back("refined");
+        return r;
+      });
+  EXPECT_EQ(far.calls, std::vector<int>({3, 5}));
+  EXPECT_EQ(refined, std::vector<int>({5}));
+  EXPECT_EQ(fit.result.notes, std::vector<std::string>({"refined"}));
+}
+
 TEST(TileFit, ATileOfEightElementsIsFittedOnItsOwnTorus) {
   geometry::Scene tile = two_dot_tile();
   for (int k = 0; k < 3; ++k) {
@@ -74,7 +91,7 @@ TEST(TileFit, ATileOfEightElementsIsFittedOnItsOwnTorus) {
     for (geometry::Element e : more.elements) tile.elements.push_back(e);
   }
   StubFit far{10.0, {}};
-  const TileFit fit = fit_tile(tile, [&](const geometry::Scene& scene, int repeats) {
+  const TileFit fit = fit_tile(tile, [&](const geometry::Scene& scene, int /*repeats*/) {
     EXPECT_EQ(scene.elements.size(), 8u);
     return far(two_dot_tile(), 1);
   });

@@ -63,14 +63,21 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 namespace {
 
-// The fit of one exemplar scene: the MPL, then the MLE unless --estimator mpl, with progress.
-fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std::string& input,
-                         const FitFlags& flags, const ReaderFlags& reader,
-                         const VerbosityFlags& verbosity) {
+// The fit options for an exemplar scene, the tile repeated `repeats` times along each axis.
+fit::FitOptions scene_options(const geometry::Scene& exemplar, int repeats, const FitFlags& flags,
+                              const ReaderFlags& reader) {
   fit::FitOptions options = flags.options(reader);
   // The repeated tile keeps the cells' size: as many cells per tile as the default gives one.
   if (repeats > 1 && options.quadrature == 0 && exemplar.dimension == 2)
     options.quadrature = fit::default_quadrature_cells(2) * repeats;
+  return options;
+}
+
+// The MPL fit of one exemplar scene, with progress.
+fit::FitResult pseudo_likelihood_fit(const geometry::Scene& exemplar, int repeats,
+                                     const std::string& input, const FitFlags& flags,
+                                     const ReaderFlags& reader, const VerbosityFlags& verbosity) {
+  fit::FitOptions options = scene_options(exemplar, repeats, flags, reader);
   // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
   // terminal.
   ProgressBar bar("fitting: quadrature", verbosity.show_progress());
@@ -83,27 +90,38 @@ fit::FitResult fit_scene(const geometry::Scene& exemplar, int repeats, const std
     }
     bar.update(done, total);
   };
-  fit::FitResult result;
   try {
-    result = fit::fit_shape_process(exemplar, options);
+    fit::FitResult result = fit::fit_shape_process(exemplar, options);
     bar.finish();
-    if (flags.estimator == "mle") {
-      fit::MleOptions mle = flags.mle_options();
-      ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
-      mle.progress = [&](const fit::MleProgress& at) {
-        verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
-                        core::format_general(at.worst_z, 3) + ", effective sample " +
-                        core::format_general(at.effective_size, 3) + " (" +
-                        std::to_string(at.chains) + " chains)");
-        iterations.update(at.iteration, mle.max_iterations);
-      };
-      result = fit::refine_to_maximum_likelihood(exemplar, options, std::move(result), mle);
-      iterations.finish();
-    }
+    return result;
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
-  return result;
+}
+
+// The MLE from that fit unless --estimator mpl, with progress.
+fit::FitResult maximum_likelihood_fit(const geometry::Scene& exemplar, int repeats,
+                                      fit::FitResult result, const std::string& input,
+                                      const FitFlags& flags, const ReaderFlags& reader,
+                                      const VerbosityFlags& verbosity) {
+  if (flags.estimator != "mle") return result;
+  fit::MleOptions mle = flags.mle_options();
+  ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
+  mle.progress = [&](const fit::MleProgress& at) {
+    verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
+                    core::format_general(at.worst_z, 3) + ", effective sample " +
+                    core::format_general(at.effective_size, 3) + " (" + std::to_string(at.chains) +
+                    " chains)");
+    iterations.update(at.iteration, mle.max_iterations);
+  };
+  try {
+    result = fit::refine_to_maximum_likelihood(
+        exemplar, scene_options(exemplar, repeats, flags, reader), std::move(result), mle);
+    iterations.finish();
+    return result;
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError(input, 0, e.what());
+  }
 }
 
 }  // namespace
@@ -119,8 +137,11 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   core::check_budget(fit::estimate_fit(read, options).resources, budget, "the fit of " + input,
                      "--quadrature, --directions or the thresholds");
   if (check_read) check_read(read);
-  const auto fit_one = [&](const geometry::Scene& scene, int times) {
-    return fit_scene(scene, times, input, flags, reader, verbosity);
+  const auto pseudo_likelihood = [&](const geometry::Scene& scene, int times) {
+    return pseudo_likelihood_fit(scene, times, input, flags, reader, verbosity);
+  };
+  const auto maximum_likelihood = [&](const geometry::Scene& scene, int times, fit::FitResult mpl) {
+    return maximum_likelihood_fit(scene, times, std::move(mpl), input, flags, reader, verbosity);
   };
   // A tile: fitted repeated, and refitted on a larger repeat where its interactions need one.
   fit::FitResult result;
@@ -128,14 +149,14 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   int repeats = 1;
   std::vector<std::string> tile_notes;
   if (reader.tile && read.dimension == 2) {
-    fit::TileFit tile = fit::fit_tile(read, fit_one);
+    fit::TileFit tile = fit::fit_tile(read, pseudo_likelihood, maximum_likelihood);
     result = std::move(tile.result);
     exemplar = std::move(tile.exemplar);
     repeats = tile.repeats;
     tile_notes = std::move(tile.notes);
   } else {
     exemplar = std::move(read);
-    result = fit_one(exemplar, 1);
+    result = maximum_likelihood(exemplar, 1, pseudo_likelihood(exemplar, 1));
   }
   for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
   nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
