@@ -22,15 +22,20 @@ namespace {
 constexpr int kCollisionOffsets = 256;  // g(r) is not used here: few Monte Carlo offsets
 
 // What the maximum-likelihood fit recorded (fit.estimator): the Monte Carlo standard errors of
-// its expectations, by which its estimate is itself uncertain, and the bands its attraction
-// prior holds below the exemplar's count. Zeros and none for other models.
+// its expectations, by which its estimate is itself uncertain, the bands its attraction prior
+// holds notably below the exemplar's count, and the pairs it holds back in every band. Zeros and
+// none for other models.
 struct FitPrecision {
   std::vector<double> expected_error;
   std::vector<bool> penalised;
+  // The fit's target is t(z) − log γ / σ² where its half-normal prior on log γ > 0 acts (its
+  // penalised likelihood's estimating equation): the pairs the prior holds back.
+  std::vector<double> prior_shift;
 };
 
 FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t statistics) {
-  FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<bool>(statistics, false)};
+  FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<bool>(statistics, false),
+                 std::vector<double>(statistics, 0.0)};
   if (model.fit_json.empty()) return f;
   const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
   if (!fit.contains("estimator")) return f;
@@ -41,6 +46,16 @@ FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t st
     for (int k : e["penalised"].get<std::vector<int>>())
       if (k >= 0 && static_cast<std::size_t>(k) < statistics)
         f.penalised[static_cast<std::size_t>(k)] = true;
+  const double sd = e.value("attraction_prior_sd", 0.0);
+  if (sd > 0 && e.value("method", std::string()) == "mcmc-mle") {
+    const model::Interaction interaction(model);
+    for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count();
+         ++p) {
+      const double log_gamma = interaction.log_gamma_of(p);
+      if (static_cast<std::size_t>(p) < statistics && std::isfinite(log_gamma) && log_gamma > 0)
+        f.prior_shift[static_cast<std::size_t>(p)] = log_gamma / (sd * sd);
+    }
+  }
   return f;
 }
 
@@ -72,20 +87,19 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     StatisticCheck c;
     c.name = k < names.size() ? names[k] : "statistic " + std::to_string(k);
     c.exemplar = observed[k];
+    c.target = observed[k] - fit.prior_shift[k];
     c.mean = m.mean[k];
     c.standard_error = std::hypot(m.standard_error[k], fit.expected_error[k]);
     c.penalised = fit.penalised[k];
     c.count =
         k < model.categories.size() || k >= static_cast<std::size_t>(interaction.parameter_count());
-    const double gap = c.mean - c.exemplar;
+    const double gap = c.mean - c.target;
     c.z = gap == 0               ? 0.0
           : c.standard_error > 0 ? gap / c.standard_error
                                  : std::copysign(std::numeric_limits<double>::infinity(), gap);
     double& worst = c.count ? report.worst_count_z : report.worst_pair_z;
-    if (c.penalised)
-      ++report.penalised;
-    else
-      worst = std::max(worst, std::abs(c.z));
+    if (c.target != c.exemplar) ++report.penalised;
+    worst = std::max(worst, std::abs(c.z));
     report.own_window.push_back(c);
   }
 }

@@ -42,19 +42,23 @@ struct FidelityOptions {
 struct StatisticCheck {
   std::string name;
   double exemplar = 0.0, mean = 0.0;
+  // What the mean is compared with: the exemplar's value, less the pairs the fit's attraction
+  // prior holds back in a band with log γ > 0 (log γ / σ², the penalised likelihood's own
+  // target: docs/fit.md, "Attraction prior").
+  double target = 0.0;
   // Of the gap between the chains' mean and the exemplar's value: the chains' Monte Carlo error
   // and, for a maximum-likelihood fit, the Monte Carlo error of the fit's own expectations (its
   // estimate is only as precise as its last sample), added in quadrature.
   double standard_error = 0.0;
-  bool penalised = false;  // a band the fit's attraction prior holds down (left out of the worst)
-  double z = 0.0;          // (mean − exemplar) / standard error (0 when both agree exactly)
+  bool penalised = false;  // a band the fit's attraction prior holds half a pair or more down
+  double z = 0.0;          // (mean − target) / standard error (0 when both agree exactly)
   bool count = false;      // an element count (category or class), not a pair count
 };
 
 struct FidelityReport {
   std::vector<StatisticCheck> own_window;
   double worst_count_z = 0.0, worst_pair_z = 0.0;  // largest |z| of each kind
-  int penalised = 0;                               // bands the attraction prior holds down
+  int penalised = 0;  // bands whose target the attraction prior lowers (all are in the worst)
   int exemplar_elements = 0;
   int outputs = 0;
   double output_elements = 0.0;  // the outputs' mean element count

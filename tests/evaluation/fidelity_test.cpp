@@ -57,5 +57,39 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
   EXPECT_NEAR(one.output_elements, 240.0, 4 * std::sqrt(240.0));
 }
 
+// A maximum-likelihood fit with the attraction prior solves E[t] = t(z) − log γ / σ² in a band
+// with log γ > 0: that band's mean is checked against that target (and counts in the worst),
+// an inhibiting band's against the exemplar's count.
+TEST(Fidelity, ABandTheAttractionPriorHoldsDownIsCheckedAgainstTheFitsTarget) {
+  geometry::Scene exemplar;
+  exemplar.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(50, 50, 0));
+  exemplar.categories.push_back({"points"});
+  exemplar.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(3);
+  for (int i = 0; i < 20; ++i)
+    exemplar.elements.push_back(
+        {0, 0, geometry::Vec3(random.uniform(0, 50), random.uniform(0, 50), 0)});
+  FidelityOptions options;
+  options.sampling.chains = 2;
+  options.sampling.burn_in = 1000;
+  options.sampling.steps = 4000;
+  options.outputs = 1;
+  for (const double log_gamma : {1.5, -0.7}) {
+    model::ShapeProcessModel model =
+        testing::point_model(20.0 / 2500.0, {2.0, 5.0}, {std::exp(log_gamma)});
+    model.interactions[0].axes[0].observed_pairs = {7};
+    model.fit_json = R"({"estimator": {"method": "mcmc-mle", "attraction_prior_sd": 1.5}})";
+    const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open,
+                                            geometry::EdgeTreatment::none, options);
+    ASSERT_EQ(r.own_window.size(), 2u);
+    const StatisticCheck& band = r.own_window[1];
+    EXPECT_EQ(band.exemplar, 7.0);
+    EXPECT_DOUBLE_EQ(band.target, log_gamma > 0 ? 7.0 - 1.5 / (1.5 * 1.5) : 7.0);
+    EXPECT_DOUBLE_EQ(band.z, (band.mean - band.target) / band.standard_error);
+    EXPECT_EQ(r.penalised, log_gamma > 0 ? 1 : 0);
+    EXPECT_GE(r.worst_pair_z, std::abs(band.z));
+  }
+}
+
 }  // namespace
 }  // namespace shapeproc::evaluation

@@ -33,10 +33,10 @@ std::string g(double v, int digits = 3) { return core::format_general(v, digits)
 void print_row(const std::string& name, const evaluation::FidelityReport& r,
                const model::ShapeProcessModel& model, std::ostream& out) {
   out << "| " << name << " | " << r.exemplar_elements << " | " << g(r.worst_count_z) << " | "
-      << g(r.worst_pair_z) << (r.penalised > 0 ? " (" + std::to_string(r.penalised) + " held)" : "")
-      << " | " << g(r.density_ratio)
-      << (r.outputs > 1 ? " ± " + g(r.density_ratio_error, 2) : std::string()) << " | "
-      << r.exemplar_collisions << " / " << r.output_collisions << " | "
+      << g(r.worst_pair_z)
+      << (r.penalised > 0 ? " (" + std::to_string(r.penalised) + " prior-shifted)" : "") << " | "
+      << g(r.density_ratio) << (r.outputs > 1 ? " ± " + g(r.density_ratio_error, 2) : std::string())
+      << " | " << r.exemplar_collisions << " / " << r.output_collisions << " | "
       << (std::isnan(r.class_p_value)
               ? std::string("-")
               : g(r.class_p_value) + " (" + std::to_string(model.shape_classes.size()) + ")")
@@ -45,15 +45,16 @@ void print_row(const std::string& name, const evaluation::FidelityReport& r,
 
 void print_report(const evaluation::FidelityReport& r, const evaluation::FidelityOptions& o,
                   std::ostream& out) {
-  out << "own window, " << o.sampling.chains << " chains: statistic, exemplar, mean ± se, z\n";
+  out << "own window, " << o.sampling.chains
+      << " chains: statistic, exemplar, mean ± se, z (against the fit's target where its "
+         "attraction prior lowers it)\n";
   for (const evaluation::StatisticCheck& c : r.own_window) {
     out << "  " << std::left << std::setw(34) << c.name << std::right << std::setw(8)
         << g(c.exemplar, 4) << std::setw(20) << (g(c.mean, 4) + " ± " + g(c.standard_error, 2))
         << std::setw(8) << g(c.z, 2)
-        << (c.penalised         ? "  (attraction prior)"
-            : std::abs(c.z) > 3 ? "  (beyond 3 se)"
-                                : "")
-        << '\n';
+        << (c.target != c.exemplar ? "  (attraction prior: target " + g(c.target, 4) + ")"
+                                   : std::string())
+        << (std::abs(c.z) > 3 ? "  (beyond 3 se)" : "") << '\n';
   }
   out << "largest |z|: counts " << g(r.worst_count_z) << ", pairs " << g(r.worst_pair_z) << '\n';
   out << r.outputs << " output(s) " << g(o.scale)
