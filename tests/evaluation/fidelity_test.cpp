@@ -10,6 +10,19 @@
 namespace shapeproc::evaluation {
 namespace {
 
+// `n` points uniformly on a `side` × `side` window.
+geometry::Scene random_points(int n, double side, std::uint64_t seed) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(side, side, 0));
+  scene.categories.push_back({"points"});
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(seed);
+  for (int i = 0; i < n; ++i)
+    scene.elements.push_back(
+        {0, 0, geometry::Vec3(random.uniform(0, side), random.uniform(0, side), 0)});
+  return scene;
+}
+
 // Exact values: with 2 degrees of freedom the upper tail is exp(−x/2); with 1, erfc(√(x/2)).
 TEST(Fidelity, ChiSquareUpperTail) {
   EXPECT_NEAR(chi_square_upper_tail(3.0, 2), std::exp(-1.5), 1e-14);
@@ -21,14 +34,7 @@ TEST(Fidelity, ChiSquareUpperTail) {
 // errors over the chains, the output's density within 4 Poisson standard deviations of the
 // exemplar's, and no collisions among points.
 TEST(Fidelity, APoissonModelReproducesItsExemplar) {
-  geometry::Scene exemplar;
-  exemplar.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
-  exemplar.categories.push_back({"points"});
-  exemplar.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  core::Random random(7);
-  for (int i = 0; i < 60; ++i)
-    exemplar.elements.push_back(
-        {0, 0, geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0)});
+  const geometry::Scene exemplar = random_points(60, 100.0, 7);
   const model::ShapeProcessModel model = testing::point_model(60.0 / 10000.0);
   FidelityOptions options;
   options.sampling.chains = 8;
@@ -61,14 +67,7 @@ TEST(Fidelity, APoissonModelReproducesItsExemplar) {
 // with log γ > 0: that band's mean is checked against that target (and counts in the worst),
 // an inhibiting band's against the exemplar's count.
 TEST(Fidelity, ABandTheAttractionPriorHoldsDownIsCheckedAgainstTheFitsTarget) {
-  geometry::Scene exemplar;
-  exemplar.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(50, 50, 0));
-  exemplar.categories.push_back({"points"});
-  exemplar.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  core::Random random(3);
-  for (int i = 0; i < 20; ++i)
-    exemplar.elements.push_back(
-        {0, 0, geometry::Vec3(random.uniform(0, 50), random.uniform(0, 50), 0)});
+  const geometry::Scene exemplar = random_points(20, 50.0, 3);
   FidelityOptions options;
   options.sampling.chains = 2;
   options.sampling.burn_in = 1000;
