@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/fit/monte_carlo_moments.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
@@ -93,7 +94,8 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     c.penalised = fit.penalised[k];
     c.count =
         k < model.categories.size() || k >= static_cast<std::size_t>(interaction.parameter_count());
-    const double gap = c.mean - c.target;
+    // Within a tenth of an element or pair: matched, as the fit judges it (fit::kNegligibleGap).
+    const double gap = std::abs(c.mean - c.target) <= fit::kNegligibleGap ? 0.0 : c.mean - c.target;
     c.z = gap == 0               ? 0.0
           : c.standard_error > 0 ? gap / c.standard_error
                                  : std::copysign(std::numeric_limits<double>::infinity(), gap);

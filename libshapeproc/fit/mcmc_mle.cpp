@@ -73,11 +73,10 @@ constexpr double kMaxRHat = 1.1;
 // mix slowly (dashes-rows: 3 from 4 chains of 50,000 steps) give errors as large as the gaps
 // themselves, and a test passed with them says nothing. Such a sample is drawn again at the same
 // θ with proportionally more chains, at most kMostChainFactor times the setting's.
-// A statistic whose mean is known to within kNegligibleError (a tenth of an element or pair) is
-// trusted whatever its effective size: a packed lattice's count that the chains leave once in a
-// long while has almost no variance and almost no effective observations.
+// A statistic whose mean is known to within kNegligibleGap (mcmc_mle.hpp) is trusted whatever its
+// effective size: a packed lattice's count that the chains leave once in a long while has almost
+// no variance and almost no effective observations.
 constexpr double kMinEffectiveSize = 20;
-constexpr double kNegligibleError = 0.1;
 constexpr int kMostChainFactor = 16;
 
 using Clock = std::chrono::steady_clock;
@@ -121,11 +120,8 @@ class Newton {
         g.gap[i] -= theta[k] * precision;
         g.information(i, i) += precision;
       }
-      // A gap of a tenth of an element or pair is matched, however small its error: a packed
-      // lattice's chains lose an element once in a long while, so that more chains shrink the
-      // error faster than the gap, which only an infinite parameter closes.
       const double se = std::max(m.standard_error[k], 1e-9);
-      if (std::abs(g.gap[i]) > kNegligibleError)
+      if (std::abs(g.gap[i]) > kNegligibleGap)
         g.worst_z = std::max(g.worst_z, std::abs(g.gap[i]) / se);
     }
     if (windowed_) g.overshoot = overshoot(m);
@@ -364,7 +360,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       const std::size_t k = free[i];
       const double spread = std::sqrt(std::max(0.0, m.covariance[k * p + k]) / kMinEffectiveSize);
       const double se =
-          std::max(std::min(m.standard_error[k], std::max(spread, kNegligibleError)), 1e-9);
+          std::max(std::min(m.standard_error[k], std::max(spread, kNegligibleGap)), 1e-9);
       worst = std::max(worst, std::abs(g.gap[static_cast<Eigen::Index>(i)]) / se);
     }
     return worst;
@@ -382,7 +378,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   const auto least_effective = [&](const StatisticsMoments& m) {
     double least = std::numeric_limits<double>::infinity();
     for (std::size_t k : free)
-      if (k < m.effective_size.size() && m.standard_error[k] > kNegligibleError)
+      if (k < m.effective_size.size() && m.standard_error[k] > kNegligibleGap)
         least = std::min(least, m.effective_size[k]);
     return least;
   };

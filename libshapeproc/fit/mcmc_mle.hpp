@@ -29,6 +29,12 @@
 
 namespace shapeproc::fit {
 
+// A gap between an expected count and its target of at most this (a tenth of an element or
+// pair) counts as matched, whatever its Monte Carlo error: a packed lattice's chains lose an
+// element once in a long while, so that more chains shrink the error faster than the gap, which
+// only an infinite parameter closes. `fidelity` judges its checks by the same rule.
+inline constexpr double kNegligibleGap = 0.1;
+
 // What one iteration of the fit reports.
 struct MleProgress {
   int iteration = 0;
