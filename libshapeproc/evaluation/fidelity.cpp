@@ -23,30 +23,23 @@ namespace {
 constexpr int kCollisionOffsets = 256;  // g(r) is not used here: few Monte Carlo offsets
 
 // What the maximum-likelihood fit recorded (fit.estimator): the Monte Carlo standard errors of
-// its expectations, by which its estimate is itself uncertain, the bands its attraction prior
-// holds notably below the exemplar's count, and the pairs it holds back in every band. Zeros and
-// none for other models.
+// its expectations, by which its estimate is itself uncertain, and the pairs its attraction prior
+// holds back in every band. Zeros for other models.
 struct FitPrecision {
   std::vector<double> expected_error;
-  std::vector<bool> penalised;
   // The fit's target is t(z) − log γ / σ² where its half-normal prior on log γ > 0 acts (its
   // penalised likelihood's estimating equation): the pairs the prior holds back.
   std::vector<double> prior_shift;
 };
 
 FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t statistics) {
-  FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<bool>(statistics, false),
-                 std::vector<double>(statistics, 0.0)};
+  FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<double>(statistics, 0.0)};
   if (model.fit_json.empty()) return f;
   const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
   if (!fit.contains("estimator")) return f;
   const nlohmann::json& e = fit["estimator"];
   if (e.contains("expected_standard_error") && e["expected_standard_error"].size() == statistics)
     f.expected_error = e["expected_standard_error"].get<std::vector<double>>();
-  if (e.contains("penalised"))
-    for (int k : e["penalised"].get<std::vector<int>>())
-      if (k >= 0 && static_cast<std::size_t>(k) < statistics)
-        f.penalised[static_cast<std::size_t>(k)] = true;
   const double sd = e.value("attraction_prior_sd", 0.0);
   if (sd > 0 && e.value("method", std::string()) == "mcmc-mle") {
     const model::Interaction interaction(model);
@@ -91,7 +84,6 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     c.target = observed[k] - fit.prior_shift[k];
     c.mean = m.mean[k];
     c.standard_error = std::hypot(m.standard_error[k], fit.expected_error[k]);
-    c.penalised = fit.penalised[k];
     c.count =
         k < model.categories.size() || k >= static_cast<std::size_t>(interaction.parameter_count());
     // Within a tenth of an element or pair: matched, as the fit judges it (fit::kNegligibleGap).

@@ -50,9 +50,8 @@ struct StatisticCheck {
   // and, for a maximum-likelihood fit, the Monte Carlo error of the fit's own expectations (its
   // estimate is only as precise as its last sample), added in quadrature.
   double standard_error = 0.0;
-  bool penalised = false;  // a band the fit's attraction prior holds half a pair or more down
-  double z = 0.0;          // (mean − target) / standard error (0 within fit::kNegligibleGap)
-  bool count = false;      // an element count (category or class), not a pair count
+  double z = 0.0;      // (mean − target) / standard error (0 within fit::kNegligibleGap)
+  bool count = false;  // an element count (category or class), not a pair count
 };
 
 struct FidelityReport {
