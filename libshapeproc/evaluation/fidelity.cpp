@@ -60,7 +60,7 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
   // A fit on the stationary window is checked as it was fitted: the window inside its torus.
   const bool stationary = fit::fitted_on_stationary_window(model);
   const geometry::Domain window =
-      stationary ? fit::stationary_domain(exemplar, model)
+      stationary ? fit::stationary_domain(exemplar)
                  : geometry::Domain(exemplar.window, exemplar.dimension, boundary);
   fit::ChainsSetting setting = options.sampling;
   if (stationary) setting.observe_region = exemplar.window;

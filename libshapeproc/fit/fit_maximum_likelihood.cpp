@@ -83,13 +83,8 @@ bool starts_at_exemplar(const model::ShapeProcessModel& model) {
   return estimator_says(model, "chains_start", "exemplar");
 }
 
-geometry::Domain stationary_domain(const geometry::Scene& exemplar,
-                                   const model::ShapeProcessModel& model) {
-  const geometry::Domain window(exemplar.window, exemplar.dimension, geometry::Boundary::open);
-  const double margin = sample::ShapeProcessSampler(model, window, {}).reach();
-  geometry::Box3 box = exemplar.window;
-  for (int axis = 0; axis < exemplar.dimension; ++axis) box.max()[axis] += margin;
-  return geometry::Domain(box, exemplar.dimension, geometry::Boundary::torus);
+geometry::Domain stationary_domain(const geometry::Scene& exemplar) {
+  return geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::torus);
 }
 
 bool fitted_on_stationary_window(const model::ShapeProcessModel& model) {
@@ -100,11 +95,13 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options) {
   model::ShapeProcessModel start = mple.model;
-  const bool stationary = options.stationary_window &&
-                          fit_options.boundary == geometry::Boundary::open &&
-                          fit_options.edge == geometry::EdgeTreatment::none;
+  const bool open_window = fit_options.boundary == geometry::Boundary::open &&
+                           fit_options.edge == geometry::EdgeTreatment::none;
+  const bool stationary =
+      open_window && (options.window == WindowModel::stationary ||
+                      (options.window == WindowModel::automatic && !packed_exemplar(start)));
   const geometry::Domain window =
-      stationary ? stationary_domain(exemplar, start)
+      stationary ? stationary_domain(exemplar)
                  : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
   const std::vector<double> observed = observed_statistics(exemplar, start);
   MleOptions chains = options;
@@ -119,16 +116,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   // A packed exemplar's chains start at it (its free part with border correction).
   const bool at_exemplar = packed_exemplar(start);
   if (at_exemplar) chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
-  if (stationary && !at_exemplar) {
-    // The torus holds more elements than the window: chains that start empty get steps in
-    // proportion to its measure, so that each element is proposed as many moves as in a fit on
-    // the window alone. With the window's steps the chains of two-kinds' attractive model still
-    // disagreed (R-hat 1.1–1.5) after 30 simulations, and the fit did not converge. Chains held
-    // at a packed exemplar are not meant to mix and keep the window's steps.
-    const double more = window.measure() / measure;
-    chains.sampling.burn_in = std::llround(static_cast<double>(chains.sampling.burn_in) * more);
-    chains.sampling.steps = std::llround(static_cast<double>(chains.sampling.steps) * more);
-  }
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;

@@ -42,22 +42,18 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 // did (its fit record's `estimator.chains_start`); false for other models.
 bool starts_at_exemplar(const model::ShapeProcessModel& model);
 
-// The stationary window (MleOptions::stationary_window, docs/fit.md): a torus holding the
-// exemplar's open window and one margin of the model's reach (the farthest two interacting
-// reference positions can be, sample::ShapeProcessSampler::reach) along each axis, so that the
-// window's elements see neighbours beyond its edge as in a larger drawing. The margin lies
-// beyond both edges of an axis at once (the torus wraps), and the window's two edges stay a reach
-// apart through it, so no pair of window elements meets across the wrap.
-geometry::Domain stationary_domain(const geometry::Scene& exemplar,
-                                   const model::ShapeProcessModel& model);
+// The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.
+// Its elements near an edge see neighbours across the seam, as in a larger drawing; the
+// statistics t_W leave out the pairs that meet across it, which the exemplar cannot show.
+geometry::Domain stationary_domain(const geometry::Scene& exemplar);
 
 // Whether a fitted model's maximum-likelihood chains sampled the stationary window (its fit
 // record's `estimator.window`); false for other models.
 bool fitted_on_stationary_window(const model::ShapeProcessModel& model);
 
 // The MLE on the exemplar's window: open for the edge treatment none (or, with
-// options.stationary_window, the window seen inside stationary_domain), a torus for periodic,
-// the border condition for border.
+// WindowModel::stationary or automatic, the window seen inside stationary_domain), a torus for
+// periodic, the border condition for border.
 FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                                        const FitOptions& fit_options, FitResult mple,
                                        const MleOptions& options);

@@ -44,6 +44,18 @@ struct MleProgress {
   int chains = 0;  // the simulation's chains
 };
 
+// The model an open window (edge treatment none) is fitted as (docs/fit.md, "Stationary window").
+enum class WindowModel {
+  // The drawing cut at its edges: the chains sample the open window, and E_θ[t(X)] = t(z).
+  own,
+  // A piece of a larger drawing: the chains sample the window's own torus and the estimate
+  // solves E_θ[t_W(X)] = t(z) for the statistics t_W of the window's pairs, those that do not
+  // meet across the torus's seam (fit::stationary_domain).
+  stationary,
+  // stationary, except for a packed exemplar (its chains held at it): own. The default.
+  automatic,
+};
+
 struct MleOptions {
   ChainsSetting sampling;  // the chains of each iteration
   int max_iterations = 30;
@@ -58,11 +70,8 @@ struct MleOptions {
   // strong attraction; 0 = no penalty. Inhibition (log γ < 0) is not penalised.
   double attraction_prior_sd = 1.5;
   double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
-  // Open windows without border correction: the chains sample a torus larger than the window by
-  // the model's reach along each axis, and the estimate solves E_θ[t_W(X)] = t(z) for the
-  // statistics t_W of the window's part (fit::stationary_domain, docs/fit.md): the model of a
-  // larger drawing of which the exemplar is a piece, not of the drawing cut at its edges.
-  bool stationary_window = false;
+  // Which model of an open window without border correction is fitted (WindowModel).
+  WindowModel window = WindowModel::own;
   // Called after each iteration (MleProgress). May be empty.
   std::function<void(const MleProgress&)> progress;
 };

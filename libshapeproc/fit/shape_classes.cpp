@@ -78,7 +78,12 @@ bool smaller(const Identical& a, const Identical& b) {
 }
 
 // Cuts the size-ordered groups into at most `count` classes of about equal element counts, each
-// of at least kMinElementsPerClass elements (a short last class joins the one before).
+// of at least kMinElementsPerClass elements (a short last class joins the one before). A group
+// starts a new class when more than half of its elements lie beyond the current class's share:
+// rings' 5 dots, 11 small and 3 large rings (3 shares of 6.3 elements) make dots | rings; cutting
+// only once the share was full put the small rings with the dots, and the short last class
+// joined them too, one class for all (the dots then took 43% of the outputs' elements, against
+// 26%).
 std::vector<std::vector<const Identical*>> size_groups(std::vector<Identical>& groups, int count,
                                                        int elements) {
   std::sort(groups.begin(), groups.end(), smaller);
@@ -86,8 +91,9 @@ std::vector<std::vector<const Identical*>> size_groups(std::vector<Identical>& g
   std::vector<int> counts(1, 0);
   int cumulative = 0;
   for (const Identical& g : groups) {
-    const int target = static_cast<int>(classes.size()) * elements / count;  // end of this class
-    if (cumulative >= target && counts.back() >= kMinElementsPerClass &&
+    // The end of this class's share, against the middle of the group (both doubled, in integers).
+    const int target = 2 * static_cast<int>(classes.size()) * elements / count;
+    if (2 * cumulative + g.elements > target && counts.back() >= kMinElementsPerClass &&
         static_cast<int>(classes.size()) < count) {
       classes.emplace_back();
       counts.push_back(0);

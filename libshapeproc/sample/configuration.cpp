@@ -124,6 +124,12 @@ void Configuration::move(int slot, const Vec3& position, double local,
 
 void Configuration::statistics_in(const geometry::Box3& region, std::vector<double>& out) const {
   out.assign(statistics_.size(), 0.0);
+  // A pair interacting across the torus's seam is not a pair of the window: its elements lie at
+  // opposite edges.
+  const auto wraps = [&](const Vec3& a, const Vec3& b) {
+    const Vec3 direct = b - a;
+    return geometry::minimum_image(direct, period_) != direct;
+  };
   const auto inside = [&](int slot) {
     return region.contains(elements_[static_cast<std::size_t>(slot)].position);
   };
@@ -134,7 +140,8 @@ void Configuration::statistics_in(const geometry::Box3& region, std::vector<doub
     if (const int k = interaction_.class_statistic(e.shape); k >= 0)
       out[static_cast<std::size_t>(k)] += 1.0;
     for (const Link& l : links_[static_cast<std::size_t>(slot)])
-      if (l.slot > slot && inside(l.slot)) out[static_cast<std::size_t>(l.parameter)] += 1.0;
+      if (l.slot > slot && inside(l.slot) && !wraps(e.position, at(l.slot).position))
+        out[static_cast<std::size_t>(l.parameter)] += 1.0;
   }
 }
 

@@ -203,8 +203,9 @@ TEST(StationaryWindow, AWindowsStatisticsAndTheirDerivative) {
 
 // A Strauss-type process sampled on a 150 x 150 torus; the exemplar is its central 70 x 70 window,
 // cut out (an open window whose elements had neighbours beyond its edge). Fitted on the
-// stationary window (the 70 x 70 window inside a torus larger by the range, 6, on every side),
-// the estimate lands within 3 of its standard errors (the sandwich's) of the truth.
+// stationary window (the window's own torus, fit::stationary_domain, its statistics without the
+// pairs across the seam), the estimate lands within 3 of its standard errors (the sandwich's) of
+// the truth.
 TEST(StationaryWindow, RecoversAStraussModelFromAPieceOfALargerPattern) {
   const model::ShapeProcessModel truth = testing::point_model(0.03, {0.0, 3.0, 6.0}, {0.3, 0.7});
   const geometry::Box3 window(geometry::Vec3(40, 40, 0), geometry::Vec3(110, 110, 0));
@@ -226,9 +227,7 @@ TEST(StationaryWindow, RecoversAStraussModelFromAPieceOfALargerPattern) {
   start.interactions[0].axes[0].gammas = {1.0, 1.0};
   MleOptions options = strauss_fit();
   options.sampling.observe_region = window;
-  const geometry::Domain torus(
-      geometry::Box3(geometry::Vec3(34, 34, 0), geometry::Vec3(116, 116, 0)), 2,
-      geometry::Boundary::torus);
+  const geometry::Domain torus(window, 2, geometry::Boundary::torus);
   const MleResult mle = maximise_likelihood(start, torus, observed, options);
   ASSERT_TRUE(mle.converged) << mle.iterations << " iterations";
   const std::vector<double> true_theta = {std::log(0.03), std::log(0.3), std::log(0.7)};

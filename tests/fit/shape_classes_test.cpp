@@ -82,6 +82,20 @@ TEST(ShapeClasses, TooManyShapesAreGroupedBySize) {
   EXPECT_DOUBLE_EQ(f.model.shape_classes[0].weight, 0.5);
 }
 
+// A group of identical shapes joins the class where most of its elements fall: 5 small, 11
+// middle and 3 large (19 elements, 3 shares of 6.3) make small | middle and large (the large
+// ones, too few for a class, join the middle ones), not one class for all.
+TEST(ShapeClasses, AGroupGoesWhereMostOfItsElementsFall) {
+  std::vector<double> sides = two_sizes(5, 1.0, 11, 4.0);
+  sides.insert(sides.end(), 3, 6.0);
+  Fixture f(sides);
+  assign_shape_classes(f.model, f.scene);
+  ASSERT_EQ(f.model.shape_classes.size(), 2u);
+  for (int i = 0; i < 19; ++i)
+    EXPECT_EQ(f.model.shapes[static_cast<std::size_t>(i)].shape_class, i < 5 ? 0 : 1) << i;
+  EXPECT_DOUBLE_EQ(f.model.shape_classes[0].weight, 5.0 / 19.0);
+}
+
 // The sampler draws a birth's shape by its class weight: with no interaction, the class counts of
 // a sample are Poisson with means β |W| w_k, here 0.25 and 0.75 of 200 (within 4 standard
 // deviations), and its t(x) carries them after the category count.

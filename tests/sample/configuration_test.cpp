@@ -34,5 +34,31 @@ TEST(Configuration, AWindowsStatisticsCountItsElementsAndThePairsWithin) {
   EXPECT_EQ(window, (std::vector<double>{2, 0, 1}));  // B and C, and their pair
 }
 
+// On a torus a window's statistics leave out the pairs that meet across the seam: the window as
+// a piece of a larger drawing has its elements at opposite edges far apart. A 20 x 20 torus with
+// A at (1, 5), B at (19, 5) (2 apart across the seam, band 1) and C at (4, 5) (A–C 3 apart,
+// band 2; B–C 5 across the seam, band 2): the torus counts three pairs, the window one.
+TEST(Configuration, AWindowOnATorusLeavesOutThePairsAcrossItsSeam) {
+  const model::ShapeProcessModel m = testing::point_model(0.01, {0.0, 3.0, 6.0}, {0.5, 0.5});
+  const model::Interaction interaction(m);
+  geometry::Scene space;
+  space.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(20, 20, 0));
+  space.categories.push_back({"points"});
+  space.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  const geometry::PairMeasurer measurer(space, m.measurement_options(true));
+  const geometry::Domain domain(space.window, 2, geometry::Boundary::torus);
+  Configuration c(interaction, measurer, domain, 6.0);
+  std::vector<Link> links;
+  for (const Vec3& p : {Vec3(1, 5, 0), Vec3(19, 5, 0), Vec3(4, 5, 0)}) {
+    const Element e{0, 0, p};
+    c.log_interaction(e, -1, links);
+    c.add(e, 0.0, links);
+  }
+  EXPECT_EQ(c.statistics(), (std::vector<double>{3, 1, 2}));
+  std::vector<double> window;
+  c.statistics_in(space.window, window);
+  EXPECT_EQ(window, (std::vector<double>{3, 0, 1}));  // A–C only
+}
+
 }  // namespace
 }  // namespace shapeproc::sample

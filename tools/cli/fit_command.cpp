@@ -186,9 +186,10 @@ void FitFlags::add_to(CLI::App& command) {
   q->excludes(t);
   command
       .add_option("--edge", edge,
-                  "edge treatment: none, periodic, border or stationary (maximum likelihood of "
-                  "the window as a piece of a larger drawing); auto: periodic for a --tile, else "
-                  "none")
+                  "edge treatment: none (the window as drawn, cut at its edges), periodic, border "
+                  "or stationary (maximum likelihood of the window as a piece of a larger "
+                  "drawing); auto: periodic for a --tile, else stationary for the maximum "
+                  "likelihood of an exemplar that is not packed, else none")
       ->check(CLI::IsMember({"auto", "none", "periodic", "border", "stationary"}))
       ->capture_default_str();
   add_measurement_kind_options(command, distance, direction);
@@ -246,7 +247,9 @@ fit::MleOptions FitFlags::mle_options() const {
   o.sampling.chains = mle_chains;
   o.sampling.steps = mle_steps;
   o.sampling.seed = mle_seed;
-  o.stationary_window = edge == "stationary";
+  o.window = edge == "stationary" ? fit::WindowModel::stationary
+             : edge == "auto"     ? fit::WindowModel::automatic
+                                  : fit::WindowModel::own;
   return o;
 }
 
