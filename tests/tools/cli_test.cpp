@@ -697,9 +697,10 @@ TEST(CliFit, MaximumLikelihoodMatchesTheExemplarsCount) {
 TEST(CliFit, AStationaryWindowIsFittedAndCheckedAsAPieceOfALargerDrawing) {
   const testing::TempDir dir;
   const std::string model = dir.file("s.json").string();
-  const Result r = run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "16", "--edge",
-                            "stationary", "-o", model, "--quiet"});
+  // The default for an open window that is not packed: its summary says so.
+  const Result r = run_cli({"fit", data("svg/dots-random.svg"), "--quadrature", "16", "-o", model});
   ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("window: stationary"), std::string::npos) << r.out;
   const nlohmann::json e = nlohmann::json::parse(testing::read_file(model))["fit"]["estimator"];
   EXPECT_EQ(e["window"], "stationary");
   EXPECT_TRUE(e["converged"].get<bool>());
@@ -709,6 +710,17 @@ TEST(CliFit, AStationaryWindowIsFittedAndCheckedAsAPieceOfALargerDrawing) {
                                   "--edge", "stationary", "--chains", "10", "--quiet"});
   ASSERT_EQ(checked.code, 0) << checked.err;
   EXPECT_NE(checked.out.find("own window, 10 chains"), std::string::npos) << checked.out;
+  // A packed exemplar keeps its own window, and --edge none asks for it.
+  for (const auto& [exemplar, edge] :
+       {std::pair{"svg/crescents-grid.svg", "auto"}, std::pair{"svg/dots-random.svg", "none"}}) {
+    const std::string own = dir.file(std::string("own-") + edge + ".json").string();
+    ASSERT_EQ(run_cli({"fit", data(exemplar), "--quadrature", "16", "--mle-steps", "5000", "--edge",
+                       edge, "-o", own, "--quiet"})
+                  .code,
+              0);
+    EXPECT_EQ(nlohmann::json::parse(testing::read_file(own))["fit"]["estimator"]["window"], "own")
+        << exemplar;
+  }
   const Result refused = run_cli({"fit", data("svg/dots-random.svg"), "--edge", "stationary",
                                   "--estimator", "mpl", "-o", dir.file("m.json").string()});
   EXPECT_EQ(refused.code, 2);

@@ -62,6 +62,9 @@ void print_goodness_of_fit(const model::ShapeProcessModel& model, const nlohmann
       << (e.value("converged", false) ? "converged" : "did not converge") << " in "
       << e.value("iterations", 0) << " iteration(s), " << g(e.value("seconds", 0.0), 3)
       << " s; largest |z| accepted " << g(e.value("tolerance", 0.0), 3) << "\n";
+  if (e.value("window", "own") == "stationary")
+    out << "  window: stationary (the exemplar as a piece of a larger drawing: its own torus, "
+           "its pairs across the seam left out; --edge none fits it as drawn)\n";
   out << "  " << std::left << std::setw(34) << "statistic" << std::right << std::setw(10)
       << "exemplar" << std::setw(22) << "model (mean ± se)" << std::setw(8) << "z" << '\n';
   for (std::size_t k = 0; k < observed.size() && k < names.size() && k < expected.size(); ++k) {
