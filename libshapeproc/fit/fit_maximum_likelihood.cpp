@@ -127,6 +127,26 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     }
   }
   const MleResult mle = maximise_likelihood(start, window, observed, chains);
+  if (stationary && !mle.converged && options.window == WindowModel::automatic) {
+    // A model near a phase transition can swing between a sparse and a condensed state on the
+    // torus at every step (rings: |z| 10 to 10⁹ and back for 30 iterations); the window as drawn
+    // converges where the torus does not, and is what the user gets, with the reason.
+    MleOptions own = options;
+    own.window = WindowModel::own;
+    FitResult fallback = refine_to_maximum_likelihood(exemplar, fit_options, std::move(mple), own);
+    fallback.notes.insert(
+        fallback.notes.begin(),
+        "the fit of the window as a piece of a larger drawing (its own torus) did not "
+        "converge (" +
+            std::to_string(mle.iterations) + " iteration(s), " +
+            core::format_general(mle.seconds, 3) +
+            " s), so the window was fitted as drawn (--edge none); its outputs may be denser or "
+            "sparser than the exemplar near its edges");
+    nlohmann::json record = nlohmann::json::parse(fallback.model.fit_json);
+    record["notes"] = fallback.notes;
+    fallback.model.fit_json = record.dump();
+    return fallback;
+  }
   FitResult result = std::move(mple);
   const std::string fit_json = result.model.fit_json;
   result.model = with_estimates(start, mle);

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -405,6 +407,27 @@ TEST(FitRegion, PointsAtTheBorderDistanceCountUpToRounding) {
   EXPECT_FALSE(region.contains(Vec3(0.9 + 1e-6, 0.5, 0)));
   EXPECT_FALSE(region.contains(Vec3(0.5, 0.1 - 1e-6, 0)));
   EXPECT_TRUE(fit_region(scene, geometry::EdgeTreatment::none, 0.1).contains(Vec3(0.95, 0.5, 0)));
+}
+
+// The default window model: stationary unless the exemplar is packed, and where the fit on the
+// window's torus does not converge (here it cannot: one iteration is a rough simulation that
+// never passes), the window as drawn, with a note that says why.
+TEST(Fit, AnAutomaticWindowFallsBackToTheWindowAsDrawnWhenItsTorusDoesNotConverge) {
+  const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  FitOptions options;
+  options.quadrature = 8;
+  MleOptions mle;
+  mle.window = WindowModel::automatic;
+  mle.max_iterations = 1;
+  mle.sampling.steps = 2000;
+  const FitResult fit =
+      refine_to_maximum_likelihood(dots, options, fit_shape_process(dots, options), mle);
+  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
+  EXPECT_EQ(record["estimator"]["window"], "own");
+  ASSERT_FALSE(fit.notes.empty());
+  EXPECT_NE(fit.notes[0].find("its own torus) did not converge (1 iteration(s)"), std::string::npos)
+      << fit.notes[0];
+  EXPECT_EQ(record["notes"][0], fit.notes[0]);
 }
 
 }  // namespace
