@@ -52,7 +52,8 @@ enum class WindowModel {
   // solves E_θ[t_W(X)] = t(z) for the statistics t_W of the window's pairs, those that do not
   // meet across the torus's seam (fit::stationary_domain).
   stationary,
-  // stationary, except for a packed exemplar (its chains held at it): own. The default.
+  // stationary, except for a packed exemplar (its chains held at it): own. The default, as for
+  // the command line's --edge auto.
   automatic,
 };
 
@@ -71,7 +72,7 @@ struct MleOptions {
   double attraction_prior_sd = 1.5;
   double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
   // Which model of an open window without border correction is fitted (WindowModel).
-  WindowModel window = WindowModel::own;
+  WindowModel window = WindowModel::automatic;
   // Called after each iteration (MleProgress). May be empty.
   std::function<void(const MleProgress&)> progress;
 };
