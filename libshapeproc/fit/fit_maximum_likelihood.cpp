@@ -8,7 +8,6 @@
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
-#include "libshapeproc/sample/birth_death_sampler.hpp"
 
 namespace shapeproc::fit {
 
@@ -97,9 +96,10 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   model::ShapeProcessModel start = mple.model;
   const bool open_window = fit_options.boundary == geometry::Boundary::open &&
                            fit_options.edge == geometry::EdgeTreatment::none;
+  const bool at_exemplar = packed_exemplar(start);  // its chains start at it (below)
   const bool stationary =
       open_window && (options.window == WindowModel::stationary ||
-                      (options.window == WindowModel::automatic && !packed_exemplar(start)));
+                      (options.window == WindowModel::automatic && !at_exemplar));
   const geometry::Domain window =
       stationary ? stationary_domain(exemplar)
                  : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
@@ -114,7 +114,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     measure = geometry::measure(border.region, exemplar.dimension);
   }
   // A packed exemplar's chains start at it (its free part with border correction).
-  const bool at_exemplar = packed_exemplar(start);
   if (at_exemplar) chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
