@@ -62,7 +62,7 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
                               std::min(options.cluster_min_points, options.k));
   g.exact = options.exact_overlap;
   geometry::ProxyOptions proxy;
-  proxy.tolerance = 0.002;  // as close to the drawn outlines as `stats` judges collisions
+  proxy.tolerance = geometry::kOutlineTolerance;  // as `stats` judges collisions
   for (const geometry::Shape& shape : g.em.scene.shapes) {
     g.shape_radius.push_back(0.5 * geometry::bounding_box(shape).sizes().norm());
     if (!g.exact) continue;

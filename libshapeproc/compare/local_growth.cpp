@@ -29,7 +29,7 @@ const geometry::Proxy2& proxy_of(Growth& g, int shape, double angle) {
   auto found = g.proxies.find(key);
   if (found != g.proxies.end()) return found->second;
   geometry::ProxyOptions options;
-  options.tolerance = 0.002;  // as close to the drawn outlines as `stats` judges collisions
+  options.tolerance = geometry::kOutlineTolerance;  // as `stats` judges collisions
   const geometry::Shape& drawn = g.exemplar.scene.shapes[static_cast<std::size_t>(shape)];
   Similarity turn_only;
   turn_only.linear = Eigen::AngleAxisd(static_cast<double>(key.second) * kTurnStep, Vec3::UnitZ())

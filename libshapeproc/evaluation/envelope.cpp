@@ -44,7 +44,7 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   const bool periodic = boundary == geometry::Boundary::torus;
   metrics::StatisticsOptions stats;
   stats.measurement = model.measurement_options(periodic);
-  stats.measurement.proxy.tolerance = 0.002;
+  stats.measurement.proxy.tolerance = geometry::kOutlineTolerance;
   stats.offset_samples = 4096;  // g's reference measure: enough for a band of 19 samples
   const double range =
       std::pow(exemplar.window_measure() /

@@ -14,6 +14,12 @@
 
 namespace shapeproc::geometry {
 
+// The proxy tolerance at which collisions are judged (`stats`, `fidelity`, the growth methods)
+// and the sampler keeps drawn outlines apart (sample/overlap_guard.hpp): close enough to the drawn
+// outlines that what overlaps at it overlaps in the drawing, far finer than the measurements'
+// default (ProxyOptions::tolerance).
+inline constexpr double kOutlineTolerance = 0.002;
+
 struct ProxyOptions {
   // Simplification error bound as a fraction of the element's bounding-box diagonal (2D:
   // Douglas–Peucker distance; 3D: quadric error as a distance). Curves are flattened first at a

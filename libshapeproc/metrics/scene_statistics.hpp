@@ -37,7 +37,7 @@ struct StatisticsOptions {
 
   static geometry::MeasurementOptions default_measurement() {
     geometry::MeasurementOptions m;
-    m.proxy.tolerance = 0.002;  // collisions are judged close to the drawn outlines
+    m.proxy.tolerance = geometry::kOutlineTolerance;  // collisions judged near the drawn outlines
     return m;
   }
 };

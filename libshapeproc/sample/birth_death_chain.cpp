@@ -53,6 +53,7 @@ ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::
   interaction = std::make_unique<const model::Interaction>(model);
   measurer = std::make_unique<const geometry::PairMeasurer>(
       shape_space, model.measurement_options(domain.periodic()));
+  guard = std::make_unique<const OverlapGuard>(*interaction, shape_space, measurer->options());
   double max_radius = 0.0;
   for (std::size_t s = 0; s < shape_space.shapes.size(); ++s)
     max_radius = std::max(max_radius, measurer->radius(static_cast<int>(s)));
@@ -78,8 +79,8 @@ BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& r
     : t_(tables),
       r_(region),
       random_(random),
-      state_(*tables.interaction, *tables.measurer, region.domain, tables.reach, region.grid_box,
-             region.period) {
+      state_(*tables.interaction, *tables.measurer, tables.guard.get(), region.domain, tables.reach,
+             region.grid_box, region.period) {
   log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
                             std::log(static_cast<double>(t_.shapes_of.size()));
   for (const Element& e : fixed) {

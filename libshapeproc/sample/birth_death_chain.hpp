@@ -14,6 +14,7 @@
 #include "libshapeproc/model/shape_process_model.hpp"
 #include "libshapeproc/sample/configuration.hpp"
 #include "libshapeproc/sample/move_counts.hpp"
+#include "libshapeproc/sample/overlap_guard.hpp"
 
 namespace shapeproc::sample {
 
@@ -26,8 +27,9 @@ struct ChainTables {
   int dimension = 2;
   std::unique_ptr<const model::Interaction> interaction;
   std::unique_ptr<const geometry::PairMeasurer> measurer;
-  geometry::Scene shape_space;              // the model's shapes, the domain's box as window
-  std::vector<std::vector<int>> shapes_of;  // per category
+  std::unique_ptr<const OverlapGuard> guard;  // the drawn outlines kept apart
+  geometry::Scene shape_space;                // the model's shapes, the domain's box as window
+  std::vector<std::vector<int>> shapes_of;    // per category
   // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
   // weight shared equally by its shapes); empty: its shapes are equally likely.
   std::vector<std::vector<double>> shape_cumulative;

@@ -9,10 +9,12 @@
 namespace shapeproc::sample {
 
 Configuration::Configuration(const model::Interaction& interaction,
-                             const geometry::PairMeasurer& measurer, const geometry::Domain& domain,
-                             double reach, const geometry::Box3& grid_box, const Vec3& period)
+                             const geometry::PairMeasurer& measurer, const OverlapGuard* guard,
+                             const geometry::Domain& domain, double reach,
+                             const geometry::Box3& grid_box, const Vec3& period)
     : interaction_(interaction),
       measurer_(measurer),
+      guard_(guard && guard->active() ? guard : nullptr),
       grid_(grid_box.isEmpty() ? domain.box() : grid_box, domain.dimension(), reach,
             period.isZero()
                 ? std::array<bool, 3>{domain.periodic(), domain.periodic(), domain.periodic()}
@@ -49,7 +51,10 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
   for (const auto& [squared, slot] : candidates_) {
     const model::PairEffect effect = model::pair_distance_effect(
         interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
-    if (effect.band == model::Interaction::kHardCore) {
+    if (effect.band == model::Interaction::kHardCore ||
+        (guard_ && effect.axis_pending &&
+         guard_->overlaps(xi, elements_[static_cast<std::size_t>(slot)], effect.offset,
+                          effect.distance))) {
       forbidden = true;
       break;
     }

@@ -12,6 +12,7 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/overlap_guard.hpp"
 
 namespace shapeproc::sample {
 
@@ -33,8 +34,9 @@ class Configuration {
   // configuration's elements lie (a decomposition's cell and its surroundings). `period`, when
   // not zero, replaces the domain's torus period: the configuration wraps along the axes where it
   // is positive (a cell that spans a torus along an axis the decomposition does not cut).
+  // `guard` (may be null) keeps the drawn outlines apart (overlap_guard.hpp).
   Configuration(const model::Interaction& interaction, const geometry::PairMeasurer& measurer,
-                const geometry::Domain& domain, double reach,
+                const OverlapGuard* guard, const geometry::Domain& domain, double reach,
                 const geometry::Box3& grid_box = geometry::Box3(),
                 const Vec3& period = Vec3::Zero());
 
@@ -80,6 +82,7 @@ class Configuration {
 
   const model::Interaction& interaction_;
   const geometry::PairMeasurer& measurer_;
+  const OverlapGuard* guard_;  // null or inactive: none
   geometry::NeighbourGrid grid_;
   std::vector<Element> elements_;
   std::vector<int> alive_, free_, position_in_alive_;

@@ -25,7 +25,7 @@ struct Points {
     const geometry::Domain domain(space.window, 2, boundary);
     measurer =
         std::make_unique<geometry::PairMeasurer>(space, m.measurement_options(domain.periodic()));
-    c = std::make_unique<Configuration>(interaction, *measurer, domain, 6.0);
+    c = std::make_unique<Configuration>(interaction, *measurer, nullptr, domain, 6.0);
     std::vector<Link> links;
     for (const Vec3& p : positions) {
       const Element e{0, 0, p};
