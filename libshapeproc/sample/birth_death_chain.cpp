@@ -53,7 +53,7 @@ ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::
   interaction = std::make_unique<const model::Interaction>(model);
   measurer = std::make_unique<const geometry::PairMeasurer>(
       shape_space, model.measurement_options(domain.periodic()));
-  guard = std::make_unique<const OverlapGuard>(*interaction, shape_space, measurer->options());
+  guard = std::make_unique<const OverlapGuard>(*interaction, shape_space, *measurer);
   double max_radius = 0.0;
   for (std::size_t s = 0; s < shape_space.shapes.size(); ++s)
     max_radius = std::max(max_radius, measurer->radius(static_cast<int>(s)));

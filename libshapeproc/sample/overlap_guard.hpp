@@ -20,11 +20,12 @@ namespace shapeproc::sample {
 
 class OverlapGuard {
  public:
-  // `shape_space`: the model's shapes; `options`: the measurements of the model. The guard is
-  // inactive for other distance kinds than the shape distance and for proxies already as fine as
-  // the outline tolerance.
+  // `shape_space`: the model's shapes; `proxies`: the model's measurer of them. The guard is
+  // inactive for other distance kinds than the shape distance, for proxies already as fine as
+  // the outline tolerance, and where the fine proxies are the model's (polygons: nothing to
+  // flatten, nothing the simplification drops at either tolerance).
   OverlapGuard(const model::Interaction& interaction, const geometry::Scene& shape_space,
-               const geometry::MeasurementOptions& options);
+               const geometry::PairMeasurer& proxies);
   ~OverlapGuard();
 
   bool active() const { return outlines_ != nullptr; }

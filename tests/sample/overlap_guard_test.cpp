@@ -7,6 +7,7 @@
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
+#include "tests/squares_model.hpp"
 
 namespace shapeproc::sample {
 namespace {
@@ -31,7 +32,7 @@ struct Discs {
   geometry::Scene space = m.shape_space();
   geometry::MeasurementOptions options = m.measurement_options(false);
   geometry::PairMeasurer proxies{space, options};
-  OverlapGuard guard{interaction, space, options};
+  OverlapGuard guard{interaction, space, proxies};
 };
 
 // Two discs 20 − ε apart between centres overlap by ε as drawn; the proxies' chords cut inside
@@ -65,15 +66,23 @@ TEST(OverlapGuard, FindsTheOverlapsOfTheOutlinesThatTheProxiesMiss) {
   EXPECT_GT(apart, 100);
 }
 
-// With proxies as fine as the outlines' or distances between centroids, there is nothing to guard.
-TEST(OverlapGuard, IsInactiveWhereTheProxiesAreFineOrTheDistanceIgnoresShapes) {
+// With proxies as fine as the outlines', polygons (their proxies are their outlines at any
+// tolerance) or distances between centroids, there is nothing to guard.
+TEST(OverlapGuard, IsInactiveWhereTheProxiesAreTheOutlinesOrTheDistanceIgnoresShapes) {
   const Discs d;
   geometry::MeasurementOptions fine = d.options;
   fine.proxy.tolerance = geometry::kOutlineTolerance;
-  EXPECT_FALSE(OverlapGuard(d.interaction, d.space, fine).active());
+  EXPECT_FALSE(
+      OverlapGuard(d.interaction, d.space, geometry::PairMeasurer(d.space, fine)).active());
   geometry::MeasurementOptions centroids = d.options;
   centroids.distance = geometry::DistanceKind::centroid;
-  EXPECT_FALSE(OverlapGuard(d.interaction, d.space, centroids).active());
+  EXPECT_FALSE(
+      OverlapGuard(d.interaction, d.space, geometry::PairMeasurer(d.space, centroids)).active());
+  const model::ShapeProcessModel squares = io::parse_model(testing::kSquaresModel, "squares.json");
+  const geometry::Scene space = squares.shape_space();
+  EXPECT_FALSE(OverlapGuard(model::Interaction(squares), space,
+                            geometry::PairMeasurer(space, squares.measurement_options(false)))
+                   .active());
 }
 
 // Chains that press discs together leave no pair overlapping as `stats` judges collisions.
