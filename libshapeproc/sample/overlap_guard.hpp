@@ -39,8 +39,8 @@ class OverlapGuard {
  private:
   const model::Interaction& interaction_;
   std::unique_ptr<const geometry::PairMeasurer> outlines_;  // null when inactive
-  // Per shape: how far its proxy and its fine proxy may each stray from the drawn outline
-  // together (twice the sum of their tolerances' bounds, for the curves' flattening too).
+  // Per shape: how far its proxy and its fine proxy may stray from the drawn outline together
+  // (the sum of their tolerances times its diagonal, with the curves' flattening and a margin).
   std::vector<double> error_;
 };
 
