@@ -117,10 +117,13 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
                                     const MleResult& failed) {
   MleOptions own = options;
   own.window = WindowModel::own;
+  const std::vector<std::string> pseudo_likelihood_notes = mple.notes;
   FitResult drawn = refine_to_maximum_likelihood(exemplar, fit_options, std::move(mple), own);
   MleOptions torus = options;
   torus.window = WindowModel::stationary;
-  FitResult again = refine_to_maximum_likelihood(exemplar, fit_options, drawn, torus);
+  FitResult start = drawn;
+  start.notes = pseudo_likelihood_notes;  // the window as drawn's own notes are not the torus's
+  FitResult again = refine_to_maximum_likelihood(exemplar, fit_options, std::move(start), torus);
   nlohmann::json record = nlohmann::json::parse(again.model.fit_json);
   const nlohmann::json& estimator = record["estimator"];
   const std::string first =
