@@ -100,9 +100,9 @@ void add_first_note(FitResult& fit, const std::string& note) {
   fit.model.fit_json = record.dump();
 }
 
-std::string attempt(const MleResult& mle) {
-  return std::to_string(mle.iterations) + " iteration(s), " + core::format_general(mle.seconds, 3) +
-         " s";
+// "N iteration(s), S s": what a maximum-likelihood attempt took.
+std::string attempt(int iterations, double seconds) {
+  return std::to_string(iterations) + " iteration(s), " + core::format_general(seconds, 3) + " s";
 }
 
 // An automatic window whose torus did not converge from the pseudo-likelihood's start. A model
@@ -129,7 +129,7 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
   const std::string first =
       "the fit of the window as a piece of a larger drawing (its own torus) "
       "did not converge from the pseudo-likelihood's estimate (" +
-      attempt(failed) + ")";
+      attempt(failed.iterations, failed.seconds) + ")";
   if (estimator.value("converged", false)) {
     record["estimator"]["start"] = "mle of the window as drawn";
     again.model.fit_json = record.dump();
@@ -139,11 +139,11 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
                               std::to_string(estimator.value("iterations", 0)) + " iteration(s))");
     return again;
   }
-  add_first_note(drawn, first + ", nor from the estimate of the window as drawn (" +
-                            std::to_string(estimator.value("iterations", 0)) + " iteration(s), " +
-                            core::format_general(estimator.value("seconds", 0.0), 3) +
-                            " s), so the window was fitted as drawn (--edge none); its outputs "
-                            "may be denser or sparser than the exemplar near its edges");
+  add_first_note(drawn,
+                 first + ", nor from the estimate of the window as drawn (" +
+                     attempt(estimator.value("iterations", 0), estimator.value("seconds", 0.0)) +
+                     "), so the window was fitted as drawn (--edge none); its outputs "
+                     "may be denser or sparser than the exemplar near its edges");
   return drawn;
 }
 
