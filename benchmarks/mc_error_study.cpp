@@ -65,10 +65,15 @@ int main(int argc, char** argv) {
     const model::ShapeProcessModel model = io::read_model(argv[2]);
     const int replicates = argc > 3 ? std::max(2, std::atoi(argv[3])) : 20;
     const std::vector<double> observed = fit::observed_statistics(exemplar, model);
-    const geometry::Domain window(exemplar.window, exemplar.dimension, geometry::Boundary::open);
+    // As the fit sampled: a model fitted on the stationary window on the window's torus.
+    const bool stationary = fit::fitted_on_stationary_window(model);
+    const geometry::Domain window =
+        stationary ? fit::stationary_domain(exemplar)
+                   : geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::open);
     const std::string chains = argc > 5 ? argv[5] : "fit";
     fit::ChainsSetting setting =
         chains == "fidelity" ? evaluation::fidelity_chains() : fit::ChainsSetting{};
+    if (stationary) setting.observe_region = exemplar.window;
     if (fit::starts_at_exemplar(model)) setting.start = exemplar.elements;
     const std::size_t p = observed.size();
     std::vector<double> sum(p), squares(p), error(p), batch_error(p), effective(p);
