@@ -9,6 +9,7 @@
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/overlap_depth.hpp"
+#include "libshapeproc/geometry/round_shape.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 
@@ -76,6 +77,7 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
     const Shape& shape = scene.shapes[s];
     if (dimension_ == 2) {
       proxies2_.push_back(make_proxy2(shape, options.proxy));
+      round_.push_back(round_radius(shape).value_or(-1.0));
       const Proxy2& p = proxies2_.back();
       source[s] = p.source_segments;
       simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
@@ -247,6 +249,12 @@ double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff,
 }
 
 Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const {
+  // Two round shapes whose outer circles are apart pull along the line from one centre (its
+  // reference position) to the other: the centroid direction, exactly (round_shape.hpp).
+  if (dimension_ == 2) {
+    const double ra = round_[static_cast<std::size_t>(a)], rb = round_[static_cast<std::size_t>(b)];
+    if (ra >= 0 && rb >= 0 && offset.norm() > ra + rb) return offset.normalized();
+  }
   Vec3 force = Vec3::Zero();
   double scale = 0.0;
   if (dimension_ == 2) {

@@ -142,6 +142,7 @@ class PairMeasurer {
   std::vector<Proxy2> proxies2_;
   std::vector<Proxy3> proxies3_;
   std::vector<double> radii_;
+  std::vector<double> round_;  // 2D: round_radius of each shape, −1 if not round (round_shape.hpp)
   ProxyStatistics statistics_;
   std::shared_ptr<ExpansionCache> expansions_;  // shared by copies; empty in 3D
 };
