@@ -8,7 +8,6 @@
 // standard errors (effective_sample_size.hpp) and against batch means with five batches per
 // chain (the estimator before): a ratio near 1 is an honest error, above 1 one that is too
 // small. docs/fit.md, "Monte Carlo standard errors", holds the figures.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -69,17 +68,13 @@ int main(int argc, char** argv) {
     // As the fit sampled: a model fitted on the stationary window on the window's torus.
     const bool stationary = fit::fitted_on_stationary_window(model);
     const geometry::Domain window =
-        stationary
-            ? fit::stationary_domain(exemplar)
-            : geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::open);
+        stationary ? fit::stationary_domain(exemplar)
+                   : geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::open);
     const std::string chains = argc > 5 ? argv[5] : "fit";
     fit::ChainsSetting setting =
         chains == "fidelity" ? evaluation::fidelity_chains() : fit::ChainsSetting{};
     if (stationary) setting.observe_region = exemplar.window;
-    if (fit::starts_at_exemplar(model)) {
-      setting.start = exemplar.elements;
-      if (chains == "fit") setting.burn_in = std::min(setting.burn_in, fit::kHeldBurnIn);
-    }
+    if (fit::starts_at_exemplar(model)) setting.start = exemplar.elements;
     const std::size_t p = observed.size();
     std::vector<double> sum(p), squares(p), error(p), batch_error(p), effective(p);
     for (int r = 0; r < replicates; ++r) {

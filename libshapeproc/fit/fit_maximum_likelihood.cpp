@@ -172,13 +172,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
-  // A packed exemplar's chains start at it (its free part with border correction), a state they
-  // hold: they have no window to fill, and a shorter burn-in lets them leave the exemplar's exact
-  // configuration (docs/fit.md, "Packed exemplars").
-  if (at_exemplar) {
-    chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
-    chains.sampling.burn_in = std::min(chains.sampling.burn_in, kHeldBurnIn);
-  }
+  // A packed exemplar's chains start at it (its free part with border correction).
+  if (at_exemplar) chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;

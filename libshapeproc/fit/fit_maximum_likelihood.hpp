@@ -41,9 +41,6 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 // Whether samples of a fitted model start from its exemplar, as its maximum-likelihood chains
 // did (its fit record's `estimator.chains_start`); false for other models.
 bool starts_at_exemplar(const model::ShapeProcessModel& model);
-// The burn-in (at most) of maximum-likelihood chains that start at a packed exemplar: they start
-// full, in a state they hold, with no window to fill (from empty: ChainsSetting's 20,000 steps).
-inline constexpr long long kHeldBurnIn = 5000;
 
 // The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.
 // Its elements near an edge see neighbours across the seam, as in a larger drawing; the
