@@ -68,8 +68,9 @@ int main(int argc, char** argv) {
     // As the fit sampled: a model fitted on the stationary window on the window's torus.
     const bool stationary = fit::fitted_on_stationary_window(model);
     const geometry::Domain window =
-        stationary ? fit::stationary_domain(exemplar)
-                   : geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::open);
+        stationary
+            ? fit::stationary_domain(exemplar)
+            : geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::open);
     const std::string chains = argc > 5 ? argv[5] : "fit";
     fit::ChainsSetting setting =
         chains == "fidelity" ? evaluation::fidelity_chains() : fit::ChainsSetting{};
