@@ -77,8 +77,12 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
     const Shape& shape = scene.shapes[s];
     if (dimension_ == 2) {
       proxies2_.push_back(make_proxy2(shape, options.proxy));
-      round_.push_back(round_radius(shape).value_or(-1.0));
       const Proxy2& p = proxies2_.back();
+      // A round shape's outer circle holds its mass too: a curve's strip reaches beyond it.
+      double round = round_radius(shape).value_or(-1.0);
+      if (round >= 0)
+        for (const Vec2& v : p.mass.start) round = std::max(round, v.norm());
+      round_.push_back(round);
       source[s] = p.source_segments;
       simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
       mass[s] = p.mass.start.size();

@@ -5,7 +5,8 @@
 // relative orientation is the line from one centre to the other, exactly, with no boundary
 // integral (pair_measurements.hpp). (A dot in a ring's hole is pulled towards the nearer wall,
 // away from the centre: such pairs are integrated.) On their polygonal proxies the integral
-// gives the same line up to the proxies' error.
+// gives the same line up to the proxies' error. The outer circle also holds the mass of an
+// outline drawn as a curve, whose strip reaches beyond the outline (PairMeasurer widens it).
 #pragma once
 
 #include <optional>

@@ -86,6 +86,27 @@ TEST(RoundShape, ApartTheyPullAlongTheLineOfCentres) {
   EXPECT_LT(worst, 0.035);
 }
 
+// An unfilled circle drawn with a wide stroke is round, and its mass is the stroke's strip,
+// wider than the outline: a dot inside the strip, beyond the outline's circle, is integrated.
+TEST(RoundShape, AStrokesStripWidensTheOuterCircle) {
+  Scene scene;
+  scene.dimension = 2;
+  scene.window = Box3(Vec3(-100, -100, 0), Vec3(100, 100, 0));
+  Shape circle = planar({ellipse_path(Vec2::Zero(), 5, 5)}, FillRule::nonzero, false);
+  std::get<PlanarShape>(circle.geometry).parts.front().style["stroke-width"] = "4";
+  ASSERT_TRUE(round_radius(circle).has_value());
+  scene.shapes = {circle, disc(0.5)};
+  const PairMeasurer measurer(scene, MeasurementOptions{});
+  for (const double r : {5.8, 6.3, 6.8}) {
+    const Vec3 offset(r, 0, 0);
+    const Vec2 force = gravitation_force(measurer.proxies2()[0].mass, measurer.proxies2()[1].mass,
+                                         offset.head<2>(), nullptr);
+    const Vec3 direction = measurer.direction(0, 1, offset);
+    EXPECT_NEAR(direction.x(), force.normalized().x(), 1e-9) << r;
+    EXPECT_NEAR(direction.y(), force.normalized().y(), 1e-9) << r;
+  }
+}
+
 // The shipped exemplars whose shapes are all discs or rings, those whose shapes are none, and
 // two-kinds: its discs are round, its crosses are not.
 TEST(RoundShape, ShippedDiscAndRingExemplarsAreRound) {
