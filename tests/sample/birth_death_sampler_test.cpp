@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
@@ -248,8 +249,12 @@ TEST(BirthDeath, IntensityMapScalesTheDensity) {
 }
 
 // Fit → sample → refit: an anisotropic Strauss-type point process (mild inhibition along x,
-// strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus, refitted with its
-// own thresholds: every parameter within 3 standard errors of the truth.
+// strong along y; γ ≤ 1 keeps the point process stable) sampled on a large torus at six seeds,
+// refitted with its own thresholds: the mean of each parameter's six estimates within the t
+// quantile (5 degrees of freedom, two-sided 1%: 4.03) of its standard error from their spread.
+// The pseudo-likelihood's own standard errors ignore the pattern's dependence: over ten seeds
+// (samples run to twice the automatic rule's length) its estimates strayed from the truth by
+// about twice them (z up to 4.3), so one seed judged by them passes or fails by luck.
 TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   model::ShapeProcessModel truth = testing::point_model(0.02);
   truth.measurement.directions = 4;
@@ -267,25 +272,33 @@ TEST(BirthDeath, FitSampleRefitRecoversAnAnisotropicModel) {
   const geometry::Domain domain =
       geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
   SamplerOptions options;
-  const SampleResult sampled = sample_with_seed(truth, domain, options, 2024);
-  ASSERT_GT(sampled.scene.elements.size(), 700u);
-
   fit::FitOptions fit_options;
   fit_options.measurement.directions = 4;
   fit_options.measurement.direction = geometry::DirectionKind::centroid;
   fit_options.thresholds = {0.0, 4.0, 8.0};
   fit_options.boundary = geometry::Boundary::torus;
   fit_options.quadrature = 128;
-  const fit::FitResult refit = fit::fit_shape_process(sampled.scene, fit_options);
-  const auto& beta = refit.model.categories[0];
-  EXPECT_NEAR(beta.beta, 0.02, 3 * beta.beta_standard_error);
-  for (std::size_t a = 0; a < 2; ++a) {
-    const auto& fitted = refit.model.interactions[0].axes[a];
-    for (std::size_t k = 0; k < 2; ++k) {
-      EXPECT_NEAR(fitted.gammas[k], truth.interactions[0].axes[a].gammas[k],
-                  3 * fitted.gamma_standard_errors[k])
-          << "axis " << a << " band " << k + 1;
-    }
+  constexpr int kSeeds = 6;
+  constexpr double kQuantile = 4.03;  // t, 5 degrees of freedom, 0.995
+  // Per replicate: β, then γ of axis 0 bands 1–2 and axis 1 bands 1–2.
+  std::vector<std::vector<double>> estimates(5);
+  for (int seed = 2020; seed < 2020 + kSeeds; ++seed) {
+    const SampleResult sampled =
+        sample_with_seed(truth, domain, options, static_cast<std::uint64_t>(seed));
+    ASSERT_GT(sampled.scene.elements.size(), 700u);
+    const fit::FitResult refit = fit::fit_shape_process(sampled.scene, fit_options);
+    estimates[0].push_back(refit.model.categories[0].beta);
+    for (std::size_t a = 0; a < 2; ++a)
+      for (std::size_t k = 0; k < 2; ++k)
+        estimates[1 + 2 * a + k].push_back(refit.model.interactions[0].axes[a].gammas[k]);
+  }
+  const std::vector<double> true_values = {0.02, 0.6, 0.9, 0.2, 0.5};
+  for (std::size_t p = 0; p < estimates.size(); ++p) {
+    double mean = 0.0, spread = 0.0;
+    for (double e : estimates[p]) mean += e / kSeeds;
+    for (double e : estimates[p]) spread += (e - mean) * (e - mean);
+    const double standard_error = std::sqrt(spread / (kSeeds - 1) / kSeeds);
+    EXPECT_NEAR(mean, true_values[p], kQuantile * standard_error) << "parameter " << p;
   }
 }
 
