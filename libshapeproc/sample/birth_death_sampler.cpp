@@ -81,7 +81,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every =
       automatic ? 10000 : std::max<long long>(1, options_.iterations / 100);
-  StationarityRule rule(options_.max_iterations);
+  StationarityRule rule(options_.max_iterations, options_.start.empty());
   long long step = 1;
   for (;; ++step) {
     chain.step();

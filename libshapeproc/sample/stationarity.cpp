@@ -31,11 +31,21 @@ CountTrend count_trend(const std::vector<int>& counts, std::size_t least) {
 }
 
 StationarityRule::Verdict StationarityRule::after_step(long long step, int elements) {
+  // Found stationary at step T, a chain with a run-on goes on to 2T, so that the state it ends in
+  // does not depend on the test having passed (agreeing quarters come more often in a quiet
+  // stretch of a count that swings).
+  if (settled_at_ > 0)
+    return step >= std::min(max_steps_, 2 * settled_at_) ? Verdict::stationary
+                                                         : Verdict::keep_going;
   if (step % kStride == 0) counts_.push_back(elements);
   if (step < next_check_) return Verdict::keep_going;
   if (step >= kStepsPerElement * elements) {
     last_ = count_trend(counts_);
-    if (last_.stationary) return Verdict::stationary;
+    if (last_.stationary) {
+      if (!run_on_ || step >= max_steps_) return Verdict::stationary;
+      settled_at_ = step;
+      return Verdict::keep_going;
+    }
   }
   if (step >= max_steps_) return Verdict::gave_up;
   next_check_ = std::min(max_steps_, std::max(step + 10000, step + step / 4));

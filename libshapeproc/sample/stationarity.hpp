@@ -25,7 +25,11 @@ inline bool is_stationary(const std::vector<int>& counts, std::size_t least = 10
 
 class StationarityRule {
  public:
-  explicit StationarityRule(long long max_steps) : max_steps_(max_steps) {}
+  // With `run_on`, a chain found stationary at step T stops at 2T (at most max_steps): for chains
+  // that sample the model from empty. Chains held at a packed exemplar's repeat stop at T, the
+  // horizon over which their fit held it (docs/sample.md).
+  explicit StationarityRule(long long max_steps, bool run_on = false)
+      : max_steps_(max_steps), run_on_(run_on) {}
 
   enum class Verdict { keep_going, stationary, gave_up };
   // Called after every step with the element count.
@@ -39,6 +43,8 @@ class StationarityRule {
   long long next_check_ = kMinimumSteps;
   std::vector<int> counts_;  // every kStride steps
   CountTrend last_;
+  bool run_on_ = false;
+  long long settled_at_ = 0;  // the step whose check found the count stationary (0: none yet)
 };
 
 }  // namespace shapeproc::sample
