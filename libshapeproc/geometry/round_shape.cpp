@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/path.hpp"
 
 namespace shapeproc::geometry {
@@ -22,7 +23,7 @@ double widest_gap(const std::vector<Vec2>& points) {
     widest = std::max(widest, std::abs(angle));
     turned += angle;
   }
-  constexpr double kTurn = 2.0 * 3.14159265358979323846;
+  constexpr double kTurn = 2.0 * core::kPi;
   return std::abs(std::abs(turned) - kTurn) < 1e-6 ? widest : kTurn;
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/region_gravitation.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -25,7 +26,7 @@ using fixtures::ring;
 Shape regular_polygon(int corners, double radius) {
   std::vector<Vec2> points;
   for (int k = 0; k < corners; ++k) {
-    const double angle = 2 * 3.14159265358979323846 * k / corners;
+    const double angle = 2 * core::kPi * k / corners;
     points.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
   }
   return planar({polygon(points)});
@@ -70,7 +71,7 @@ TEST(RoundShape, ApartTheyPullAlongTheLineOfCentres) {
   for (int trial = 0; trial < 300; ++trial) {
     const int a = static_cast<int>(rng() % 3), b = static_cast<int>(rng() % 3);
     const double outer[] = {2, 5, 0.5};
-    const double angle = 2 * 3.14159265358979323846 * unit(rng);
+    const double angle = 2 * core::kPi * unit(rng);
     const double apart = (outer[a] + outer[b]) * (1.01 + 2 * unit(rng));
     const Vec3 offset(apart * std::cos(angle), apart * std::sin(angle), 0);
     const Vec3 direction = measurer.direction(a, b, offset);
