@@ -116,7 +116,10 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
   sample::SamplerOptions start;  // as `synthesize` starts: a packed exemplar repeated, else empty
-  if (fit::starts_at_exemplar(model)) start.start = geometry::tile_over(exemplar, domain.box());
+  if (fit::starts_at_exemplar(model)) {
+    start.start = geometry::tile_over(exemplar, domain.box());
+    start.held_steps_per_element = fit::held_steps_per_element(model);
+  }
   const sample::ShapeProcessSampler sampler(model, domain, start);
   synthesis::ChainOptions chains;
   chains.chains = options.outputs;

@@ -82,6 +82,13 @@ bool starts_at_exemplar(const model::ShapeProcessModel& model) {
   return estimator_says(model, "chains_start", "exemplar");
 }
 
+double held_steps_per_element(const model::ShapeProcessModel& model) {
+  if (!starts_at_exemplar(model)) return 0.0;
+  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
+  const nlohmann::json& held = fit["estimator"]["held_steps_per_element"];
+  return held.is_number() && held.get<double>() > 0 ? held.get<double>() : 0.0;
+}
+
 geometry::Domain stationary_domain(const geometry::Scene& exemplar) {
   return geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::torus);
 }
@@ -264,6 +271,14 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                          {"worst_r_hat", std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0},
                          {"significance", options.significance},
                          {"seconds", mle.seconds}};
+  if (at_exemplar && !chains.sampling.start.empty()) {
+    // The middle of the chains' observed stretch, per element they start from: the time at which
+    // the fit matched the exemplar's counts (held_steps_per_element in the header).
+    record["estimator"]["held_steps_per_element"] =
+        (static_cast<double>(chains.sampling.burn_in) +
+         0.5 * static_cast<double>(chains.sampling.steps)) /
+        static_cast<double>(chains.sampling.start.size());
+  }
   record["notes"] = result.notes;
   result.model.fit_json = record.dump();
   return result;

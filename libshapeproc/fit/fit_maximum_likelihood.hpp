@@ -42,6 +42,16 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 // did (its fit record's `estimator.chains_start`); false for other models.
 bool starts_at_exemplar(const model::ShapeProcessModel& model);
 
+// The steps per element at which such a model's fit matched its exemplar: its chains start at the
+// exemplar's n elements and observe t from the burn-in b to b + s steps, so their mean is that of
+// the state near the middle, (b + s/2) / n steps per element. A packed exemplar's chains do not
+// reach the model's stationary state in that time (it is what they are fitted not to need), so a
+// sample from the exemplar repeated stops at this many steps per element it starts from
+// (sample::SamplerOptions::held_steps_per_element), not at the stationarity rule's horizon:
+// bubbles-3x3's largest bubbles, 12% of the exemplar, fall to 8% at 1,000 steps per element
+// (docs/sample.md). 0 for other models and for fits recorded without it.
+double held_steps_per_element(const model::ShapeProcessModel& model);
+
 // The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.
 // Its elements near an edge see neighbours across the seam, as in a larger drawing; the
 // statistics t_W leave out the pairs that meet across it, which the exemplar cannot show.

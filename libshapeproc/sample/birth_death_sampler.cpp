@@ -27,6 +27,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
+  core::check_non_negative("sample", "the held steps per element", options_.held_steps_per_element);
   core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
               "trace and observation intervals must be >= 0");
 
@@ -61,6 +62,13 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
 
 ShapeProcessSampler::~ShapeProcessSampler() = default;
 
+long long held_steps(const SamplerOptions& options) {
+  if (options.iterations > 0 || options.start.empty() || !(options.held_steps_per_element > 0))
+    return 0;
+  return std::max<long long>(
+      1, std::llround(options.held_steps_per_element * static_cast<double>(options.start.size())));
+}
+
 double ShapeProcessSampler::shift_radius() const { return region_->shift_radius; }
 
 double ShapeProcessSampler::reach() const { return tables_->reach; }
@@ -77,10 +85,10 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
     return sample_by_cells(model_, *tables_, *region_, options_, random, control);
   BirthDeathChain chain(*tables_, *region_, random, options_.fixed, options_.start);
   SampleResult result;
-  const bool automatic = options_.iterations <= 0;
-  const long long total = automatic ? 0 : options_.iterations;
-  const long long progress_every =
-      automatic ? 10000 : std::max<long long>(1, options_.iterations / 100);
+  const long long held = held_steps(options_);
+  const bool automatic = options_.iterations <= 0 && held == 0;
+  const long long total = automatic ? 0 : held > 0 ? held : options_.iterations;
+  const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
   StationarityRule rule(options_.max_iterations, options_.start.empty());
   long long step = 1;
   for (;; ++step) {
@@ -98,12 +106,12 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
     if (options_.trace_every > 0 && step % options_.trace_every == 0) {
       result.trace.push_back({step, chain.size(), chain.log_density()});
     }
-    if (step % progress_every == 0 || step == options_.iterations) {
+    if (step % progress_every == 0 || step == total) {
       if (control.cancelled()) throw core::Cancelled();
       if (control.progress) control.progress(step, total);
     }
     if (!automatic) {
-      if (step >= options_.iterations) break;
+      if (step >= total) break;
       continue;
     }
     const StationarityRule::Verdict verdict = rule.after_step(step, chain.size());
@@ -133,7 +141,9 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
   record.set_domain(domain_);
-  record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
+  record.iterations = options_.iterations > 0    ? std::to_string(options_.iterations)
+                      : held_steps(options_) > 0 ? "held"
+                                                 : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius())}};
   record.steps = sampled.iterations;

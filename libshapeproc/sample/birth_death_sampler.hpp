@@ -57,6 +57,10 @@ struct SamplerOptions {
   // any other (a hybrid's start, compare/hybrid_synthesis.hpp). One outside the domain or that the
   // hard core forbids beside those before it is left out (SampleResult::start_left_out).
   std::vector<geometry::Element> start;
+  // With a start and automatic steps: stop after this many steps per start element kept, the
+  // time at which the model's fit matched its exemplar from the same kind of start
+  // (fit::held_steps_per_element); 0: the stationarity rule.
+  double held_steps_per_element = 0.0;
   // Parallel sampling of this one output by domain decomposition (domain_decomposition.hpp) on
   // `threads` threads (0: one per core), where the domain is large enough to cut into cells of
   // the model's reach; otherwise, and with fixed elements, a free region or observations, the
@@ -64,6 +68,10 @@ struct SamplerOptions {
   bool decompose = false;
   int threads = 0;
 };
+
+// The steps of a chain that stops at SamplerOptions::held_steps_per_element: that many per start
+// element, at least 1; 0 when it does not (steps given, no start, or none per element).
+long long held_steps(const SamplerOptions& options);
 
 struct SampleResult {
   geometry::Scene scene;  // the model's shapes, the sampled elements, the domain's box as window

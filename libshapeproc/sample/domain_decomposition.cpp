@@ -266,7 +266,9 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   } else {
     sweep(0, true);
   }
-  const bool automatic = options.iterations <= 0;
+  const long long held = held_steps(options);  // a packed exemplar's repeat: the fit's horizon
+  const bool automatic = options.iterations <= 0 && held == 0;
+  const long long total = automatic ? 0 : held > 0 ? held : options.iterations;
   int done = 0;
   for (int number = 1;; ++number) {
     sweep(number, false);
@@ -274,9 +276,9 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     if (options.trace_every > 0)
       result.trace.push_back(
           {steps, static_cast<int>(cells.size()), std::numeric_limits<double>::quiet_NaN()});
-    if (control.progress) control.progress(steps, automatic ? 0 : options.iterations);
+    if (control.progress) control.progress(steps, total);
     if (!automatic) {
-      if (steps >= options.iterations) break;
+      if (steps >= total) break;
       continue;
     }
     if (number >= kLeastSweeps && counts.size() >= 2 * kLeastCounts) {

@@ -26,8 +26,8 @@ inline bool is_stationary(const std::vector<int>& counts, std::size_t least = 10
 class StationarityRule {
  public:
   // With `run_on`, a chain found stationary at step T stops at 2T (at most max_steps): for chains
-  // that sample the model from empty. Chains held at a packed exemplar's repeat stop at T, the
-  // horizon over which their fit held it (docs/sample.md).
+  // that sample the model from empty. Chains from given elements stop at T (a packed exemplar's
+  // repeat does not use the rule: SamplerOptions::held_steps_per_element, docs/sample.md).
   explicit StationarityRule(long long max_steps, bool run_on = false)
       : max_steps_(max_steps), run_on_(run_on) {}
 

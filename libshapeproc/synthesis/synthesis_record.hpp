@@ -26,10 +26,12 @@ struct SynthesisRecord {
   // Files the run read (("exemplar", path), ("model", path)) and the method's options as text,
   // in a fixed order ("shift_probability" = "0.333..."; nested ones as "fit.quantiles").
   std::vector<std::pair<std::string, std::string>> inputs, options;
-  std::string iterations = "stationary";  // the step budget as asked for ("stationary" or a count)
-  long long steps = 0;                    // steps the chain made
-  bool stationary = true;                 // false when an automatic stopping rule gave up
-  double seconds = 0.0;  // wall time; kept in memory only, so the same seed writes the same bytes
+  // The step budget as asked for: a count, "stationary" (the automatic rule) or "held" (the
+  // fit's steps per element from its exemplar, sample::SamplerOptions::held_steps_per_element).
+  std::string iterations = "stationary";
+  long long steps = 0;     // steps the chain made
+  bool stationary = true;  // false when an automatic stopping rule gave up
+  double seconds = 0.0;    // wall time; kept in memory only, so the same seed writes the same bytes
 
   // Takes the domain's boundary and box sizes.
   void set_domain(const geometry::Domain& domain);

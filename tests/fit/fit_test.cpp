@@ -437,5 +437,29 @@ TEST(Fit, AnAutomaticWindowTriesItsTorusAgainFromTheWindowAsDrawnThenFallsBackTo
   EXPECT_EQ(record["notes"][0], fit.notes[0]);
 }
 
+// A packed exemplar's chains start at it, and the fit records the steps per element at which it
+// matched it: the middle of the observed stretch, (burn-in + steps / 2) / n, which its outputs
+// from the exemplar repeated run for. A loose exemplar's chains start empty: nothing recorded.
+TEST(Fit, APackedExemplarRecordsTheStepsPerElementAtWhichItsFitHeldIt) {
+  const Scene dashes = io::read_scene(testing::data_path("svg/dashes-rows.svg"), {});
+  FitOptions options;
+  options.quadrature = 8;
+  MleOptions mle;
+  mle.max_iterations = 1;
+  mle.sampling.burn_in = 1000;
+  mle.sampling.steps = 3000;
+  const FitResult packed =
+      refine_to_maximum_likelihood(dashes, options, fit_shape_process(dashes, options), mle);
+  ASSERT_TRUE(starts_at_exemplar(packed.model));
+  EXPECT_DOUBLE_EQ(held_steps_per_element(packed.model),
+                   2500.0 / static_cast<double>(dashes.elements.size()));
+
+  const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  const FitResult loose =
+      refine_to_maximum_likelihood(dots, options, fit_shape_process(dots, options), mle);
+  EXPECT_FALSE(starts_at_exemplar(loose.model));
+  EXPECT_EQ(held_steps_per_element(loose.model), 0.0);
+}
+
 }  // namespace
 }  // namespace shapeproc::fit

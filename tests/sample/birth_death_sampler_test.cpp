@@ -132,6 +132,45 @@ TEST(BirthDeath, FromAFullStartTheChainReachesItsTarget) {
   EXPECT_NEAR(mean, 50.0, 4.0 * std::sqrt(50.0 / chains));
 }
 
+// A start and held steps per element (a packed exemplar's repeat, fit::held_steps_per_element):
+// exactly that many steps per start element, recorded as "held", in the whole-domain chain and
+// in the decomposed one; given steps take precedence, and without a start the automatic rule
+// runs (at least its 20,000 steps).
+TEST(BirthDeath, AHeldStartRunsTheFitsStepsPerStartElement) {
+  const model::ShapeProcessModel m = testing::point_model(0.02, {3.0, 3.0}, {1.0});
+  const geometry::Domain domain =
+      geometry::Domain::from_sizes({200, 200}, geometry::Boundary::torus);
+  SamplerOptions options;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) options.start.push_back({0, 0, Vec3(5 + 10 * x, 5 + 10 * y, 0)});
+  options.held_steps_per_element = 12.25;
+  EXPECT_EQ(held_steps(options), 4900);
+  const ShapeProcessSampler sampler(m, domain, options);
+  core::Random random(2);
+  EXPECT_EQ(sampler.synthesize(random, {}).record.steps, 4900);
+  core::Random again(2);
+  EXPECT_EQ(sampler.synthesize(again, {}).record.iterations, "held");
+  SamplerOptions decomposed = options;
+  decomposed.decompose = true;
+  decomposed.threads = 1;
+  core::Random cells(2);
+  const SampleResult by_cells = sample_shape_process(m, domain, decomposed, cells);
+  EXPECT_GT(by_cells.cells, 1);
+  EXPECT_GE(by_cells.iterations, 4900);
+  EXPECT_LT(by_cells.iterations, 4900 + 4900);  // stops at the first sweep past the horizon
+
+  SamplerOptions given = options;
+  given.iterations = 300;
+  EXPECT_EQ(held_steps(given), 0);
+  EXPECT_EQ(sample_with_seed(m, domain, given, 2).iterations, 300);
+  SamplerOptions empty = options;
+  empty.start.clear();
+  EXPECT_EQ(held_steps(empty), 0);
+  EXPECT_GE(sample_with_seed(m, domain, empty, 2).iterations, 20000);
+  options.held_steps_per_element = -1.0;
+  EXPECT_THROW(ShapeProcessSampler(m, domain, options), core::ArgumentError);
+}
+
 TEST(BirthDeath, HardCoreIsNeverViolated) {
   const model::ShapeProcessModel m = io::parse_model(kSquares, "squares.json");
   const geometry::Domain domain = geometry::Domain::from_sizes({60, 60}, geometry::Boundary::torus);

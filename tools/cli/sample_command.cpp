@@ -10,6 +10,7 @@
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/interruption.hpp"
 #include "libshapeproc/core/parallel_for.hpp"
+#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -235,7 +236,10 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
       decompose == "on" || (decompose == "auto" && estimate.elements >= kDecomposeFrom);
   // The threads left to each chain of those that run at once.
   options.threads = std::max(1, core::loop_threads(threads, 1 << 20) / chains_at_once());
-  if (start_tile) options.start = geometry::tile_over(*start_tile, where.box());
+  if (start_tile) {
+    options.start = geometry::tile_over(*start_tile, where.box());
+    options.held_steps_per_element = fit::held_steps_per_element(model);
+  }
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
     out << "warning: the output torus is smaller than twice the model's reach ("

@@ -132,8 +132,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
           ->add_option("--start", args->start,
                        "shape-process: where each chain starts: exemplar (the fitted exemplar "
                        "repeated over the output, so that a packed drawing is held rather than "
-                       "sought), empty, or auto (where the fit's chains started: at a packed "
-                       "exemplar, else empty)")
+                       "sought; it runs as many steps per element as the fit's chains did "
+                       "from the exemplar, or until stationary), empty, or auto (where the fit's "
+                       "chains started: at a packed exemplar, else empty)")
           ->check(CLI::IsMember({"auto", "exemplar", "empty"}))
           ->capture_default_str();
   args->fit_only = options_since(*command, before);
