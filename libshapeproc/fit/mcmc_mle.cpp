@@ -71,8 +71,9 @@ constexpr double kMaxRHat = 1.1;
 // A gap within the tolerance counts only when every free statistic's sample is worth this many
 // independent observations (effective_sample_size.hpp): chains held at a packed exemplar that
 // mix slowly (dashes-rows: 3 from 4 chains of 50,000 steps) give errors as large as the gaps
-// themselves, and a test passed with them says nothing. Such a sample is drawn again at the same
-// θ with proportionally more chains, at most kMostChainFactor times the setting's.
+// themselves, and a test passed with them says nothing. Such a sample gets more chains at the same
+// θ (more_chains), pooled with its own, up to kMostChainFactor times the setting's; the
+// simulations after it keep that many.
 // A statistic whose mean is known to within kNegligibleGap (mcmc_mle.hpp) is trusted whatever its
 // effective size: a packed lattice's count that the chains leave once in a long while has almost
 // no variance and almost no effective observations.
@@ -80,6 +81,20 @@ constexpr double kMinEffectiveSize = 20;
 constexpr int kMostChainFactor = 16;
 
 using Clock = std::chrono::steady_clock;
+
+// The chains a sample of `have` chains worth `effective` independent observations grows to, to be
+// worth kMinEffectiveSize at the observations it is worth per chain, but at most doubled at a
+// time (at most `most`), in pairs for two cores: a few chains held at different states
+// understate what each is worth (dashes-rows: 4 chains worth 2.6, 32 worth 32), and a jump to
+// the estimate overshot by up to ten times (two-kinds at seed 3: 4 chains worth 4.5 grew to 20
+// worth 49–209).
+int more_chains(int have, double effective, int most) {
+  const double per_chain = std::max(effective, 0.5) / have;
+  const int wanted = static_cast<int>(std::ceil((kMinEffectiveSize - effective) / per_chain));
+  int add = std::clamp(wanted, 2, have);
+  add += add % 2;
+  return std::min(most, have + add);
+}
 
 // What one Newton step needs at a point: the penalised gap and information over the free θ.
 struct Gap {
@@ -387,14 +402,20 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         least = std::min(least, m.effective_size[k]);
     return least;
   };
-  int chain_factor = 1;  // more chains where the sample is worth too few independent observations
+  // More chains where the sample is worth too few independent observations: the chains of each
+  // simulation from then on, and the sample at the current θ that chains are added to.
+  int chains = options.sampling.chains;
+  const int most_chains = kMostChainFactor * options.sampling.chains;
+  std::optional<StatisticsMoments> added_to;
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
     ChainsSetting setting = options.sampling;
     setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
-    setting.chains *= chain_factor;
+    setting.chains = added_to ? chains - added_to->chains() : chains;
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
-    const StatisticsMoments m = statistics_moments(model, window, setting);
+    const StatisticsMoments m =
+        statistics_moments(model, window, setting, added_to ? &*added_to : nullptr);
+    added_to.reset();
     r.expected = m.mean;
     r.expected_error = m.standard_error;
     // Statistics the chains never vary, simulation after simulation, while their parameter is
@@ -423,7 +444,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     }
     const Gap g = newton->gap(m, r.theta);
     const double effective = least_effective(m);
-    if (options.progress) options.progress({r.iterations, g.worst_z, effective, setting.chains});
+    if (options.progress) options.progress({r.iterations, g.worst_z, effective, m.chains()});
     const Iterate here{r.theta,   m.mean,         m.standard_error,
                        g.worst_z, worst_r_hat(m), ranking_z(m, g)};
     const bool improved = here.ranking_z < best.ranking_z;
@@ -449,11 +470,11 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         rough = false;  // within tolerance at a quarter of the precision: check at full length
         continue;
       }
-      if (effective < kMinEffectiveSize && chain_factor < kMostChainFactor) {
-        const double more = std::ceil(kMinEffectiveSize / std::max(1.0, effective));
-        chain_factor = static_cast<int>(std::min<double>(kMostChainFactor, chain_factor * more));
+      if (effective < kMinEffectiveSize && chains < most_chains) {
+        chains = more_chains(m.chains(), effective, most_chains);
+        added_to = m;       // the same θ again, with a sample whose test means something
         estimates.clear();  // those of the smaller samples would hold the average back
-        continue;           // the same θ again, with a sample whose test means something
+        continue;
       }
     }
     if (g.worst_z <= r.tolerance && (here.worst_r_hat <= kMaxRHat || held_start) &&

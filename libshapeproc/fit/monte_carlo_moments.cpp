@@ -62,7 +62,8 @@ void weighted_moments(const Eigen::Map<const RowMatrix>& t, const Eigen::Map<con
 }  // namespace
 
 StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
-                                     const geometry::Domain& domain, const ChainsSetting& setting) {
+                                     const geometry::Domain& domain, const ChainsSetting& setting,
+                                     const StatisticsMoments* pooled_with) {
   core::check(
       setting.chains >= 1 && setting.steps > 0 && setting.observe_every > 0 && setting.burn_in >= 0,
       "mle", "chains, steps and the observation interval must be positive");
@@ -81,11 +82,21 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   chains.seed = setting.seed;
   const std::vector<synthesis::SynthesisResult> results = synthesis::run_chains(sampler, chains);
 
-  StatisticsMoments m;
   const std::size_t p = static_cast<std::size_t>(model::Interaction(model).statistic_count());
+  StatisticsMoments m;
+  if (pooled_with) {
+    core::check(pooled_with->parameters == static_cast<int>(p) &&
+                    pooled_with->density_samples.empty() == !windowed &&
+                    !pooled_with->chain_rows.empty(),
+                "mle", "a pooled sample must be an unweighted sample of the same statistics");
+    m.samples = pooled_with->samples;
+    m.density_samples = pooled_with->density_samples;
+    m.chain_rows = pooled_with->chain_rows;
+    m.observations = pooled_with->observations;
+  }
   m.parameters = static_cast<int>(p);
   const std::size_t skip = static_cast<std::size_t>(setting.burn_in / setting.observe_every);
-  std::vector<std::pair<int, int>> chain_rows;
+  std::vector<std::pair<int, int>>& chain_rows = m.chain_rows;
   for (const synthesis::SynthesisResult& result : results) {
     const int first_row = m.observations;
     for (std::size_t i = skip; i < result.observations.size(); ++i) {

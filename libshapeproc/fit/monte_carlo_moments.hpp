@@ -61,10 +61,18 @@ struct StatisticsMoments {
   // values; 1 for one chain or a constant statistic. Empty after reweighting.
   std::vector<double> r_hat;
   int observations = 0;
+  // Each chain's observations, the row range [first, last) of `samples`; empty after reweighting.
+  std::vector<std::pair<int, int>> chain_rows;
+  int chains() const { return static_cast<int>(chain_rows.size()); }
 };
 
+// The moments of `setting.chains` new chains' observations, pooled with those of `pooled_with`
+// when given (a sample of the same model, domain and setting but the seed and the chains): more
+// chains for a sample worth too few independent observations, without drawing its first chains
+// again.
 StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
-                                     const geometry::Domain& domain, const ChainsSetting& setting);
+                                     const geometry::Domain& domain, const ChainsSetting& setting,
+                                     const StatisticsMoments* pooled_with = nullptr);
 
 // Gelman and Rubin's R-hat of each statistic of `sample`, whose chains are the row ranges
 // [first, last) of `chains` (statistics_moments fills StatisticsMoments::r_hat with it).

@@ -164,6 +164,42 @@ TEST(MaximumLikelihood, ReweightingMovesAPoissonMeanByExpDelta) {
   EXPECT_LT(farther, share);
 }
 
+// More chains pooled with a sample: the rows of the first sample, then those of the new chains,
+// each chain's range after the last; the moments are those of all the rows together (exactly the
+// mean and the unbiased variance of the concatenation), and the pooled error is smaller. A
+// reweighted sample has lost its chains and cannot be pooled.
+TEST(MaximumLikelihood, MoreChainsArePooledWithASample) {
+  const geometry::Domain window = geometry::Domain::from_sizes({10, 10}, geometry::Boundary::torus);
+  ChainsSetting setting = two_chains(20000, 50);
+  const StatisticsMoments first = statistics_moments(testing::point_model(0.5), window, setting);
+  setting.seed = 77;
+  const StatisticsMoments added = statistics_moments(testing::point_model(0.5), window, setting);
+  const StatisticsMoments pooled =
+      statistics_moments(testing::point_model(0.5), window, setting, &first);
+  ASSERT_EQ(pooled.chains(), 4);
+  ASSERT_EQ(pooled.observations, first.observations + added.observations);
+  EXPECT_EQ(pooled.chain_rows[1], first.chain_rows[1]);
+  EXPECT_EQ(pooled.chain_rows[2].first, first.observations);
+  EXPECT_EQ(pooled.chain_rows[3].second, pooled.observations);
+  std::vector<double> rows = first.samples;
+  rows.insert(rows.end(), added.samples.begin(), added.samples.end());
+  EXPECT_EQ(pooled.samples, rows);
+  double sum = 0.0;
+  double squares = 0.0;
+  for (double t : rows) {
+    sum += t;
+    squares += t * t;
+  }
+  const double n = static_cast<double>(rows.size());
+  EXPECT_NEAR(pooled.mean[0], sum / n, 1e-9);
+  EXPECT_NEAR(pooled.covariance[0], (squares - sum * sum / n) / (n - 1), 1e-6);
+  EXPECT_LT(pooled.standard_error[0], first.standard_error[0]);
+  double share = 0.0;
+  const StatisticsMoments moved = reweighted(first, {0.1}, share);
+  EXPECT_THROW(statistics_moments(testing::point_model(0.5), window, setting, &moved),
+               core::ArgumentError);
+}
+
 // The stationary window: a 100 x 50 window inside a 150 x 100 torus. Without interaction the
 // estimate is still the closed form, n / |W| of the window, not of the torus.
 TEST(StationaryWindow, PoissonIsClosedFormOnTheWindow) {
