@@ -344,7 +344,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   std::vector<int> unvaried(p, 0);  // consecutive simulations in which t_k never varied
   model::ShapeProcessModel model = start;
   bool rough = true;
-  int stalled = 0;  // simulations since the gap last shrank
+  int stalled = 0;   // simulations since the gap last shrank
+  int diverged = 0;  // steps undone by the step control
   // Final phase: each simulation gives one estimate of the MLE (the maximum of its reweighted
   // likelihood), whose Monte Carlo error is as large as the gap's; the next simulation runs at
   // the mean of the last kAveraged estimates, so that the error of θ shrinks below the test's.
@@ -454,6 +455,10 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
     // parameters where they hold almost nothing and the gaps explode).
     if (here.ranking_z > kDiverged * best.ranking_z && g.worst_z > r.tolerance) {
+      if (++diverged == options.abandon_after_diverged) {
+        r.abandoned = true;
+        break;
+      }
       r.theta = best.theta;
       newton->shorten_steps();
       continue;

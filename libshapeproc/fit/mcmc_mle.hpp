@@ -71,6 +71,11 @@ struct MleOptions {
   // strong attraction; 0 = no penalty. Inhibition (log γ < 0) is not penalised.
   double attraction_prior_sd = 1.5;
   double max_seconds = 600.0;  // the fit stops (not converged) after the iteration that passes it
+  // The fit gives up (not converged, MleResult::abandoned) at this many diverged steps (steps
+  // undone by the step control: the gap ten times the best iterate's), 0 = never. A start from
+  // which the steps keep throwing the chains between a sparse and a condensed state (a model
+  // near a phase transition) is then left for a better one (fit_maximum_likelihood.cpp).
+  int abandon_after_diverged = 0;
   // Which model of an open window without border correction is fitted (WindowModel).
   WindowModel window = WindowModel::automatic;
   // Called after each iteration (MleProgress). May be empty.
@@ -96,6 +101,7 @@ struct MleResult {
   double seconds = 0.0;
   int iterations = 0;
   bool converged = false;
+  bool abandoned = false;  // stopped at MleOptions::abandon_after_diverged
 };
 
 // The MLE of `model`'s parameters (its thresholds and shapes fixed; its β and γ the start) for

@@ -437,6 +437,33 @@ TEST(Fit, AnAutomaticWindowTriesItsTorusAgainFromTheWindowAsDrawnThenFallsBackTo
   EXPECT_EQ(record["notes"][0], fit.notes[0]);
 }
 
+// rings' torus fit from the pseudo-likelihood's estimate throws its chains between a sparse and a
+// condensed state (a model near a phase transition): at its second diverged step it is abandoned
+// for the start of the window as drawn, from which it converges, and the note says so.
+TEST(Fit, AnAutomaticWindowAbandonsATorusFitWhoseStepsDiverge) {
+  io::ReaderOptions split;
+  split.split_subpaths = true;
+  const Scene rings = io::read_scene(testing::data_path("svg/rings.svg"), split);
+  const FitOptions options;
+  MleOptions mle;
+  mle.window = WindowModel::automatic;
+  mle.sampling.seed = 2;
+  const FitResult fit =
+      refine_to_maximum_likelihood(rings, options, fit_shape_process(rings, options), mle);
+  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
+  EXPECT_EQ(record["estimator"]["window"], "stationary");
+  EXPECT_TRUE(record["estimator"]["converged"].get<bool>());
+  ASSERT_FALSE(fit.notes.empty());
+  EXPECT_NE(fit.notes[0].find("its own torus) was abandoned, its steps diverging, from the "
+                              "pseudo-likelihood's estimate ("),
+            std::string::npos)
+      << fit.notes[0];
+  EXPECT_NE(fit.notes[0].find("started again from the estimate of the window as drawn, it "
+                              "converged"),
+            std::string::npos)
+      << fit.notes[0];
+}
+
 // A packed exemplar's chains start at it, and the fit records the steps per element at which it
 // matched it: the middle of the observed stretch, (burn-in + steps / 2) / n, which its outputs
 // from the exemplar repeated run for. A loose exemplar's chains start empty: nothing recorded.
