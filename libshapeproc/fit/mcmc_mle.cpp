@@ -362,6 +362,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   };
   struct Iterate {
     std::vector<double> theta, expected, expected_error;
+    int chains = 0;
     double worst_z = std::numeric_limits<double>::infinity();
     double worst_r_hat = std::numeric_limits<double>::infinity();
     double ranking_z = std::numeric_limits<double>::infinity();
@@ -445,11 +446,14 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     }
     const Gap g = newton->gap(m, r.theta);
     const double effective = least_effective(m);
-    if (options.progress) options.progress({r.iterations, g.worst_z, effective, m.chains()});
-    const Iterate here{r.theta,   m.mean,         m.standard_error,
+    if (options.progress)
+      options.progress({r.iterations, g.worst_z, effective, m.chains(),
+                        std::chrono::duration<double>(Clock::now() - clock).count()});
+    const Iterate here{r.theta,   m.mean,         m.standard_error, m.chains(),
                        g.worst_z, worst_r_hat(m), ranking_z(m, g)};
     const bool improved = here.ranking_z < best.ranking_z;
     last_r_hat = here.worst_r_hat;
+    r.chains = here.chains;
     if (improved) best = here;
     // Step control: a step that made the gap much worse than the best iterate's is undone, and
     // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
@@ -482,8 +486,14 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
         continue;
       }
     }
-    if (g.worst_z <= r.tolerance && (here.worst_r_hat <= kMaxRHat || held_start) &&
-        effective >= kMinEffectiveSize) {
+    // R-hat is asked of the setting's chains only. R-hat² is about 1 + 1 / (what one chain is
+    // worth), so R-hat ≤ 1.1 asks every chain to be worth about 5 observations, which more chains
+    // cannot give; a sample grown to more chains has its disagreement in its errors (the
+    // multi-chain effective size, from 7 or more degrees of freedom) and its test passes on 20
+    // effective observations.
+    const bool chains_agree =
+        here.worst_r_hat <= kMaxRHat || held_start || m.chains() > options.sampling.chains;
+    if (g.worst_z <= r.tolerance && chains_agree && effective >= kMinEffectiveSize) {
       r.converged = true;
       // The estimate: the maximum of the likelihood as the final sample approximates it
       // (Geyer & Thompson), averaged with the final phase's earlier estimates, where the
@@ -522,6 +532,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     r.theta = best.theta;
     r.expected = best.expected;
     r.expected_error = best.expected_error;
+    r.chains = best.chains;
   }
   r.worst_r_hat = r.converged ? last_r_hat : best.worst_r_hat;
   for (std::size_t k : free) r.penalised[k] = newton->pairs_moved(k, r.theta) >= kNotablyMoved;

@@ -41,7 +41,8 @@ struct MleProgress {
   double worst_z = 0.0;  // the largest |z| of the gaps
   // The smallest effective sample size of a free statistic (effective_sample_size.hpp).
   double effective_size = 0.0;
-  int chains = 0;  // the simulation's chains
+  int chains = 0;        // the simulation's chains
+  double seconds = 0.0;  // since this fit began
 };
 
 // The model an open window (edge treatment none) is fitted as (docs/fit.md, "Stationary window").
@@ -98,6 +99,9 @@ struct MleResult {
   // The largest R-hat over the free statistics at the returned estimate (monte_carlo_moments.hpp):
   // convergence also needs the chains to agree (at most kMaxRHat).
   double worst_r_hat = 1.0;
+  // The chains of the returned estimate's sample: the setting's, or more where a sample was worth
+  // too few independent observations.
+  int chains = 0;
   double seconds = 0.0;
   int iterations = 0;
   bool converged = false;

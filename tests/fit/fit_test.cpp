@@ -464,6 +464,27 @@ TEST(Fit, AnAutomaticWindowAbandonsATorusFitWhoseStepsDiverge) {
       << fit.notes[0];
 }
 
+// R-hat is asked of the setting's chains only: two-kinds' red discs mix slowly on the torus, each
+// chain worth about 2 observations, and its fit grows to more chains worth 20 together; it
+// converges there although R-hat, which no number of chains can bring under 1.1, stays above.
+TEST(Fit, ASampleGrownToMoreChainsConvergesOnItsEffectiveSizeWhateverItsRHat) {
+  io::ReaderOptions by_fill;
+  by_fill.category_by = io::CategoryRule::parse("fill");
+  const Scene kinds = io::read_scene(testing::data_path("svg/two-kinds.svg"), by_fill);
+  const FitOptions options;
+  MleOptions mle;
+  mle.window = WindowModel::automatic;
+  const FitResult fit =
+      refine_to_maximum_likelihood(kinds, options, fit_shape_process(kinds, options), mle);
+  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
+  const nlohmann::json& estimator = record["estimator"];
+  EXPECT_TRUE(estimator["converged"].get<bool>());
+  EXPECT_EQ(estimator["window"], "stationary");
+  EXPECT_EQ(estimator["chains"], 4);
+  EXPECT_GT(estimator["final_chains"].get<int>(), 4);
+  EXPECT_GT(estimator["worst_r_hat"].get<double>(), 1.1);
+}
+
 // A packed exemplar's chains start at it, and the fit records the steps per element at which it
 // matched it: the middle of the observed stretch, (burn-in + steps / 2) / n, which its outputs
 // from the exemplar repeated run for. A loose exemplar's chains start empty: nothing recorded.

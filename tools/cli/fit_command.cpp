@@ -111,7 +111,7 @@ fit::FitResult maximum_likelihood_fit(const geometry::Scene& exemplar, int repea
     verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
                     core::format_general(at.worst_z, 3) + ", effective sample " +
                     core::format_general(at.effective_size, 3) + " (" + std::to_string(at.chains) +
-                    " chains)");
+                    " chains), " + core::format_general(at.seconds, 3) + " s");
     iterations.update(at.iteration, mle.max_iterations);
   };
   try {
