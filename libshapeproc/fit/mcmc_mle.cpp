@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
@@ -94,6 +95,18 @@ int more_chains(int have, double effective, int most) {
   int add = std::clamp(wanted, 2, have);
   add += add % 2;
   return std::min(most, have + add);
+}
+
+// Why a start is condensed: some category's mean count over `ratio` times the exemplar's, as
+// "its start condensed (68.2 elements against 19)"; empty when none is.
+std::string condensed_start(const StatisticsMoments& m, const std::vector<double>& observed,
+                            std::size_t categories, double ratio) {
+  for (std::size_t c = 0; c < categories; ++c) {
+    if (m.mean[c] > ratio * observed[c])
+      return "its start condensed (" + core::format_general(m.mean[c], 3) + " elements against " +
+             core::format_general(observed[c], 3) + ")";
+  }
+  return {};
 }
 
 // What one Newton step needs at a point: the penalised gap and information over the free θ.
@@ -455,12 +468,16 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     last_r_hat = here.worst_r_hat;
     r.chains = here.chains;
     if (improved) best = here;
+    if (r.iterations == 1 && options.abandon_condensed_start > 0) {
+      r.abandoned = condensed_start(m, observed, categories, options.abandon_condensed_start);
+      if (!r.abandoned.empty()) break;
+    }
     // Step control: a step that made the gap much worse than the best iterate's is undone, and
     // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
     // parameters where they hold almost nothing and the gaps explode).
     if (here.ranking_z > kDiverged * best.ranking_z && g.worst_z > r.tolerance) {
       if (++diverged == options.abandon_after_diverged) {
-        r.abandoned = true;
+        r.abandoned = "its steps diverging";
         break;
       }
       r.theta = best.theta;

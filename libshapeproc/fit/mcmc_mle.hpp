@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "libshapeproc/fit/monte_carlo_moments.hpp"
@@ -77,6 +78,10 @@ struct MleOptions {
   // which the steps keep throwing the chains between a sparse and a condensed state (a model
   // near a phase transition) is then left for a better one (fit_maximum_likelihood.cpp).
   int abandon_after_diverged = 0;
+  // The fit gives up at its first simulation when that holds more than this many times the
+  // exemplar's elements of some category (a start in the condensed state of a model near a phase
+  // transition), 0 = never.
+  double abandon_condensed_start = 0.0;
   // Which model of an open window without border correction is fitted (WindowModel).
   WindowModel window = WindowModel::automatic;
   // Called after each iteration (MleProgress). May be empty.
@@ -105,7 +110,9 @@ struct MleResult {
   double seconds = 0.0;
   int iterations = 0;
   bool converged = false;
-  bool abandoned = false;  // stopped at MleOptions::abandon_after_diverged
+  // Why the fit gave up (MleOptions::abandon_after_diverged, abandon_condensed_start); empty
+  // when it did not.
+  std::string abandoned;
 };
 
 // The MLE of `model`'s parameters (its thresholds and shapes fixed; its β and γ the start) for
