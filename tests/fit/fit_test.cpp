@@ -439,18 +439,27 @@ TEST(Fit, AnAutomaticWindowTriesItsTorusAgainFromTheWindowAsDrawnThenFallsBackTo
   EXPECT_EQ(record["notes"][0], fit.notes[0]);
 }
 
+// rings.svg with each subpath an element, as its fits read it.
+Scene split_rings() {
+  io::ReaderOptions split;
+  split.split_subpaths = true;
+  return io::read_scene(testing::data_path("svg/rings.svg"), split);
+}
+
+// The default fit of `exemplar`: pseudo-likelihood, then maximum likelihood on the automatic
+// window.
+FitResult automatic_fit(const Scene& exemplar) {
+  const FitOptions options;
+  MleOptions mle;
+  mle.window = WindowModel::automatic;
+  return refine_to_maximum_likelihood(exemplar, options, fit_shape_process(exemplar, options), mle);
+}
+
 // rings' pseudo-likelihood estimate puts its torus in the condensed state (68 elements against
 // 19): the torus fit from there is abandoned at its first simulation for the start of the window
 // as drawn, from which it converges, and the note says so.
 TEST(Fit, AnAutomaticWindowAbandonsATorusFitFromACondensedStart) {
-  io::ReaderOptions split;
-  split.split_subpaths = true;
-  const Scene rings = io::read_scene(testing::data_path("svg/rings.svg"), split);
-  const FitOptions options;
-  MleOptions mle;
-  mle.window = WindowModel::automatic;
-  const FitResult fit =
-      refine_to_maximum_likelihood(rings, options, fit_shape_process(rings, options), mle);
+  const FitResult fit = automatic_fit(split_rings());
   const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
   EXPECT_EQ(record["estimator"]["window"], "stationary");
   EXPECT_TRUE(record["estimator"]["converged"].get<bool>());
@@ -471,9 +480,7 @@ TEST(Fit, AnAutomaticWindowAbandonsATorusFitFromACondensedStart) {
 // between a sparse and a condensed state (|z| 7 → 79 → 35 → 1,310 at seed 2); at its second
 // diverged step it gives up, not converged, long before its 30 iterations.
 TEST(MaximumLikelihood, AFitGivesUpAtItsSecondDivergedStep) {
-  io::ReaderOptions split;
-  split.split_subpaths = true;
-  const Scene rings = io::read_scene(testing::data_path("svg/rings.svg"), split);
+  const Scene rings = split_rings();
   model::ShapeProcessModel start = fit_shape_process(rings, FitOptions{}).model;
   for (model::PairInteraction& pair : start.interactions)
     for (model::AxisParameters& axis : pair.axes)
@@ -496,12 +503,8 @@ TEST(MaximumLikelihood, AFitGivesUpAtItsSecondDivergedStep) {
 TEST(Fit, ASampleGrownToMoreChainsConvergesOnItsEffectiveSizeWhateverItsRHat) {
   io::ReaderOptions by_fill;
   by_fill.category_by = io::CategoryRule::parse("fill");
-  const Scene kinds = io::read_scene(testing::data_path("svg/two-kinds.svg"), by_fill);
-  const FitOptions options;
-  MleOptions mle;
-  mle.window = WindowModel::automatic;
   const FitResult fit =
-      refine_to_maximum_likelihood(kinds, options, fit_shape_process(kinds, options), mle);
+      automatic_fit(io::read_scene(testing::data_path("svg/two-kinds.svg"), by_fill));
   const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
   const nlohmann::json& estimator = record["estimator"];
   EXPECT_TRUE(estimator["converged"].get<bool>());
