@@ -102,7 +102,8 @@ struct MleResult {
   // below the exemplar's count.
   std::vector<bool> penalised;
   // The largest R-hat over the free statistics at the returned estimate (monte_carlo_moments.hpp):
-  // convergence also needs the chains to agree (at most kMaxRHat).
+  // convergence also needs the setting's chains to agree (at most kMaxRHat), not those of a
+  // sample grown to more (its disagreement is in its effective size).
   double worst_r_hat = 1.0;
   // The chains of the returned estimate's sample: the setting's, or more where a sample was worth
   // too few independent observations.
