@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -428,7 +429,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
     setting.chains = added_to ? chains - added_to->chains() : chains;
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
-    const StatisticsMoments m =
+    StatisticsMoments m =
         statistics_moments(model, window, setting, added_to ? &*added_to : nullptr);
     added_to.reset();
     r.expected = m.mean;
@@ -498,8 +499,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       }
       if (effective < kMinEffectiveSize && chains < most_chains) {
         chains = more_chains(m.chains(), effective, most_chains);
-        added_to = m;       // the same θ again, with a sample whose test means something
-        estimates.clear();  // those of the smaller samples would hold the average back
+        added_to = std::move(m);  // the same θ again, with a sample whose test means something
+        estimates.clear();        // those of the smaller samples would hold the average back
         continue;
       }
     }
