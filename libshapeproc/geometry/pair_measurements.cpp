@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/overlap_depth.hpp"
+#include "libshapeproc/geometry/path.hpp"
 #include "libshapeproc/geometry/round_shape.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
@@ -83,6 +85,22 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
       if (round >= 0)
         for (const Vec2& v : p.mass.start) round = std::max(round, v.norm());
       round_.push_back(round);
+      double out = 0.0, in = -1.0;
+      for (const Vec2& v : p.segment_start) out = std::max(out, v.norm());
+      for (const Vec2& v : p.segment_end) out = std::max(out, v.norm());
+      for (const Proxy2::Polyline& polyline : p.polylines) {
+        if (!polyline.closed || winding_number(polyline.points, Vec2::Zero()) == 0) continue;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < polyline.points.size(); ++i) {
+          nearest = std::min(
+              nearest, point_segment_distance(Vec2::Zero(), polyline.points[i],
+                                              polyline.points[(i + 1) % polyline.points.size()]));
+        }
+        in = std::max(in, nearest);
+      }
+      if (std::holds_alternative<PointShape>(shape.geometry)) in = 0.0;
+      outline_out_.push_back(out);
+      outline_in_.push_back(in);
       source[s] = p.source_segments;
       simplified[s] = std::holds_alternative<PointShape>(shape.geometry) ? 0 : p.segment_count();
       mass[s] = p.mass.start.size();
@@ -126,6 +144,26 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
   }
 }
 
+double PairMeasurer::outline_bracket(int a, int b, const Vec2& offset, double cutoff,
+                                     const std::vector<double>& breakpoints) const {
+  const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  constexpr double kUndecided = std::numeric_limits<double>::quiet_NaN();
+  if (outline_in_[i] < 0 || outline_in_[j] < 0) return kUndecided;
+  const double centres = offset.norm();
+  // Apart by more than rounding (contact in shape_distance): the outlines cannot meet.
+  const double lo = centres - outline_out_[i] - outline_out_[j];
+  if (!(lo > 1e-9 * (radii_[i] + radii_[j]))) return kUndecided;
+  if (lo >= cutoff) return cutoff;
+  // The ray from each reference position towards the other leaves its enclosing polyline at
+  // outline_in_ or farther: two outline points at most this far apart.
+  const double hi = centres - outline_in_[i] - outline_in_[j];
+  if (hi >= cutoff) return kUndecided;
+  const auto interval = [&](double d) {
+    return std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin();
+  };
+  return interval(lo) == interval(hi) ? lo : kUndecided;
+}
+
 double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff,
                                     const std::vector<double>* breakpoints) const {
   if (dimension_ == 2) {
@@ -134,6 +172,10 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
     const Vec2 t = offset.head<2>();
     const Box2 moved = pb.box.translated(t);
     if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
+    if (breakpoints != nullptr && !breakpoints->empty()) {
+      const double bracketed = outline_bracket(a, b, t, cutoff, *breakpoints);
+      if (!std::isnan(bracketed)) return bracketed;
+    }
     auto segments = [&](int i, int j, double bound) {
       const Vec2 &a0 = pa.segment_start[i], &a1 = pa.segment_end[i];
       const Vec2 b0 = pb.segment_start[j] + t, b1 = pb.segment_end[j] + t;

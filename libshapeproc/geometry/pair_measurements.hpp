@@ -90,6 +90,16 @@ class PairMeasurer {
   // Cheap bounds lo <= d(a, b, offset) <= hi for the shape distance (no periodic images): lo from
   // the proxies' boxes, hi between the two proxies' extreme vertices along the offset.
   std::pair<double, double> distance_bounds(int a, int b, const Vec3& offset) const;
+  // The squared gap between the proxies' boxes (b's moved by `offset`), 0 where they meet: the
+  // cheapest lower bound of the shape distance.
+  double box_gap_squared(int a, int b, const Vec3& offset) const {
+    if (dimension_ == 2) {
+      return proxies2_[static_cast<std::size_t>(a)].box.squaredExteriorDistance(
+          proxies2_[static_cast<std::size_t>(b)].box.translated(offset.head<2>()));
+    }
+    return proxies3_[static_cast<std::size_t>(a)].box.squaredExteriorDistance(
+        proxies3_[static_cast<std::size_t>(b)].box.translated(offset));
+  }
 
   // The axis bin of direction(a, b, offset) when the shapes' boxes alone decide it, else -1.
   // Both direction kinds lie in the cone of vectors y − x from a point x of a's proxy box to a
@@ -124,6 +134,10 @@ class PairMeasurer {
  private:
   double shape_distance(int a, int b, const Vec3& offset, double cutoff,
                         const std::vector<double>* breakpoints) const;
+  // A value of the interval between `breakpoints` (or the cut-off) that holds the 2D shape
+  // distance, when the shapes' circles (outline_out_, outline_in_) alone decide it; else NaN.
+  double outline_bracket(int a, int b, const Vec2& offset, double cutoff,
+                         const std::vector<double>& breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
   // The mutual-potential table of shapes a ≤ b (2D regions), built on first use; nullptr when
@@ -143,6 +157,11 @@ class PairMeasurer {
   std::vector<Proxy3> proxies3_;
   std::vector<double> radii_;
   std::vector<double> round_;  // 2D: round_radius of each shape, −1 if not round (round_shape.hpp)
+  // 2D, per shape: every point of the proxy's outline lies within outline_out_ of the reference
+  // position, and a closed polyline of it encloses the reference position at outline_in_ or
+  // farther (−1 when none does). Two shapes whose outer circles are apart then lie between
+  // |offset| − out_a − out_b and |offset| − in_a − in_b of each other (outline_bracket).
+  std::vector<double> outline_out_, outline_in_;
   ProxyStatistics statistics_;
   std::shared_ptr<ExpansionCache> expansions_;  // shared by copies; empty in 3D
 };

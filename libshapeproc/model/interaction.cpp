@@ -30,6 +30,7 @@ Interaction::Interaction(const ShapeProcessModel& model)
       }
       parameters_ += static_cast<int>(a.gammas.size());
       pair.min_hard_core = std::min(pair.min_hard_core, a.thresholds.front());
+      pair.max_hard_core = std::max(pair.max_hard_core, a.thresholds.front());
       pair.breakpoints.insert(pair.breakpoints.end(), a.thresholds.begin(), a.thresholds.end());
       pair.max_range = std::max(pair.max_range, a.thresholds.back());
       pair.axes.push_back(std::move(axis));

@@ -38,6 +38,8 @@ class Interaction {
   // max_range it does not interact. Between, the axis decides.
   double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
   double max_range(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_range; }
+  // At or beyond this distance no axis makes the pair a hard-core violation.
+  double max_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].max_hard_core; }
   // Every threshold of every axis of a pair, ascending and distinct: a distance's band in every
   // axis depends only on which interval between them holds it.
   const std::vector<double>& breakpoints(int ca, int cb) const {
@@ -72,7 +74,7 @@ class Interaction {
   };
   struct Pair {
     std::vector<Axis> axes;
-    double min_hard_core = 0.0, max_range = 0.0;
+    double min_hard_core = 0.0, max_hard_core = 0.0, max_range = 0.0;
     std::vector<double> breakpoints;
   };
   int pair_of(int ca, int cb) const {

@@ -43,13 +43,21 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
     const double squared = t.squaredNorm();
     const double far = interaction_.max_range(xi.category, other.category) +
                        measurer_.radius(xi.shape) + measurer_.radius(other.shape);
-    if (shape_distances_ && squared >= far * far) return;
-    candidates_.emplace_back(squared, slot);
+    if (!shape_distances_) {
+      candidates_.push_back({0.0, squared, slot});
+      return;
+    }
+    if (squared >= far * far) return;
+    const double reach = interaction_.max_range(xi.category, other.category);
+    const double gap = measurer_.box_gap_squared(xi.shape, other.shape, t);
+    if (gap >= reach * reach) return;
+    candidates_.push_back({gap, squared, slot});
   });
   std::sort(candidates_.begin(), candidates_.end());
   bool forbidden = false;
-  for (const auto& [squared, slot] : candidates_) {
-    const model::PairEffect effect = model::pair_distance_effect(
+  for (const Candidate& candidate : candidates_) {
+    const int slot = candidate.slot;
+    model::PairEffect effect = model::pair_distance_effect(
         interaction_, measurer_, xi, elements_[static_cast<std::size_t>(slot)]);
     if (effect.band == model::Interaction::kHardCore ||
         (guard_ && effect.axis_pending &&
@@ -58,7 +66,18 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
       forbidden = true;
       break;
     }
-    if (effect.axis_pending) near_.emplace_back(slot, effect);
+    if (!effect.axis_pending) continue;
+    // A distance some axis holds in its hard core: its axis now, so that a violation rejects
+    // before the remaining neighbours are measured (the axis is needed anyway otherwise).
+    const Element& other = elements_[static_cast<std::size_t>(slot)];
+    if (effect.distance < interaction_.max_hard_core(xi.category, other.category)) {
+      model::decide_axis(interaction_, measurer_, xi, other, effect);
+      if (effect.band == model::Interaction::kHardCore) {
+        forbidden = true;
+        break;
+      }
+    }
+    near_.emplace_back(slot, effect);
   }
   if (forbidden) return -std::numeric_limits<double>::infinity();
   double total = 0.0;

@@ -91,8 +91,16 @@ class Configuration {
   std::vector<double> statistics_;        // t(x), by θ index
   Vec3 period_;  // the domain's torus period (zero when open), kept by value for the inner loop
   bool shape_distances_ = true;
-  mutable std::vector<std::pair<double, int>>
-      candidates_;  // scratch of log_interaction: (squared distance, slot)
+  // A neighbour to measure, nearest first: by the gap between the proxies' boxes, then by the
+  // squared distance of the reference positions.
+  struct Candidate {
+    double box_gap, squared;
+    int slot;
+    bool operator<(const Candidate& o) const {
+      return box_gap != o.box_gap ? box_gap < o.box_gap : squared < o.squared;
+    }
+  };
+  mutable std::vector<Candidate> candidates_;  // scratch of log_interaction
   mutable std::vector<std::pair<int, model::PairEffect>>
       near_;  // scratch of log_interaction: (slot, effect in range)
 };

@@ -166,6 +166,47 @@ TEST(ShapeDistance, BreakpointsDecideTheIntervalOfTheExactDistance) {  // NOLINT
   }
 }
 
+// Discs, rings and points, whose outlines lie between two circles about their reference
+// positions: apart, those circles alone often decide the interval (rings: the dots of rings,
+// most pairs of a sparse scatter), and the interval must still be the exact distance's.
+TEST(ShapeDistance, CirclesAboutTheReferencePositionsDecideTheInterval) {  // NOLINT
+  std::vector<Shape> shapes;
+  std::vector<Vec2> positions;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> radius(0.2, 1.2), position(-9, 9);
+  for (int k = 0; k < 40; ++k) {
+    const double r = radius(rng);
+    shapes.push_back(k % 3 == 0   ? ring(r, 0.4 * r)
+                     : k % 3 == 1 ? disc(r)
+                                  : Shape{PointShape{}, "point"});
+    positions.emplace_back(position(rng), position(rng));
+  }
+  const std::vector<double> breakpoints{0.0, 0.4, 0.45, 1.0, 2.5, 2.6, 4.0};
+  const auto interval = [&](double d) {
+    return std::upper_bound(breakpoints.begin(), breakpoints.end(), d) - breakpoints.begin();
+  };
+  for (const bool periodic : {false, true}) {
+    const Scene scene = scene_of(shapes, positions, Box3(Vec3(-10, -10, 0), Vec3(10, 10, 0)));
+    MeasurementOptions options;
+    options.periodic = periodic;
+    const PairMeasurer measurer(scene, options);
+    int decided = 0;
+    for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+      for (std::size_t j = 0; j < scene.elements.size(); ++j) {
+        if (i == j) continue;
+        const double exact =
+            measurer.measure_distance(scene.elements[i], scene.elements[j], 4.0).distance;
+        const double coarse =
+            measurer.measure_distance(scene.elements[i], scene.elements[j], 4.0, &breakpoints)
+                .distance;
+        EXPECT_EQ(interval(coarse), interval(exact)) << i << " " << j << " " << exact;
+        if (exact < 4.0 && coarse != exact) ++decided;
+      }
+    }
+    EXPECT_GT(decided, 0);
+  }
+}
+
 TEST(ShapeDistance, VariantsForComparison) {
   const Shape square = planar({rectangle(-1, -1, 1, 1)});
   MeasurementOptions centroid = fine();

@@ -216,7 +216,9 @@ TEST(DomainDecomposition, AStripCutAlongItsLengthKeepsTheModel) {
       const ShapeProcessSampler sampler(m, strip, options);
       core::Random random(static_cast<std::uint64_t>(1000 * whole + run + 1));
       const SampleResult r = sampler.sample(random);
-      if (whole == 0) ASSERT_GT(r.cells, 0);
+      if (whole == 0) {
+        ASSERT_GT(r.cells, 0);
+      }
       double close = 0;
       const auto& e = r.scene.elements;
       for (std::size_t i = 0; i < e.size(); ++i)
