@@ -22,7 +22,9 @@ enum class Boundary { torus, open };
 // open): the one place the minimum-image rule is written.
 inline Vec3 minimum_image(Vec3 offset, const Vec3& period) {
   for (int axis = 0; axis < 3; ++axis) {
-    if (period[axis] > 0) offset[axis] -= period[axis] * std::round(offset[axis] / period[axis]);
+    // Offsets within half a period, most of them, are their own image (without a call to round).
+    if (period[axis] > 0 && !(std::abs(offset[axis]) < 0.5 * period[axis]))
+      offset[axis] -= period[axis] * std::round(offset[axis] / period[axis]);
   }
   return offset;
 }
