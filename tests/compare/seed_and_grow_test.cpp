@@ -54,8 +54,12 @@ TEST(DelaunayConnectivity, OpenExemplarsLoseTheirBorderAndSkewedTriangles) {
       around += std::abs((o.position - lattice.elements[e].position).norm() - 10.0) < 1e-6 ? 1 : 0;
     // Inner elements close; the row ends with 5 close across the notch by a triangle of exactly
     // 2π/3 (kept or not as rounding has it); the rest are open.
-    if (around == 6) EXPECT_TRUE(c.rings[e].closed) << e;
-    if (around < 5) EXPECT_FALSE(c.rings[e].closed) << e;
+    if (around == 6) {
+      EXPECT_TRUE(c.rings[e].closed) << e;
+    }
+    if (around < 5) {
+      EXPECT_FALSE(c.rings[e].closed) << e;
+    }
     closed += c.rings[e].closed ? 1 : 0;
     // No skewed triangle survives: no edge is longer than the lattice's diagonals.
     for (const Vec3& o : c.rings[e].offset) EXPECT_LT(o.norm(), 10.0 * std::sqrt(3.0) + 1e-9);
