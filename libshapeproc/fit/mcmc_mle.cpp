@@ -75,7 +75,7 @@ constexpr double kMaxRHat = 1.1;
 // mix slowly (dashes-rows: 3 from 4 chains of 50,000 steps) give errors as large as the gaps
 // themselves, and a test passed with them says nothing. Such a sample gets more chains at the same
 // θ (more_chains), pooled with its own, up to kMostChainFactor times the setting's; the
-// simulations after it keep that many.
+// simulations after it run that many, half of them first (first_round).
 // A statistic whose mean is known to within kNegligibleGap (mcmc_mle.hpp) is trusted whatever its
 // effective size: a packed lattice's count that the chains leave once in a long while has almost
 // no variance and almost no effective observations.
@@ -96,6 +96,18 @@ int more_chains(int have, double effective, int most) {
   int add = std::clamp(wanted, 2, have);
   add += add % 2;
   return std::min(most, have + add);
+}
+
+// The chains of the first simulation at a new θ: half of `chains` (in pairs, at least the
+// setting's) once a sample has grown to more. The chains' worth changes with θ near a phase
+// transition (rings at seed 1: 24 chains worth 24 observations at one θ, 247 at the next), and
+// where half are worth kMinEffectiveSize the rest are not run; otherwise they follow at the
+// same θ, pooled, before anything is decided.
+int first_round(int chains, const MleOptions& options) {
+  const int setting = options.sampling.chains;
+  if (chains <= setting) return chains;
+  const int half = (chains + 1) / 2;
+  return std::max(setting, half + half % 2);
 }
 
 // Why a start is condensed: some category's mean count over `ratio` times the exemplar's, as
@@ -427,11 +439,15 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     set_theta(model, r.theta);
     ChainsSetting setting = options.sampling;
     setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
-    setting.chains = added_to ? chains - added_to->chains() : chains;
+    setting.chains = added_to ? chains - added_to->chains() : first_round(chains, options);
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
     StatisticsMoments m =
         statistics_moments(model, window, setting, added_to ? &*added_to : nullptr);
     added_to.reset();
+    if (m.chains() < chains && least_effective(m) < kMinEffectiveSize) {
+      added_to = std::move(m);  // the rest of the chains, at the same θ, before any decision
+      continue;
+    }
     r.expected = m.mean;
     r.expected_error = m.standard_error;
     // Statistics the chains never vary, simulation after simulation, while their parameter is

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/constants.hpp"
@@ -448,10 +449,12 @@ Scene split_rings() {
 
 // The default fit of `exemplar`: pseudo-likelihood, then maximum likelihood on the automatic
 // window.
-FitResult automatic_fit(const Scene& exemplar) {
+FitResult automatic_fit(const Scene& exemplar,
+                        std::function<void(const MleProgress&)> progress = {}) {
   const FitOptions options;
   MleOptions mle;
   mle.window = WindowModel::automatic;
+  mle.progress = std::move(progress);
   return refine_to_maximum_likelihood(exemplar, options, fit_shape_process(exemplar, options), mle);
 }
 
@@ -474,6 +477,30 @@ TEST(Fit, AnAutomaticWindowAbandonsATorusFitFromACondensedStart) {
                               "converged"),
             std::string::npos)
       << fit.notes[0];
+}
+
+// Once a sample has grown to more chains, each new θ runs half of them first, and the rest only
+// where that half is worth fewer than 20 independent observations: rings' torus fit grows to 24
+// chains worth 24 at one θ, and at the next, 12 are worth 101.
+TEST(Fit, AtANewThetaHalfOfAGrownSampleRunsFirst) {
+  std::vector<MleProgress> reports;
+  const FitResult fit =
+      automatic_fit(split_rings(), [&](const MleProgress& p) { reports.push_back(p); });
+  int grown = 0;  // the most chains of a sample of the current fit so far
+  int halves = 0;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    if (i > 0 && reports[i].iteration <= reports[i - 1].iteration) grown = 0;  // the next fit
+    if (reports[i].chains < grown) {
+      ++halves;
+      EXPECT_GE(reports[i].chains, grown / 2) << i;
+      EXPECT_GE(reports[i].effective_size, 20.0) << i;  // else the rest would have followed
+      EXPECT_GT(reports[i].iteration, reports[i - 1].iteration) << i;
+    }
+    grown = std::max(grown, reports[i].chains);
+  }
+  EXPECT_GT(halves, 0);
+  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
+  EXPECT_TRUE(record["estimator"]["converged"].get<bool>());
 }
 
 // Without the condensed-start rule, rings' torus fit from the pseudo-likelihood's estimate swings
