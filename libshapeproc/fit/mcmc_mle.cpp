@@ -11,6 +11,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_chain.hpp"
 
 namespace shapeproc::fit {
 
@@ -435,9 +436,14 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   int chains = options.sampling.chains;
   const int most_chains = kMostChainFactor * options.sampling.chains;
   std::optional<StatisticsMoments> added_to;
+  // Every simulation samples the same shapes on the same window: one set of proxies for all.
+  const std::shared_ptr<const sample::ChainGeometry> geometry =
+      options.sampling.geometry ? options.sampling.geometry
+                                : std::make_shared<const sample::ChainGeometry>(model, window);
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
     ChainsSetting setting = options.sampling;
+    setting.geometry = geometry;
     setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
     setting.chains = added_to ? chains - added_to->chains() : first_round(chains, options);
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);

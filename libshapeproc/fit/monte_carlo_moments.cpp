@@ -74,6 +74,7 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sampler_options.free_region = setting.free_region;
   sampler_options.start = setting.start;
   sampler_options.observe_region = setting.observe_region;
+  sampler_options.geometry = setting.geometry;
   const bool windowed = !setting.observe_region.isEmpty();
   const sample::ShapeProcessSampler sampler(model, domain, sampler_options);
   synthesis::ChainOptions chains;

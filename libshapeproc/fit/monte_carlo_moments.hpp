@@ -7,11 +7,16 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::sample {
+struct ChainGeometry;
+}  // namespace shapeproc::sample
 
 namespace shapeproc::fit {
 
@@ -35,6 +40,9 @@ struct ChainsSetting {
   // elements in this region (the window) and their pairs there, t_W, while the model's density
   // is that of the whole domain's t; empty: t of the whole domain.
   geometry::Box3 observe_region;
+  // The proxies of the model's shapes on the domain (sample::SamplerOptions::geometry), shared
+  // by the simulations of one fit; empty: each builds its own.
+  std::shared_ptr<const sample::ChainGeometry> geometry;
 };
 
 // Observations of t(X) and their moments.

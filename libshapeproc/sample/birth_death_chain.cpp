@@ -46,16 +46,31 @@ std::vector<std::vector<double>> shape_probabilities(const model::ShapeProcessMo
 
 }  // namespace
 
-ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain)
-    : dimension(model.dimension) {
+ChainGeometry::ChainGeometry(const model::ShapeProcessModel& model,
+                             const geometry::Domain& domain) {
   shape_space = model.shape_space();
   shape_space.window = domain.box();
-  interaction = std::make_unique<const model::Interaction>(model);
   measurer = std::make_unique<const geometry::PairMeasurer>(
       shape_space, model.measurement_options(domain.periodic()));
-  guard = std::make_unique<const OverlapGuard>(*interaction, shape_space, *measurer);
+  guard = std::make_unique<const OverlapGuard>(model::Interaction(model), shape_space, *measurer);
+}
+
+ChainGeometry::~ChainGeometry() = default;
+
+ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
+                         std::shared_ptr<const ChainGeometry> given)
+    : dimension(model.dimension), geometry(std::move(given)) {
+  if (!geometry) geometry = std::make_shared<const ChainGeometry>(model, domain);
+  measurer = geometry->measurer.get();
+  guard = geometry->guard.get();
+  shape_space = &geometry->shape_space;
+  SHAPEPROC_ASSERT((model.shapes.empty() || shape_space->shapes.size() == model.shapes.size()) &&
+                       shape_space->window.min() == domain.box().min() &&
+                       shape_space->window.max() == domain.box().max(),
+                   "a chain geometry is reused for a model of the same shapes on the same domain");
+  interaction = std::make_unique<const model::Interaction>(model);
   double max_radius = 0.0;
-  for (std::size_t s = 0; s < shape_space.shapes.size(); ++s)
+  for (std::size_t s = 0; s < shape_space->shapes.size(); ++s)
     max_radius = std::max(max_radius, measurer->radius(static_cast<int>(s)));
   reach = interaction->range() + 2 * max_radius;
   shapes_of.resize(model.categories.size());
@@ -79,7 +94,7 @@ BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& r
     : t_(tables),
       r_(region),
       random_(random),
-      state_(*tables.interaction, *tables.measurer, tables.guard.get(), region.domain, tables.reach,
+      state_(*tables.interaction, *tables.measurer, tables.guard, region.domain, tables.reach,
              region.grid_box, region.period) {
   log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
                             std::log(static_cast<double>(t_.shapes_of.size()));

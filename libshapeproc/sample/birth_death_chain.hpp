@@ -18,18 +18,33 @@
 
 namespace shapeproc::sample {
 
-// What every chain of one model shares, built once: the compiled interaction, the proxies, the
-// shapes of each category and their probabilities, log β per category.
+// The proxies of a model's shapes on a domain and the guard of their drawn outlines: what depends
+// on the shapes, the measurement and the thresholds but not on β or γ, so that the samplers of
+// one maximum-likelihood fit, one per θ, build it once (its pair expansions too, on first use).
+struct ChainGeometry {
+  ChainGeometry(const model::ShapeProcessModel& model, const geometry::Domain& domain);
+  ~ChainGeometry();
+
+  geometry::Scene shape_space;  // the model's shapes, the domain's box as window
+  std::unique_ptr<const geometry::PairMeasurer> measurer;
+  std::unique_ptr<const OverlapGuard> guard;  // the drawn outlines kept apart
+};
+
+// What every chain of one model shares, built once: the compiled interaction, the proxies (from
+// `geometry` when given: built for a model with the same shapes, measurement and thresholds on
+// the same domain), the shapes of each category and their probabilities, log β per category.
 struct ChainTables {
-  ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain);
+  ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
+              std::shared_ptr<const ChainGeometry> geometry = nullptr);
   ~ChainTables();
 
   int dimension = 2;
   std::unique_ptr<const model::Interaction> interaction;
-  std::unique_ptr<const geometry::PairMeasurer> measurer;
-  std::unique_ptr<const OverlapGuard> guard;  // the drawn outlines kept apart
-  geometry::Scene shape_space;                // the model's shapes, the domain's box as window
-  std::vector<std::vector<int>> shapes_of;    // per category
+  std::shared_ptr<const ChainGeometry> geometry;
+  const geometry::PairMeasurer* measurer = nullptr;  // geometry's
+  const OverlapGuard* guard = nullptr;               // geometry's
+  const geometry::Scene* shape_space = nullptr;      // geometry's
+  std::vector<std::vector<int>> shapes_of;           // per category
   // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
   // weight shared equally by its shapes); empty: its shapes are equally likely.
   std::vector<std::vector<double>> shape_cumulative;

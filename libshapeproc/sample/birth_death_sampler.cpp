@@ -31,9 +31,9 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
               "trace and observation intervals must be >= 0");
 
-  tables_ = std::make_unique<const ChainTables>(model_, domain_);
+  tables_ = std::make_unique<const ChainTables>(model_, domain_, options_.geometry);
   const int categories = static_cast<int>(model_.categories.size());
-  const int shapes = static_cast<int>(tables_->shape_space.shapes.size());
+  const int shapes = static_cast<int>(tables_->shape_space->shapes.size());
   ChainRegion region{domain_,
                      options_.free_region.isEmpty() ? domain_.box() : options_.free_region};
   if (!options_.free_region.isEmpty()) {
@@ -126,7 +126,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   result.statistics = chain.statistics();
   result.start_kept = chain.start_kept();
   result.start_left_out = chain.start_left_out();
-  result.scene = tables_->shape_space;
+  result.scene = *tables_->shape_space;
   result.scene.elements = chain.elements();
   return result;
 }

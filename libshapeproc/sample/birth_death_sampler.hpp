@@ -25,6 +25,7 @@
 #include "libshapeproc/synthesis/synthesizer.hpp"
 
 namespace shapeproc::sample {
+struct ChainGeometry;
 struct ChainTables;
 struct ChainRegion;
 }  // namespace shapeproc::sample
@@ -57,6 +58,10 @@ struct SamplerOptions {
   // any other (a hybrid's start, compare/hybrid_synthesis.hpp). One outside the domain or that the
   // hard core forbids beside those before it is left out (SampleResult::start_left_out).
   std::vector<geometry::Element> start;
+  // The proxies and outline guard of an earlier sampler's model with the same shapes,
+  // measurement and thresholds on the same domain (ChainGeometry): shared instead of built
+  // again. Empty: built.
+  std::shared_ptr<const ChainGeometry> geometry;
   // With a start and automatic steps: stop after this many steps per start element kept, the
   // time at which the model's fit matched its exemplar from the same kind of start
   // (fit::held_steps_per_element); 0: the stationarity rule.

@@ -36,7 +36,11 @@ bool same_outline(const geometry::Proxy3& a, const geometry::Proxy3& b) {
 OverlapGuard::OverlapGuard(const model::Interaction& interaction,
                            const geometry::Scene& shape_space,
                            const geometry::PairMeasurer& proxies)
-    : interaction_(interaction) {
+    : categories_(interaction.category_count()) {
+  for (int a = 0; a < categories_; ++a)
+    for (int b = 0; b < categories_; ++b)
+      breakpoints_.push_back(interaction.interacts(a, b) ? interaction.breakpoints(a, b)
+                                                         : std::vector<double>{});
   const geometry::MeasurementOptions& options = proxies.options();
   if (options.distance != geometry::DistanceKind::shape ||
       !(options.proxy.tolerance > geometry::kOutlineTolerance) || shape_space.shapes.empty())
@@ -72,7 +76,8 @@ bool OverlapGuard::overlaps(const geometry::Element& xi, const geometry::Element
       error_[static_cast<std::size_t>(xi.shape)] + error_[static_cast<std::size_t>(other.shape)];
   // The proxies' distance is only known to lie in its interval between breakpoints: the guard
   // measures again unless the interval starts at or beyond the margin.
-  const std::vector<double>& marks = interaction_.breakpoints(xi.category, other.category);
+  const std::vector<double>& marks =
+      breakpoints_[static_cast<std::size_t>(xi.category * categories_ + other.category)];
   const auto above = std::upper_bound(marks.begin(), marks.end(), proxy_distance);
   const double low = above == marks.begin() ? proxy_distance : *(above - 1);
   if (low >= margin) return false;

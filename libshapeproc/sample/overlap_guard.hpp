@@ -20,7 +20,8 @@ namespace shapeproc::sample {
 
 class OverlapGuard {
  public:
-  // `shape_space`: the model's shapes; `proxies`: the model's measurer of them. The guard is
+  // `shape_space`: the model's shapes; `proxies`: the model's measurer of them; `interaction`:
+  // its thresholds (the guard keeps their breakpoints: it serves any β and γ). The guard is
   // inactive for other distance kinds than the shape distance, for proxies already as fine as
   // the outline tolerance, and where the fine proxies are the model's (polygons: nothing to
   // flatten, nothing the simplification drops at either tolerance).
@@ -37,7 +38,10 @@ class OverlapGuard {
                 const geometry::Vec3& offset, double proxy_distance) const;
 
  private:
-  const model::Interaction& interaction_;
+  // Per pair of categories (a × categories + b): the pair's breakpoints (Interaction), empty
+  // where it does not interact.
+  std::vector<std::vector<double>> breakpoints_;
+  int categories_ = 0;
   std::unique_ptr<const geometry::PairMeasurer> outlines_;  // null when inactive
   // Per shape: how far its proxy and its fine proxy may stray from the drawn outline together
   // (the sum of their tolerances times its diagonal, with the curves' flattening and a margin).

@@ -11,6 +11,7 @@
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_chain.hpp"
 #include "tests/point_model.hpp"
 #include "tests/sample/hard_core_check.hpp"
 #include "tests/squares_model.hpp"
@@ -194,6 +195,25 @@ TEST(BirthDeath, SameSeedSameOutput) {
   const SampleResult c = sample_with_seed(m, domain, options, 6);
   EXPECT_TRUE(c.scene.elements.size() != a.scene.elements.size() ||
               c.scene.elements.front().position != a.scene.elements.front().position);
+}
+
+// A sampler given the proxies of another model with the same shapes and thresholds (an earlier
+// maximum-likelihood iteration's) runs the chain it would run with its own.
+TEST(BirthDeath, ASharedChainGeometryGivesTheSameChain) {
+  const model::ShapeProcessModel earlier = io::parse_model(kSquares, "squares.json");
+  model::ShapeProcessModel m = earlier;
+  m.categories[0].beta = 0.35;
+  for (model::AxisParameters& axis : m.interactions[0].axes) axis.gammas[0] = 0.8;
+  const geometry::Domain domain = geometry::Domain::from_sizes({40, 40}, geometry::Boundary::torus);
+  SamplerOptions options;
+  options.iterations = 5000;
+  const SampleResult own = sample_with_seed(m, domain, options, 5);
+  options.geometry = std::make_shared<const ChainGeometry>(earlier, domain);
+  const SampleResult shared = sample_with_seed(m, domain, options, 5);
+  ASSERT_GT(own.scene.elements.size(), 10u);
+  ASSERT_EQ(shared.scene.elements.size(), own.scene.elements.size());
+  for (std::size_t i = 0; i < own.scene.elements.size(); ++i)
+    EXPECT_EQ(shared.scene.elements[i].position, own.scene.elements[i].position);
 }
 
 // A hard-core point process on the unit torus with δ0 = 0.6: no three points fit, and
