@@ -440,11 +440,13 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   const std::shared_ptr<const sample::ChainGeometry> geometry =
       options.sampling.geometry ? options.sampling.geometry
                                 : std::make_shared<const sample::ChainGeometry>(model, window);
+  int rests = 0;  // simulations that ran the rest of a first round's chains (not iterations)
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
     ChainsSetting setting = options.sampling;
     setting.geometry = geometry;
-    setting.seed = options.sampling.seed + static_cast<std::uint64_t>(r.iterations) * 1000003ULL;
+    const int simulation = r.iterations + rests;
+    setting.seed = options.sampling.seed + static_cast<std::uint64_t>(simulation) * 1000003ULL;
     setting.chains = added_to ? chains - added_to->chains() : first_round(chains, options);
     if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
     StatisticsMoments m =
@@ -452,6 +454,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     added_to.reset();
     if (m.chains() < chains && least_effective(m) < kMinEffectiveSize) {
       added_to = std::move(m);  // the rest of the chains, at the same θ, before any decision
+      ++rests;
+      --r.iterations;  // one iteration, in two simulations
       continue;
     }
     r.expected = m.mean;
