@@ -48,10 +48,8 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
       return;
     }
     if (squared >= far * far) return;
-    const double reach = interaction_.max_range(xi.category, other.category);
-    const double gap = measurer_.box_gap_squared(xi.shape, other.shape, t);
-    if (gap >= reach * reach) return;
-    candidates_.push_back({gap, squared, slot});
+    // (Not dropped on the gap: on a small torus another image of the pair may be nearer.)
+    candidates_.push_back({measurer_.box_gap_squared(xi.shape, other.shape, t), squared, slot});
   });
   std::sort(candidates_.begin(), candidates_.end());
   bool forbidden = false;
