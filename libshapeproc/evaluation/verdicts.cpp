@@ -18,7 +18,7 @@ double total_intensity(const metrics::SceneStatistics& s) {
 }
 
 Verdict density(const std::string& metric, double ratio) {
-  Verdict v{metric, ratio, "×" + number(ratio), "×0.8 to ×1.25", Outcome::pass, ""};
+  Verdict v{metric, ratio, "×" + number(ratio), "×0.8 to ×1.25", Outcome::pass, "", ""};
   if (!(ratio >= 0.8)) v.problem = "too sparse";
   if (ratio > 1.25) v.problem = "too dense";
   if (!v.problem.empty()) v.outcome = Outcome::fail;
@@ -94,7 +94,8 @@ std::vector<Verdict> judge(const Judged& j) {
   // The shape mix.
   if (j.mix.degrees > 0) {
     Verdict v{"shape mix", j.mix.p_value, "p = " + number(j.mix.p_value, 3),
-              "p ≥ 0.01",  Outcome::pass, ""};
+              "p ≥ 0.01",  Outcome::pass, "",
+              ""};
     if (!(j.mix.p_value >= 0.01)) {
       v.outcome = Outcome::fail;
       v.problem = "the mix of shapes drifts";
@@ -127,6 +128,7 @@ std::vector<Verdict> judge(const Judged& j) {
               number(100 * share, 1) + "% of elements",
               "at most the exemplar's " + number(100 * wanted, 1) + "% + 1",
               Outcome::pass,
+              "",
               ""};
     if (share > wanted + 0.01) {
       v.outcome = Outcome::fail;
@@ -143,6 +145,7 @@ std::vector<Verdict> judge(const Judged& j) {
               number(per) + " pairs per element",
               number(wanted) + " ± " + number(slack),
               Outcome::pass,
+              "",
               ""};
     if (std::abs(per - wanted) > slack) {
       v.outcome = Outcome::fail;
@@ -160,6 +163,7 @@ std::vector<Verdict> judge(const Judged& j) {
               number(order) + " (ψ" + std::to_string(j.output_order.symmetry()) + ")",
               number(wanted) + " ± 0.2",
               Outcome::pass,
+              "",
               ""};
     if (std::abs(order - wanted) > 0.2) {
       v.outcome = Outcome::fail;
@@ -173,7 +177,7 @@ std::vector<Verdict> judge(const Judged& j) {
   // Spacing: W1 of the nearest-neighbour distributions.
   {
     const double w1 = j.comparison->all.nearest;
-    Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, ""};
+    Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, "", ""};
     v.brief = number(w1);
     if (!(w1 <= 0.15)) {
       v.outcome = Outcome::fail;
@@ -194,6 +198,7 @@ std::vector<Verdict> judge(const Judged& j) {
             number(m.exemplar[w]) + " pairs per element)",
         "|z| ≤ " + number(m.critical, 1) + " (1% over " + std::to_string(m.z.size()) + " bands)",
         Outcome::pass,
+        "",
         ""};
     v.brief = number(worst, 1);
     if (!(worst <= m.critical)) {
@@ -206,7 +211,7 @@ std::vector<Verdict> judge(const Judged& j) {
   if (j.neighbourhood)
     out.push_back({"neighbourhood", j.neighbourhood->normalised,
                    number(j.neighbourhood->normalised) + " a²", "shown (lower is closer)",
-                   Outcome::shown, ""});
+                   Outcome::shown, "", ""});
   // The figure alone: what `shown` starts with, up to any explanation in brackets.
   for (Verdict& v : out) {
     if (!v.brief.empty()) continue;
