@@ -17,7 +17,10 @@ std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
   for (std::size_t i = 0; i < points.size(); ++i) short_of.push_back(i);
   double cell =
       2.0 * std::pow(domain.measure() / static_cast<double>(points.size()), 1.0 / dimension);
-  const double largest = domain.sizes().head(dimension).norm();
+  double largest = 0.0;  // the box's diagonal (a loop: GCC 12 misreads head(n).norm() here)
+  for (int axis = 0; axis < dimension; ++axis)
+    largest += domain.sizes()[axis] * domain.sizes()[axis];
+  largest = std::sqrt(largest);
   std::vector<std::pair<double, Vec3>> near;
   while (!short_of.empty()) {
     NeighbourGrid grid(domain.box(), dimension, cell, domain.periodic());
