@@ -438,8 +438,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   std::optional<StatisticsMoments> added_to;
   // Every simulation samples the same shapes on the same window: one set of proxies for all.
   const std::shared_ptr<const sample::ChainGeometry> geometry =
-      options.sampling.geometry ? options.sampling.geometry
-                                : std::make_shared<const sample::ChainGeometry>(model, window);
+      options.sampling.geometry
+          ? options.sampling.geometry
+          : std::make_shared<const sample::ChainGeometry>(model, model::Interaction(model), window);
   int rests = 0;  // simulations that ran the rest of a first round's chains (not iterations)
   for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
     set_theta(model, r.theta);
@@ -452,7 +453,8 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     StatisticsMoments m =
         statistics_moments(model, window, setting, added_to ? &*added_to : nullptr);
     added_to.reset();
-    if (m.chains() < chains && least_effective(m) < kMinEffectiveSize) {
+    const double effective = least_effective(m);
+    if (m.chains() < chains && effective < kMinEffectiveSize) {
       added_to = std::move(m);  // the rest of the chains, at the same θ, before any decision
       ++rests;
       --r.iterations;  // one iteration, in two simulations
@@ -485,7 +487,6 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       continue;  // simulate again without them
     }
     const Gap g = newton->gap(m, r.theta);
-    const double effective = least_effective(m);
     if (options.progress)
       options.progress({r.iterations, g.worst_z, effective, m.chains(),
                         std::chrono::duration<double>(Clock::now() - clock).count()});

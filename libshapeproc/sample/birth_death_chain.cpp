@@ -47,31 +47,31 @@ std::vector<std::vector<double>> shape_probabilities(const model::ShapeProcessMo
 }  // namespace
 
 ChainGeometry::ChainGeometry(const model::ShapeProcessModel& model,
+                             const model::Interaction& interaction,
                              const geometry::Domain& domain) {
   shape_space = model.shape_space();
   shape_space.window = domain.box();
   measurer = std::make_unique<const geometry::PairMeasurer>(
       shape_space, model.measurement_options(domain.periodic()));
-  guard = std::make_unique<const OverlapGuard>(model::Interaction(model), shape_space, *measurer);
+  guard = std::make_unique<const OverlapGuard>(interaction, shape_space, *measurer);
 }
 
 ChainGeometry::~ChainGeometry() = default;
 
 ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
                          std::shared_ptr<const ChainGeometry> given)
-    : dimension(model.dimension), geometry(std::move(given)) {
-  if (!geometry) geometry = std::make_shared<const ChainGeometry>(model, domain);
-  measurer = geometry->measurer.get();
-  guard = geometry->guard.get();
-  shape_space = &geometry->shape_space;
-  SHAPEPROC_ASSERT((model.shapes.empty() || shape_space->shapes.size() == model.shapes.size()) &&
-                       shape_space->window.min() == domain.box().min() &&
-                       shape_space->window.max() == domain.box().max(),
+    : dimension(model.dimension),
+      interaction(std::make_unique<const model::Interaction>(model)),
+      geometry(std::move(given)) {
+  if (!geometry) geometry = std::make_shared<const ChainGeometry>(model, *interaction, domain);
+  const geometry::Scene& shape_space = geometry->shape_space;
+  SHAPEPROC_ASSERT((model.shapes.empty() || shape_space.shapes.size() == model.shapes.size()) &&
+                       shape_space.window.min() == domain.box().min() &&
+                       shape_space.window.max() == domain.box().max(),
                    "a chain geometry is reused for a model of the same shapes on the same domain");
-  interaction = std::make_unique<const model::Interaction>(model);
   double max_radius = 0.0;
-  for (std::size_t s = 0; s < shape_space->shapes.size(); ++s)
-    max_radius = std::max(max_radius, measurer->radius(static_cast<int>(s)));
+  for (std::size_t s = 0; s < shape_space.shapes.size(); ++s)
+    max_radius = std::max(max_radius, geometry->measurer->radius(static_cast<int>(s)));
   reach = interaction->range() + 2 * max_radius;
   shapes_of.resize(model.categories.size());
   if (model.shapes.empty()) {
@@ -94,8 +94,8 @@ BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& r
     : t_(tables),
       r_(region),
       random_(random),
-      state_(*tables.interaction, *tables.measurer, tables.guard, region.domain, tables.reach,
-             region.grid_box, region.period) {
+      state_(*tables.interaction, *tables.geometry->measurer, tables.geometry->guard.get(),
+             region.domain, tables.reach, region.grid_box, region.period) {
   log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
                             std::log(static_cast<double>(t_.shapes_of.size()));
   for (const Element& e : fixed) {
@@ -289,8 +289,9 @@ double BirthDeathChain::log_local_factor(const Element& e) const {
     if (!(v > 0.0)) return kMinusInfinity;
     factor = std::log(v);
   }
-  if (domain.mask() && !domain.contains(t_.measurer->proxies2()[static_cast<std::size_t>(e.shape)],
-                                        e.position.head<2>())) {
+  if (domain.mask() &&
+      !domain.contains(t_.geometry->measurer->proxies2()[static_cast<std::size_t>(e.shape)],
+                       e.position.head<2>())) {
     return kMinusInfinity;
   }
   return factor;

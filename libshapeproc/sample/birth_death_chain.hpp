@@ -22,7 +22,9 @@ namespace shapeproc::sample {
 // on the shapes, the measurement and the thresholds but not on β or γ, so that the samplers of
 // one maximum-likelihood fit, one per θ, build it once (its pair expansions too, on first use).
 struct ChainGeometry {
-  ChainGeometry(const model::ShapeProcessModel& model, const geometry::Domain& domain);
+  // `interaction`: the model's (its thresholds: the guard's breakpoints).
+  ChainGeometry(const model::ShapeProcessModel& model, const model::Interaction& interaction,
+                const geometry::Domain& domain);
   ~ChainGeometry();
 
   geometry::Scene shape_space;  // the model's shapes, the domain's box as window
@@ -40,11 +42,8 @@ struct ChainTables {
 
   int dimension = 2;
   std::unique_ptr<const model::Interaction> interaction;
-  std::shared_ptr<const ChainGeometry> geometry;
-  const geometry::PairMeasurer* measurer = nullptr;  // geometry's
-  const OverlapGuard* guard = nullptr;               // geometry's
-  const geometry::Scene* shape_space = nullptr;      // geometry's
-  std::vector<std::vector<int>> shapes_of;           // per category
+  std::shared_ptr<const ChainGeometry> geometry;  // never null
+  std::vector<std::vector<int>> shapes_of;        // per category
   // Per category, with shape classes: the cumulative probabilities of its shapes (a class's
   // weight shared equally by its shapes); empty: its shapes are equally likely.
   std::vector<std::vector<double>> shape_cumulative;

@@ -33,7 +33,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
 
   tables_ = std::make_unique<const ChainTables>(model_, domain_, options_.geometry);
   const int categories = static_cast<int>(model_.categories.size());
-  const int shapes = static_cast<int>(tables_->shape_space->shapes.size());
+  const int shapes = static_cast<int>(tables_->geometry->shape_space.shapes.size());
   ChainRegion region{domain_,
                      options_.free_region.isEmpty() ? domain_.box() : options_.free_region};
   if (!options_.free_region.isEmpty()) {
@@ -126,7 +126,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   result.statistics = chain.statistics();
   result.start_kept = chain.start_kept();
   result.start_left_out = chain.start_left_out();
-  result.scene = *tables_->shape_space;
+  result.scene = tables_->geometry->shape_space;
   result.scene.elements = chain.elements();
   return result;
 }

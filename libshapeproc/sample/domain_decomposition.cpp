@@ -294,7 +294,7 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   result.start_left_out = cells.left_out();
   result.start_kept -= result.start_left_out;
   for (const MoveCounts& m : moves) result.moves += m;
-  result.scene = *tables.shape_space;
+  result.scene = tables.geometry->shape_space;
   result.scene.elements = cells.all();
   result.cells = cells.layout().count();
   result.sweeps = done;

@@ -208,7 +208,8 @@ TEST(BirthDeath, ASharedChainGeometryGivesTheSameChain) {
   SamplerOptions options;
   options.iterations = 5000;
   const SampleResult own = sample_with_seed(m, domain, options, 5);
-  options.geometry = std::make_shared<const ChainGeometry>(earlier, domain);
+  options.geometry =
+      std::make_shared<const ChainGeometry>(earlier, model::Interaction(earlier), domain);
   const SampleResult shared = sample_with_seed(m, domain, options, 5);
   ASSERT_GT(own.scene.elements.size(), 10u);
   ASSERT_EQ(shared.scene.elements.size(), own.scene.elements.size());
