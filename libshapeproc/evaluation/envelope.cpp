@@ -69,7 +69,8 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
   sample::SamplerOptions sampling;
   sampling.iterations = options.steps;
-  if (fit::starts_at_exemplar(model)) sampling.start = exemplar.elements;  // as the fit's chains
+  sampling.compression = fit::output_compression(model);  // as the fit's chains
+  sampling.compression.steps = options.steps / 4;
   const sample::ShapeProcessSampler sampler(model, window, sampling);
   for (int k = 0; k < options.samples; ++k) {
     core::Random random(options.seed + static_cast<std::uint64_t>(k));

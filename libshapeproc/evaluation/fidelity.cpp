@@ -11,6 +11,7 @@
 #include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/fit/monte_carlo_moments.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
+#include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -69,9 +70,8 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     setting.fixed = border.fixed;
     setting.free_region = border.region;
   }
-  // The chains start where the fit's did: at a packed exemplar (its free part), else empty.
-  if (fit::starts_at_exemplar(model))
-    setting.start = fit::elements_in(exemplar, setting.free_region);
+  // The chains run the fit's burn-in: compressing for a packed exemplar.
+  setting.compress = fit::compressing_burn_in(model);
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);
@@ -115,11 +115,8 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
   for (int axis = 0; axis < exemplar.dimension; ++axis)
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
-  sample::SamplerOptions start;  // as `synthesize` starts: a packed exemplar repeated, else empty
-  if (fit::starts_at_exemplar(model)) {
-    start.start = geometry::tile_over(exemplar, domain.box());
-    start.held_steps_per_element = fit::held_steps_per_element(model);
-  }
+  sample::SamplerOptions start;  // as `synthesize` starts: empty, compressing where the fit did
+  start.compression = fit::output_compression(model);
   const sample::ShapeProcessSampler sampler(model, domain, start);
   synthesis::ChainOptions chains;
   chains.chains = options.outputs;
@@ -137,6 +134,16 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
     ratios.push_back(static_cast<double>(elements.size()) / domain.measure() / exemplar_density);
     total += static_cast<double>(elements.size());
     report.output_collisions += colliding_pairs(output.scene, geometry::Boundary::torus);
+    if (!elements.empty()) {
+      const metrics::Novelty n =
+          metrics::measure_novelty(exemplar, output.scene, geometry::Boundary::torus);
+      const double w = 1.0 / static_cast<double>(outputs.size());
+      report.patch_copy_share += w * n.output.patch;
+      report.patch_copy_chance += w * n.chance.patch;
+      report.largest_copied_patch += w * n.output.largest_patch;
+      report.lattice_exemplar = n.lattice_exemplar;
+      if (n.repeats_exemplar) ++report.outputs_repeating;
+    }
     for (const geometry::Element& e : elements)
       if (classes > 0)
         in_output[static_cast<std::size_t>(

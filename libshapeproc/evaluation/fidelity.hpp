@@ -69,6 +69,12 @@ struct FidelityReport {
   // without shape classes).
   double class_chi_square = 0.0, class_p_value = 0.0;
   int class_degrees = 0;
+  // Novelty of the outputs against the exemplar (metrics/novelty.hpp), means over the outputs:
+  // patch copy share, its chance level, the largest copied patch; whether the exemplar is a
+  // lattice (its own repeat its only faithful arrangement) and how many outputs repeat it.
+  double patch_copy_share = 0.0, patch_copy_chance = 0.0, largest_copied_patch = 0.0;
+  bool lattice_exemplar = false;
+  int outputs_repeating = 0;
 };
 
 // `boundary` and `edge`: the exemplar's window as the fit used it (a torus for the periodic edge

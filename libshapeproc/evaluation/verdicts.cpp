@@ -33,6 +33,30 @@ double touching_per_element(const metrics::SceneStatistics& s) {
   return s.elements() > 0 ? static_cast<double>(s.collisions.touching.size()) / s.elements() : 0.0;
 }
 
+// Copied neighbourhoods against their chance level (metrics/novelty.hpp).
+Verdict novelty(const metrics::Novelty& n) {
+  const metrics::CopyMeasures& o = n.output;
+  Verdict v{"novelty",
+            o.patch,
+            "patch copies " + number(o.patch) + " (chance " + number(n.chance.patch) +
+                "), largest copied patch " + number(o.largest_patch) + ", copies " +
+                number(o.copy) + " (chance " + number(n.chance.copy) + "), repetition " +
+                number(o.repetition) + " (chance " + number(n.chance.repetition) + ")",
+            "patch copies at most chance + " + number(metrics::kPatchExcess) +
+                ", largest patch at most " + number(metrics::kLargestPatch),
+            Outcome::pass,
+            "",
+            number(o.patch) + "/" + number(o.largest_patch)};
+  if (n.lattice_exemplar) {
+    v.outcome = Outcome::shown;
+    v.rule = "shown: a lattice exemplar's own repeat is its only faithful arrangement";
+  } else if (n.repeats_exemplar) {
+    v.outcome = Outcome::fail;
+    v.problem = "repeats the exemplar";
+  }
+  return v;
+}
+
 }  // namespace
 
 ExemplarMeasures measure_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
@@ -43,6 +67,7 @@ ExemplarMeasures measure_exemplar(const geometry::Scene& exemplar, geometry::Bou
   m.order = metrics::bond_order(exemplar, boundary);
   m.kinds = shape_kinds(exemplar);
   m.model = model;
+  m.scene = &exemplar;
   if (model) m.pairs = pair_counts(exemplar, boundary, *model);
   return m;
 }
@@ -60,6 +85,8 @@ Judged measure_for_verdicts(const ExemplarMeasures& exemplar, const geometry::Sc
   j.exemplar_order = exemplar.order;
   j.output_order = metrics::bond_order(output, output_boundary);
   j.mix = shape_mix(exemplar.kinds, output);
+  if (exemplar.scene && !exemplar.scene->elements.empty() && !output.elements.empty())
+    j.novelty = metrics::measure_novelty(*exemplar.scene, output, output_boundary);
   if (exemplar.model)
     j.model = model_statistics(
         exemplar.pairs, pair_counts(output, output_boundary, *exemplar.model), *exemplar.model);
@@ -208,6 +235,7 @@ std::vector<Verdict> judge(const Judged& j) {
     out.push_back(v);
   }
 
+  if (j.novelty) out.push_back(novelty(*j.novelty));
   if (j.neighbourhood)
     out.push_back({"neighbourhood", j.neighbourhood->normalised,
                    number(j.neighbourhood->normalised) + " a²", "shown (lower is closer)",

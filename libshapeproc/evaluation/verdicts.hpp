@@ -16,6 +16,10 @@
 //                  distance: passes at most 0.15;
 //   model statistics  with a fitted model, its pairs per band and element against the
 //                  exemplar's (model_statistics.hpp): passes within the Bonferroni bound;
+//   novelty        copied neighbourhoods (metrics/novelty.hpp): fails ("repeats the exemplar")
+//                  where the patch copy share stands more than 0.3 above its chance level or the
+//                  largest copied patch holds more than 0.3 of the output; shown without a rule
+//                  for a lattice exemplar, whose own repeat is its only faithful arrangement;
 //   neighbourhood  Ma's average neighbourhood distance (Davison et al. eq. 5) in a², shown with
 //                  no rule: it has no scale that holds across exemplars (0 for a copy).
 #pragma once
@@ -28,6 +32,7 @@
 #include "libshapeproc/evaluation/shape_mix.hpp"
 #include "libshapeproc/metrics/bond_order.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
+#include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 
 namespace shapeproc::evaluation {
@@ -54,6 +59,7 @@ struct Judged {
   const metrics::NeighbourhoodDistance* neighbourhood = nullptr;  // optional
   metrics::BondOrder exemplar_order, output_order;
   ShapeMix mix;
+  std::optional<metrics::Novelty> novelty;  // with the exemplar's scene
 };
 
 // The exemplar's side of every check, measured once for any number of outputs.
@@ -63,6 +69,7 @@ struct ExemplarMeasures {
   ShapeKinds kinds;
   const model::ShapeProcessModel* model = nullptr;  // optional
   PairCounts pairs;                                 // with a model
+  const geometry::Scene* scene = nullptr;           // the exemplar itself, for novelty
 };
 ExemplarMeasures measure_exemplar(const geometry::Scene& exemplar, geometry::Boundary boundary,
                                   const metrics::SceneStatistics& statistics,

@@ -60,14 +60,6 @@ BorderCondition border_condition(const geometry::Scene& exemplar,
   return b;
 }
 
-std::vector<geometry::Element> elements_in(const geometry::Scene& exemplar,
-                                           const geometry::Box3& region) {
-  std::vector<geometry::Element> out;
-  for (const geometry::Element& e : exemplar.elements)
-    if (region.isEmpty() || region.contains(e.position)) out.push_back(e);
-  return out;
-}
-
 bool packed_exemplar(const model::ShapeProcessModel& mple) {
   for (const model::CategoryParameters& c : mple.categories)
     if (c.beta_status == model::ParameterStatus::unbounded) return true;
@@ -91,15 +83,14 @@ bool estimator_says(const model::ShapeProcessModel& model, const char* key, cons
 
 }  // namespace
 
-bool starts_at_exemplar(const model::ShapeProcessModel& model) {
-  return estimator_says(model, "chains_start", "exemplar");
+bool compressing_burn_in(const model::ShapeProcessModel& model) {
+  return estimator_says(model, "burn_in_kind", "compressing");
 }
 
-double held_steps_per_element(const model::ShapeProcessModel& model) {
-  if (!starts_at_exemplar(model)) return 0.0;
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
-  const nlohmann::json& held = fit["estimator"]["held_steps_per_element"];
-  return held.is_number() && held.get<double>() > 0 ? held.get<double>() : 0.0;
+sample::CompressionOptions output_compression(const model::ShapeProcessModel& model) {
+  sample::CompressionOptions c;
+  c.enabled = compressing_burn_in(model);
+  return c;
 }
 
 geometry::Domain stationary_domain(const geometry::Scene& exemplar) {
@@ -177,10 +168,9 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   model::ShapeProcessModel start = mple.model;
   const bool open_window = fit_options.boundary == geometry::Boundary::open &&
                            fit_options.edge == geometry::EdgeTreatment::none;
-  const bool at_exemplar = packed_exemplar(start);  // its chains start at it (below)
-  const bool stationary =
-      open_window && (options.window == WindowModel::stationary ||
-                      (options.window == WindowModel::automatic && !at_exemplar));
+  const bool compress = packed_exemplar(start);  // its chains compress first (below)
+  const bool stationary = open_window && (options.window == WindowModel::stationary ||
+                                          (options.window == WindowModel::automatic && !compress));
   const geometry::Domain window =
       stationary ? stationary_domain(exemplar)
                  : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
@@ -198,8 +188,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
-  // A packed exemplar's chains start at it (its free part with border correction).
-  if (at_exemplar) chains.sampling.start = elements_in(exemplar, chains.sampling.free_region);
+  // A packed exemplar's chains start empty and compress in their burn-in.
+  chains.sampling.compress = compress;
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
@@ -254,9 +244,9 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     std::string list;
     for (int k : held) list += (list.empty() ? "" : ", ") + names[static_cast<std::size_t>(k)];
     result.notes.push_back(
-        "the chains, started at the exemplar, held these statistics at the exemplar's values in "
-        "every observation (a packed exemplar: the likelihood keeps growing with their "
-        "parameters, which are marked unbounded and kept where the chains first held them): " +
+        "the chains held these statistics at the exemplar's values in every observation (the "
+        "likelihood keeps growing with their parameters, which are marked unbounded and kept "
+        "where the chains first held them): " +
         list);
   }
   std::vector<int> penalised;  // θ indices where the attraction prior holds log γ down
@@ -270,7 +260,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   record["estimator"] = {{"method", "mcmc-mle"},
                          {"start", "mple"},
                          {"window", stationary ? "stationary" : "own"},
-                         {"chains_start", at_exemplar ? "exemplar" : "empty"},
+                         {"chains_start", "empty"},
+                         {"burn_in_kind", compress ? "compressing" : "plain"},
                          {"unbounded", held},
                          {"iterations", mle.iterations},
                          {"converged", mle.converged},
@@ -291,14 +282,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
                          {"worst_r_hat", std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0},
                          {"significance", options.significance},
                          {"seconds", mle.seconds}};
-  if (at_exemplar && !chains.sampling.start.empty()) {
-    // The middle of the chains' observed stretch, per element they start from: the time at which
-    // the fit matched the exemplar's counts (held_steps_per_element in the header).
-    record["estimator"]["held_steps_per_element"] =
-        (static_cast<double>(chains.sampling.burn_in) +
-         0.5 * static_cast<double>(chains.sampling.steps)) /
-        static_cast<double>(chains.sampling.start.size());
-  }
   record["notes"] = result.notes;
   result.model.fit_json = record.dump();
   return result;

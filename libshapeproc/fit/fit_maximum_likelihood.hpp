@@ -7,6 +7,7 @@
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
+#include "libshapeproc/sample/compression.hpp"
 
 namespace shapeproc::fit {
 
@@ -27,30 +28,20 @@ struct BorderCondition {
 BorderCondition border_condition(const geometry::Scene& exemplar,
                                  const model::ShapeProcessModel& model);
 
-// The exemplar's elements whose reference positions lie in `region` (all of them when it is
-// empty): where a packed exemplar's chains start, given the border condition's free region.
-std::vector<geometry::Element> elements_in(const geometry::Scene& exemplar,
-                                           const geometry::Box3& region);
-
-// Whether the chains of the fit start at the exemplar: where the pseudo-likelihood found a
-// parameter without a finite maximum (a packed exemplar, whose states a chain from the empty
-// configuration never reaches). Elsewhere they start empty, so that the fit only converges where
-// the model reaches the exemplar's counts by itself.
+// Whether the fit's chains need the compressing burn-in (sample/compression.hpp): where the
+// pseudo-likelihood found a parameter without a finite maximum (a packed exemplar, whose density
+// a chain at the model's β from the empty configuration does not reach in any useful time).
+// Every chain starts empty all the same; the burn-in only brings it to a packed state from none
+// of the exemplar's positions.
 bool packed_exemplar(const model::ShapeProcessModel& mple);
 
-// Whether samples of a fitted model start from its exemplar, as its maximum-likelihood chains
-// did (its fit record's `estimator.chains_start`); false for other models.
-bool starts_at_exemplar(const model::ShapeProcessModel& model);
+// Whether samples of a fitted model use the compressing burn-in, as its maximum-likelihood chains
+// did (its fit record's `estimator.burn_in`); false for other models.
+bool compressing_burn_in(const model::ShapeProcessModel& model);
 
-// The steps per element at which such a model's fit matched its exemplar: its chains start at the
-// exemplar's n elements and observe t from the burn-in b to b + s steps, so their mean is that of
-// the state near the middle, (b + s/2) / n steps per element. A packed exemplar's chains do not
-// reach the model's stationary state in that time (it is what they are fitted not to need), so a
-// sample from the exemplar repeated stops at this many steps per element it starts from
-// (sample::SamplerOptions::held_steps_per_element), not at the stationarity rule's horizon:
-// bubbles-3x3's largest bubbles, 12% of the exemplar, fall to 8% at 1,000 steps per element
-// (docs/sample.md). 0 for other models and for fits recorded without it.
-double held_steps_per_element(const model::ShapeProcessModel& model);
+// The burn-in an output of a fitted model runs: the compressing one, until its count is stationary
+// under the boost and as long again to release it, where the model's fit used it; none otherwise.
+sample::CompressionOptions output_compression(const model::ShapeProcessModel& model);
 
 // The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.
 // Its elements near an edge see neighbours across the seam, as in a larger drawing; the

@@ -415,9 +415,6 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     return worst;
   };
   double last_r_hat = 1.0;
-  // Chains started at a packed exemplar hold it and are not meant to mix: their R-hat reflects
-  // the rare element one of them lost (dashes-rows 1.39), and is not asked of them.
-  const bool held_start = !options.sampling.start.empty();
   const auto worst_r_hat = [&](const StatisticsMoments& m) {
     double worst = 1.0;
     for (std::size_t k : free)
@@ -536,8 +533,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     // cannot give; a sample grown to more chains has its disagreement in its errors (the
     // multi-chain effective size, from 7 or more degrees of freedom) and its test passes on 20
     // effective observations.
-    const bool chains_agree =
-        here.worst_r_hat <= kMaxRHat || held_start || m.chains() > options.sampling.chains;
+    const bool chains_agree = here.worst_r_hat <= kMaxRHat || m.chains() > options.sampling.chains;
     if (g.worst_z <= r.tolerance && chains_agree && effective >= kMinEffectiveSize) {
       r.converged = true;
       // The estimate: the maximum of the likelihood as the final sample approximates it

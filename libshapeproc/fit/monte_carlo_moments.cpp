@@ -72,7 +72,11 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sampler_options.observe_every = setting.observe_every;
   sampler_options.fixed = setting.fixed;
   sampler_options.free_region = setting.free_region;
-  sampler_options.start = setting.start;
+  if (setting.compress) {
+    core::check(setting.burn_in >= 4, "mle", "the compressing burn-in needs a burn-in of 4 steps");
+    sampler_options.compression.enabled = true;
+    sampler_options.compression.steps = setting.burn_in / 4;  // then as long to release
+  }
   sampler_options.observe_region = setting.observe_region;
   sampler_options.geometry = setting.geometry;
   const bool windowed = !setting.observe_region.isEmpty();

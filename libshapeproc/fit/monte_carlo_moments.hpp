@@ -31,10 +31,10 @@ struct ChainsSetting {
   // (sample::SamplerOptions); empty: none.
   std::vector<geometry::Element> fixed;
   geometry::Box3 free_region;
-  // Elements every chain starts from (sample::SamplerOptions::start); empty: the empty
-  // configuration. Maximum-likelihood fits start at the exemplar, a state of high density: a
-  // packed exemplar is then a state the chains hold rather than one they must find.
-  std::vector<geometry::Element> start;
+  // Every chain starts empty; with `compress`, the first half of its burn-in is the compressing
+  // burn-in (sample/compression.hpp: a phase at an annealed β, then its release), so that a
+  // packed exemplar's density is reached from no position of the exemplar.
+  bool compress = false;
   // The stationary window (docs/fit.md, "Stationary window"): when set, the chains sample a
   // domain larger than the exemplar's window, and the statistics observed are those of the
   // elements in this region (the window) and their pairs there, t_W, while the model's density

@@ -188,7 +188,7 @@ void BirthDeathChain::propose_birth() {
   xi.shape = random_shape(xi.category);  // by class weight: the birth ratio is unchanged
   const double log_lambda =
       t_.log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
-  const double log_ratio = log_lambda + log_measure_categories_ - std::log(n + 1.0);
+  const double log_ratio = log_lambda + log_boost_ + log_measure_categories_ - std::log(n + 1.0);
   if (std::isfinite(log_lambda) && std::log(random_.uniform()) < log_ratio) {
     state_.add(xi, local_term_, links_);
     log_density_ += log_lambda;
@@ -204,7 +204,8 @@ void BirthDeathChain::propose_death() {
   const Element& x = state_.at(slot);
   const double log_lambda =
       t_.log_beta[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
-  const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories_ - log_lambda;
+  const double log_ratio =
+      std::log(static_cast<double>(n)) - log_measure_categories_ - log_lambda - log_boost_;
   if (std::log(random_.uniform()) < log_ratio) {
     log_density_ -= log_lambda;
     state_.remove(slot);

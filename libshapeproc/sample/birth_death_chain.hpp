@@ -100,6 +100,10 @@ class BirthDeathChain {
   // probability.
   void step();
 
+  // The compressing burn-in (compression.hpp): births and deaths see β_c e^boost instead of β_c
+  // (0: the model itself).
+  void set_log_boost(double boost) { log_boost_ = boost; }
+
   int size() const { return state_.size(); }  // fixed elements included
   int start_kept() const { return start_kept_; }
   int start_left_out() const { return start_left_out_; }
@@ -132,6 +136,7 @@ class BirthDeathChain {
   std::vector<Link> links_;              // of the last proposal
   double local_term_ = 0.0;              // of the last proposal
   double log_density_ = 0.0;             // unnormalised, tracked incrementally
+  double log_boost_ = 0.0;               // compression.hpp; 0 at the model
   int fixed_ = 0;                        // fixed elements, at ranks 0 … fixed_ − 1
   int start_kept_ = 0, start_left_out_ = 0;
   MoveCounts moves_;

@@ -27,7 +27,12 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
-  core::check_non_negative("sample", "the held steps per element", options_.held_steps_per_element);
+  core::check(
+      options_.iterations <= 0 || !options_.compression.enabled ||
+          (options_.compression.steps > 0 && 2 * options_.compression.steps < options_.iterations),
+      "sample",
+      "with given steps the compressing burn-in needs its own steps, fewer than half of "
+      "them");
   core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
               "trace and observation intervals must be >= 0");
 
@@ -62,13 +67,6 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
 
 ShapeProcessSampler::~ShapeProcessSampler() = default;
 
-long long held_steps(const SamplerOptions& options) {
-  if (options.iterations > 0 || options.start.empty() || !(options.held_steps_per_element > 0))
-    return 0;
-  return std::max<long long>(
-      1, std::llround(options.held_steps_per_element * static_cast<double>(options.start.size())));
-}
-
 double ShapeProcessSampler::shift_radius() const { return region_->shift_radius; }
 
 double ShapeProcessSampler::reach() const { return tables_->reach; }
@@ -80,19 +78,26 @@ bool ShapeProcessSampler::torus_smaller_than_reach() const {
 
 SampleResult ShapeProcessSampler::sample(core::Random& random,
                                          const synthesis::ChainControl& control) const {
+  // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain.
   if (options_.decompose && options_.fixed.empty() && options_.free_region.isEmpty() &&
-      options_.observe_every == 0 && decomposable(domain_, reach()))
+      options_.observe_every == 0 && !options_.compression.enabled &&
+      decomposable(domain_, reach()))
     return sample_by_cells(model_, *tables_, *region_, options_, random, control);
   BirthDeathChain chain(*tables_, *region_, random, options_.fixed, options_.start);
   SampleResult result;
-  const long long held = held_steps(options_);
-  const bool automatic = options_.iterations <= 0 && held == 0;
-  const long long total = automatic ? 0 : held > 0 ? held : options_.iterations;
+  const bool automatic = options_.iterations <= 0;
+  const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
   StationarityRule rule(options_.max_iterations, options_.start.empty());
+  CompressionSchedule compression(options_.compression, options_.max_iterations);
   long long step = 1;
   for (;; ++step) {
+    chain.set_log_boost(compression.log_boost());
     chain.step();
+    if (!compression.done()) {
+      compression.after_step(step, chain.size());
+      if (compression.compressed_for() == step) result.compressed_count = chain.size();
+    }
     if (options_.observe_every > 0 && step % options_.observe_every == 0) {
       if (options_.observe_region.isEmpty()) {
         result.observations.push_back(chain.statistics());
@@ -114,11 +119,18 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
       if (step >= total) break;
       continue;
     }
-    const StationarityRule::Verdict verdict = rule.after_step(step, chain.size());
+    if (!compression.done()) {
+      if (step < options_.max_iterations) continue;
+      result.stationary = false;
+      break;
+    }
+    const StationarityRule::Verdict verdict =
+        rule.after_step(step - compression.finished_at(), chain.size());
     if (verdict == StationarityRule::Verdict::keep_going) continue;
     result.stationary = verdict == StationarityRule::Verdict::stationary;
     break;
   }
+  result.compression_steps = compression.finished_at();
   result.iterations = step;
   result.trend = rule.last_check();
   if (automatic && control.progress) control.progress(step, step);
@@ -141,9 +153,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
   record.set_domain(domain_);
-  record.iterations = options_.iterations > 0    ? std::to_string(options_.iterations)
-                      : held_steps(options_) > 0 ? "held"
-                                                 : "stationary";
+  record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius())}};
   record.steps = sampled.iterations;
@@ -159,6 +169,13 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                                                     " then " + core::format_general(t.second, 6) +
                                                     ", standard error of the change " +
                                                     core::format_general(t.standard_error, 3));
+  }
+  if (options_.compression.enabled) {
+    record.options.emplace_back("burn_in", "compressing");
+    out.counters.emplace_back("compressing burn-in steps",
+                              std::to_string(sampled.compression_steps));
+    out.counters.emplace_back("elements after compression",
+                              std::to_string(sampled.compressed_count));
   }
   if (sampled.cells > 0) {
     out.counters.emplace_back("cells", std::to_string(sampled.cells));

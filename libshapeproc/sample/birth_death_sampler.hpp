@@ -20,6 +20,7 @@
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/sample/compression.hpp"
 #include "libshapeproc/sample/move_counts.hpp"
 #include "libshapeproc/sample/stationarity.hpp"
 #include "libshapeproc/synthesis/synthesizer.hpp"
@@ -62,10 +63,10 @@ struct SamplerOptions {
   // measurement and thresholds on the same domain (ChainGeometry): shared instead of built
   // again. Empty: built.
   std::shared_ptr<const ChainGeometry> geometry;
-  // With a start and automatic steps: stop after this many steps per start element kept, the
-  // time at which the model's fit matched its exemplar from the same kind of start
-  // (fit::held_steps_per_element); 0: the stationarity rule.
-  double held_steps_per_element = 0.0;
+  // The compressing burn-in (compression.hpp): from empty (or `start`), a phase at an annealed β
+  // before the chain samples the model. With given `iterations` they include it (its steps must
+  // be fewer); with the automatic rule, the rule starts once it is over.
+  CompressionOptions compression;
   // Parallel sampling of this one output by domain decomposition (domain_decomposition.hpp) on
   // `threads` threads (0: one per core), where the domain is large enough to cut into cells of
   // the model's reach; otherwise, and with fixed elements, a free region or observations, the
@@ -73,10 +74,6 @@ struct SamplerOptions {
   bool decompose = false;
   int threads = 0;
 };
-
-// The steps of a chain that stops at SamplerOptions::held_steps_per_element: that many per start
-// element, at least 1; 0 when it does not (steps given, no start, or none per element).
-long long held_steps(const SamplerOptions& options);
 
 struct SampleResult {
   geometry::Scene scene;  // the model's shapes, the sampled elements, the domain's box as window
@@ -89,6 +86,10 @@ struct SampleResult {
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
   int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
+  // The compressing burn-in's steps and the count it reached at the end of its first phase (0
+  // without one).
+  long long compression_steps = 0;
+  int compressed_count = 0;
   // The automatic rule's last check: the mean counts of the two quarters it compared and the
   // standard error of their difference (zero with --iterations).
   CountTrend trend;

@@ -266,9 +266,8 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   } else {
     sweep(0, true);
   }
-  const long long held = held_steps(options);  // a packed exemplar's repeat: the fit's horizon
-  const bool automatic = options.iterations <= 0 && held == 0;
-  const long long total = automatic ? 0 : held > 0 ? held : options.iterations;
+  const bool automatic = options.iterations <= 0;
+  const long long total = automatic ? 0 : options.iterations;
   int done = 0;
   for (int number = 1;; ++number) {
     sweep(number, false);

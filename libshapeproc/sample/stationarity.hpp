@@ -27,7 +27,7 @@ class StationarityRule {
  public:
   // With `run_on`, a chain found stationary at step T stops at 2T (at most max_steps): for chains
   // that sample the model from empty. Chains from given elements stop at T (a packed exemplar's
-  // repeat does not use the rule: SamplerOptions::held_steps_per_element, docs/sample.md).
+  // compressing burn-in starts the rule at its end, compression.hpp).
   explicit StationarityRule(long long max_steps, bool run_on = false)
       : max_steps_(max_steps), run_on_(run_on) {}
 

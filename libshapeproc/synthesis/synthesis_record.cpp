@@ -28,7 +28,6 @@ std::string SynthesisRecord::summary() const {
   if (chains > 1) s << ", chain " << chain;
   s << ", " << steps << " steps";
   if (iterations == "stationary") s << " (until stationary)";
-  if (iterations == "held") s << " (the fit's steps per element from its exemplar)";
   s << ", " << geometry::to_string(boundary);
   if (!domain_file.empty()) s << ", domain " << domain_file;
   if (!intensity_file.empty()) s << ", intensity map " << intensity_file;

@@ -26,8 +26,7 @@ struct SynthesisRecord {
   // Files the run read (("exemplar", path), ("model", path)) and the method's options as text,
   // in a fixed order ("shift_probability" = "0.333..."; nested ones as "fit.quantiles").
   std::vector<std::pair<std::string, std::string>> inputs, options;
-  // The step budget as asked for: a count, "stationary" (the automatic rule) or "held" (the
-  // fit's steps per element from its exemplar, sample::SamplerOptions::held_steps_per_element).
+  // The step budget as asked for: a count or "stationary" (the automatic rule).
   std::string iterations = "stationary";
   long long steps = 0;     // steps the chain made
   bool stationary = true;  // false when an automatic stopping rule gave up

@@ -541,10 +541,9 @@ TEST(Fit, ASampleGrownToMoreChainsConvergesOnItsEffectiveSizeWhateverItsRHat) {
   EXPECT_GT(estimator["worst_r_hat"].get<double>(), 1.1);
 }
 
-// A packed exemplar's chains start at it, and the fit records the steps per element at which it
-// matched it: the middle of the observed stretch, (burn-in + steps / 2) / n, which its outputs
-// from the exemplar repeated run for. A loose exemplar's chains start empty: nothing recorded.
-TEST(Fit, APackedExemplarRecordsTheStepsPerElementAtWhichItsFitHeldIt) {
+// A packed exemplar's chains start empty and compress in their burn-in, and the fit records it
+// so that its outputs run the same burn-in; a loose exemplar's chains run a plain one.
+TEST(Fit, APackedExemplarsChainsCompressFromEmpty) {
   const Scene dashes = io::read_scene(testing::data_path("svg/dashes-rows.svg"), {});
   FitOptions options;
   options.quadrature = 8;
@@ -554,15 +553,16 @@ TEST(Fit, APackedExemplarRecordsTheStepsPerElementAtWhichItsFitHeldIt) {
   mle.sampling.steps = 3000;
   const FitResult packed =
       refine_to_maximum_likelihood(dashes, options, fit_shape_process(dashes, options), mle);
-  ASSERT_TRUE(starts_at_exemplar(packed.model));
-  EXPECT_DOUBLE_EQ(held_steps_per_element(packed.model),
-                   2500.0 / static_cast<double>(dashes.elements.size()));
+  EXPECT_TRUE(compressing_burn_in(packed.model));
+  EXPECT_TRUE(output_compression(packed.model).enabled);
+  const nlohmann::json record = nlohmann::json::parse(packed.model.fit_json);
+  EXPECT_EQ(record["estimator"]["chains_start"], "empty");
 
   const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
   const FitResult loose =
       refine_to_maximum_likelihood(dots, options, fit_shape_process(dots, options), mle);
-  EXPECT_FALSE(starts_at_exemplar(loose.model));
-  EXPECT_EQ(held_steps_per_element(loose.model), 0.0);
+  EXPECT_FALSE(compressing_burn_in(loose.model));
+  EXPECT_FALSE(output_compression(loose.model).enabled);
 }
 
 }  // namespace

@@ -133,43 +133,60 @@ TEST(BirthDeath, FromAFullStartTheChainReachesItsTarget) {
   EXPECT_NEAR(mean, 50.0, 4.0 * std::sqrt(50.0 / chains));
 }
 
-// A start and held steps per element (a packed exemplar's repeat, fit::held_steps_per_element):
-// exactly that many steps per start element, recorded as "held", in the whole-domain chain and
-// in the decomposed one; given steps take precedence, and without a start the automatic rule
-// runs (at least its 20,000 steps).
-TEST(BirthDeath, AHeldStartRunsTheFitsStepsPerStartElement) {
-  const model::ShapeProcessModel m = testing::point_model(0.02, {3.0, 3.0}, {1.0});
-  const geometry::Domain domain =
-      geometry::Domain::from_sizes({200, 200}, geometry::Boundary::torus);
-  SamplerOptions options;
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 20; ++x) options.start.push_back({0, 0, Vec3(5 + 10 * x, 5 + 10 * y, 0)});
-  options.held_steps_per_element = 12.25;
-  EXPECT_EQ(held_steps(options), 4900);
-  const ShapeProcessSampler sampler(m, domain, options);
-  core::Random random(2);
-  EXPECT_EQ(sampler.synthesize(random, {}).record.steps, 4900);
-  core::Random again(2);
-  EXPECT_EQ(sampler.synthesize(again, {}).record.iterations, "held");
-  SamplerOptions decomposed = options;
-  decomposed.decompose = true;
-  decomposed.threads = 1;
-  core::Random cells(2);
-  const SampleResult by_cells = sample_shape_process(m, domain, decomposed, cells);
-  EXPECT_GT(by_cells.cells, 1);
-  EXPECT_GE(by_cells.iterations, 4900);
-  EXPECT_LT(by_cells.iterations, 4900 + 4900);  // stops at the first sweep past the horizon
+// The compressing burn-in's schedule, exactly: B for its first phase, then B falling linearly to
+// 0 over as many steps, then done; off, it is done from the start.
+TEST(Compression, TheBoostHoldsThenFallsLinearly) {
+  CompressionOptions c;
+  c.enabled = true;
+  c.steps = 10;
+  c.log_boost = 2.0;
+  CompressionSchedule schedule(c, 1000);
+  std::vector<double> boosts;
+  for (long long step = 1; !schedule.done(); ++step) {
+    boosts.push_back(schedule.log_boost());
+    schedule.after_step(step, 0);
+  }
+  ASSERT_EQ(boosts.size(), 20u);
+  for (std::size_t k = 0; k < 11; ++k) EXPECT_DOUBLE_EQ(boosts[k], 2.0) << k;
+  for (std::size_t k = 11; k < 20; ++k) EXPECT_DOUBLE_EQ(boosts[k], 2.0 * (1.0 - (k - 10) / 10.0));
+  EXPECT_EQ(schedule.finished_at(), 20);
+  EXPECT_EQ(schedule.compressed_for(), 10);
+  EXPECT_TRUE(CompressionSchedule({}, 1000).done());
+  c.log_boost = -1.0;
+  EXPECT_THROW(CompressionSchedule(c, 1000), core::ArgumentError);
+}
 
-  SamplerOptions given = options;
-  given.iterations = 300;
-  EXPECT_EQ(held_steps(given), 0);
-  EXPECT_EQ(sample_with_seed(m, domain, given, 2).iterations, 300);
-  SamplerOptions empty = options;
-  empty.start.clear();
-  EXPECT_EQ(held_steps(empty), 0);
-  EXPECT_GE(sample_with_seed(m, domain, empty, 2).iterations, 20000);
-  options.held_steps_per_element = -1.0;
-  EXPECT_THROW(ShapeProcessSampler(m, domain, options), core::ArgumentError);
+// Hard discs of diameter 9.5 at a large β on a 100 x 100 torus: from empty the plain chain jams
+// near random sequential filling; the compressing burn-in packs far more, with no hard-core
+// violation, records its steps, and the chain after it is the model's (the same seed, the same
+// output). Given steps need the burn-in's own, fewer than half of them.
+TEST(BirthDeath, TheCompressingBurnInPacksPastRandomFilling) {
+  const model::ShapeProcessModel m = testing::point_model(1e6, {9.5, 9.5}, {1.0});
+  const geometry::Domain domain =
+      geometry::Domain::from_sizes({100, 100}, geometry::Boundary::torus);
+  SamplerOptions plain;
+  plain.iterations = 60000;
+  SamplerOptions compressed = plain;
+  compressed.compression.enabled = true;
+  compressed.compression.steps = 20000;
+  const SampleResult a = sample_with_seed(m, domain, plain, 3);
+  const SampleResult b = sample_with_seed(m, domain, compressed, 3);
+  EXPECT_GT(b.scene.elements.size(), a.scene.elements.size() + 5);
+  EXPECT_EQ(b.compression_steps, 40000);
+  EXPECT_GT(b.compressed_count, 0);
+  EXPECT_EQ(testing::hard_core_violations(b.scene, m), std::vector<std::string>{});
+  const SampleResult again = sample_with_seed(m, domain, compressed, 3);
+  ASSERT_EQ(again.scene.elements.size(), b.scene.elements.size());
+  for (std::size_t i = 0; i < b.scene.elements.size(); ++i)
+    EXPECT_EQ(again.scene.elements[i].position, b.scene.elements[i].position);
+  compressed.compression.steps = 30000;
+  EXPECT_THROW(ShapeProcessSampler(m, domain, compressed), core::ArgumentError);
+  // Automatic steps: the rule starts once the burn-in is over.
+  SamplerOptions automatic;
+  automatic.compression.enabled = true;
+  const SampleResult c = sample_with_seed(m, domain, automatic, 4);
+  EXPECT_GT(c.compression_steps, 0);
+  EXPECT_GT(c.iterations, c.compression_steps);
 }
 
 TEST(BirthDeath, HardCoreIsNeverViolated) {

@@ -22,9 +22,9 @@ namespace shapeproc::cli {
 
 namespace {
 
-const std::vector<std::string> kMethods = {"shape-process", "ma-em",          "ijiri",
-                                           "davison",       "centroid",       "hausdorff",
-                                           "hybrid-ma-em",  "hybrid-davison", "hybrid-ijiri"};
+const std::vector<std::string> kMethods = {
+    "tile",     "shape-process", "ma-em",        "ijiri",          "davison",
+    "centroid", "hausdorff",     "hybrid-ma-em", "hybrid-davison", "hybrid-ijiri"};
 
 std::vector<std::string> parse_methods(const std::string& list) {
   std::vector<std::string> out;
@@ -32,7 +32,7 @@ std::vector<std::string> parse_methods(const std::string& list) {
   for (const std::string& name : io::split(list, ',')) {
     if (std::find(kMethods.begin(), kMethods.end(), name) == kMethods.end())
       throw core::UsageError("--methods: unknown method '" + name +
-                             "' (expected shape-process, ma-em, ijiri, davison, centroid, "
+                             "' (expected tile, shape-process, ma-em, ijiri, davison, centroid, "
                              "hausdorff, hybrid-ma-em, hybrid-davison or hybrid-ijiri)");
     if (std::find(out.begin(), out.end(), name) != out.end())
       throw core::UsageError("--methods: '" + name + "' is given twice");
@@ -72,7 +72,7 @@ int run_arguments(const std::vector<std::string>& arguments, std::ostream& out, 
 
 void add_compare_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   struct CompareArguments {
-    std::string exemplar, directory, size, methods = "shape-process,ma-em,ijiri,davison";
+    std::string exemplar, directory, size, methods = "tile,shape-process,ma-em,ijiri,davison";
     std::uint64_t seed = 1;
     ReaderFlags reader;
     MetricFlags metrics;
@@ -87,12 +87,14 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
   command->add_option("--size", args->size, "output domain W,H (2D) or W,H,D (3D)")->required();
   command->add_option("--seed", args->seed, "seed of every method")->capture_default_str();
   command
-      ->add_option("--methods", args->methods,
-                   "comma-separated: shape-process, ma-em, ijiri, davison, centroid, hausdorff, "
-                   "hybrid-ma-em, hybrid-davison, hybrid-ijiri (centroid and hausdorff: the shape "
-                   "process with that distance; hausdorff costs about 7.6 ms per sampler step and "
-                   "is left out of the defaults; hybrid-M: M's output, then the shape-process "
-                   "sampler)")
+      ->add_option(
+          "--methods", args->methods,
+          "comma-separated: tile (the exemplar repeated: the baseline), shape-process, ma-em, "
+          "ijiri, davison, centroid, hausdorff, "
+          "hybrid-ma-em, hybrid-davison, hybrid-ijiri (centroid and hausdorff: the shape "
+          "process with that distance; hausdorff costs about 7.6 ms per sampler step and "
+          "is left out of the defaults; hybrid-M: M's output, then the shape-process "
+          "sampler)")
       ->capture_default_str();
   args->reader.add_to(*command);
   args->metrics.add_to(*command);

@@ -65,6 +65,13 @@ void print_report(const evaluation::FidelityReport& r, const evaluation::Fidelit
   if (!std::isnan(r.class_p_value))
     out << "shape classes: chi-square " << g(r.class_chi_square) << " on " << r.class_degrees
         << " degree(s) of freedom, p = " << g(r.class_p_value) << '\n';
+  out << "novelty: patch copy share " << g(r.patch_copy_share, 2) << " (chance "
+      << g(r.patch_copy_chance, 2) << "), largest copied patch " << g(r.largest_copied_patch, 2)
+      << "; "
+      << (r.lattice_exemplar ? "a lattice exemplar, its own repeat its only faithful arrangement"
+                             : std::to_string(r.outputs_repeating) + " of " +
+                                   std::to_string(r.outputs) + " output(s) repeat the exemplar")
+      << '\n';
 }
 
 int run_fidelity(const FidelityArguments& args, const std::vector<std::string>& arguments,

@@ -106,9 +106,12 @@ struct SampleFlags {
   int run(const model::ShapeProcessModel& model, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out,
           const geometry::Scene* start_tile = nullptr) const;
-  // The same for any synthesis method: its chains, their outputs, pictures and traces.
+  // The same for any synthesis method: its chains, their outputs, pictures and traces. With
+  // `exemplar_density` (elements per unit area or volume), a chain that ends below 0.9 of it is
+  // told of with the count it reached.
   int run(const synthesis::Synthesizer& synthesizer, const std::string& output,
-          synthesis::SynthesisRecord record, std::ostream& out) const;
+          synthesis::SynthesisRecord record, std::ostream& out,
+          double exemplar_density = 0.0) const;
 };
 
 // A JSON object's leaves as (prefix.key, text) pairs, in key order (for a record's options).

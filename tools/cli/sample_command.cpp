@@ -238,7 +238,12 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   options.threads = std::max(1, core::loop_threads(threads, 1 << 20) / chains_at_once());
   if (start_tile) {
     options.start = geometry::tile_over(*start_tile, where.box());
-    options.held_steps_per_element = fit::held_steps_per_element(model);
+    out << "start: the exemplar tiled over the output (" << options.start.size()
+        << " elements): the output begins as a copy of the exemplar, which the chain then moves\n";
+  } else {
+    options.compression = fit::output_compression(model);
+    if (options.compression.enabled && options.iterations > 0)
+      options.compression.steps = options.iterations / 4;
   }
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
@@ -246,7 +251,11 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
         << core::format_general(2 * sampler.reach(), 4)
         << "): elements meet their own images, and pairs seen at a nearer image may be refused; "
            "give a larger --size\n";
-  return run(sampler, output, std::move(record), out);
+  // The count to expect, on a plain box (a mask or an intensity map changes it).
+  const double density = domain_file.empty() && intensity.empty()
+                             ? io::recorded_exemplar_density(model).value_or(0.0)
+                             : 0.0;
+  return run(sampler, output, std::move(record), out, density);
 }
 
 sample::SamplerOptions SampleFlags::sampler_options() const {
@@ -260,7 +269,8 @@ sample::SamplerOptions SampleFlags::sampler_options() const {
 }
 
 int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::string& output,
-                     synthesis::SynthesisRecord record, std::ostream& out) const {
+                     synthesis::SynthesisRecord record, std::ostream& out,
+                     double exemplar_density) const {
   synthesis::ChainOptions chains_options;
   chains_options.chains = chains;
   chains_options.threads = threads;
@@ -306,6 +316,13 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
                       : "warning: the energy was still falling after ")
           << result.record.steps << (sampler ? " steps" : " iterations")
           << "; the output may not be at equilibrium (give --iterations)\n";
+    }
+    const double wanted = exemplar_density * result.scene.window_measure();
+    if (wanted > 0 && static_cast<double>(result.scene.elements.size()) < 0.9 * wanted) {
+      out << "warning: the chain reached " << result.scene.elements.size() << " elements where "
+          << "the exemplar's density gives " << core::format_general(wanted, 4) << " (x"
+          << core::format_fixed(static_cast<double>(result.scene.elements.size()) / wanted, 2)
+          << "): the model does not reach its exemplar's packing from empty\n";
     }
     out << "wrote " << file;
     if (!png.empty()) out << " and " << suffixed(png, c, chains);

@@ -52,6 +52,37 @@ std::string boundary_text(const metrics::SceneStatistics& s) {
                                                   : "open (no edge correction)";
 }
 
+void print_novelty(const metrics::Novelty& n, const std::string& unit, std::ostream& out) {
+  const metrics::CopyMeasures &o = n.output, &c = n.chance;
+  out << "novelty     against the exemplar tiled (tolerance " << format_general(n.tolerance, 3)
+      << ' ' << unit << "; chance: the same elements placed at random)\n";
+  out << "            copy share " << format_fixed(o.copy, 2) << " (chance "
+      << format_fixed(c.copy, 2) << "), patch copy share " << format_fixed(o.patch, 2)
+      << " (chance " << format_fixed(c.patch, 2) << "), largest copied patch "
+      << format_fixed(o.largest_patch, 2) << " (chance " << format_fixed(c.largest_patch, 2)
+      << "), repetition at the period " << format_fixed(o.repetition, 2) << " (chance "
+      << format_fixed(c.repetition, 2) << ")\n";
+  out << "            "
+      << (n.lattice_exemplar ? "a lattice exemplar: its own repeat is its only faithful arrangement"
+          : n.repeats_exemplar ? "repeats the exemplar"
+                               : "a new arrangement")
+      << '\n';
+}
+
+nlohmann::json novelty_json(const metrics::Novelty& n) {
+  auto measures = [](const metrics::CopyMeasures& m) {
+    return nlohmann::json{{"copy", m.copy},
+                          {"patch", m.patch},
+                          {"largest_patch", m.largest_patch},
+                          {"repetition", m.repetition}};
+  };
+  return {{"tolerance", n.tolerance},
+          {"output", measures(n.output)},
+          {"chance", measures(n.chance)},
+          {"lattice_exemplar", n.lattice_exemplar},
+          {"repeats_exemplar", n.repeats_exemplar}};
+}
+
 void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
                       const std::string& reference, std::ostream& out) {
   const metrics::SceneStatistics& s = e.statistics;
@@ -130,6 +161,7 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
         << format_general(n.radius) << ' ' << unit << ", " << format_fixed(n.mean_neighbours, 1)
         << " neighbours, " << n.output_centres << " centres)\n";
   }
+  if (e.novelty) print_novelty(*e.novelty, unit, out);
   out << "time        " << format_fixed(s.seconds + 0.0, 3) << " s\n";
 }
 
@@ -243,6 +275,7 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
     e.comparison = metrics::compare(e.statistics, *reference_statistics);
     e.neighbourhood = metrics::average_neighbourhood_distance(
         scene.scene, scene.boundary, reference->scene, reference->boundary, flags.neighbourhood);
+    e.novelty = metrics::measure_novelty(reference->scene, scene.scene, scene.boundary);
   }
   return e;
 }
@@ -300,6 +333,7 @@ nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e)
                       {"pair_correlation", correlation},
                       {"seconds", s.seconds}};
   if (e.comparison) j["w1_scale"] = e.comparison->scale;
+  if (e.novelty) j["novelty"] = novelty_json(*e.novelty);
   if (e.neighbourhood) {
     const metrics::NeighbourhoodDistance& n = *e.neighbourhood;
     j["neighbourhood_distance"] = {{"mean", n.mean},

@@ -9,6 +9,7 @@
 
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/metrics/neighbourhood_distance.hpp"
+#include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/synthesis/synthesis_record.hpp"
 #include "tools/cli/common.hpp"
@@ -52,6 +53,7 @@ struct Evaluation {
   metrics::SceneStatistics statistics;
   std::optional<metrics::Comparison> comparison;
   std::optional<metrics::NeighbourhoodDistance> neighbourhood;
+  std::optional<metrics::Novelty> novelty;  // against a reference
 };
 
 // Statistics of `scene`; against a reference, at the reference's range and compared with it.

@@ -11,6 +11,7 @@
 #include "libshapeproc/compare/neighbourhood_em.hpp"
 #include "libshapeproc/compare/region_growing.hpp"
 #include "libshapeproc/compare/seed_and_grow.hpp"
+#include "libshapeproc/compare/tiled_exemplar.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -102,9 +103,10 @@ void add_synthesize_command(CLI::App& app, Action& action,
       ->add_option("--method", args->method,
                    "shape-process, ma-em (the neighbourhood EM of Ma et al. 2011), davison "
                    "(region growing, Davison et al. 2018), ijiri (seed-and-grow, Ijiri et al. "
-                   "2008) or hybrid (--start-from's output, then the shape-process sampler at the "
-                   "fitted model)")
-      ->check(CLI::IsMember({"shape-process", "ma-em", "davison", "ijiri", "hybrid"}))
+                   "2008), hybrid (--start-from's output, then the shape-process sampler at the "
+                   "fitted model) or tile (the exemplar repeated: the baseline every method is "
+                   "compared with)")
+      ->check(CLI::IsMember({"shape-process", "ma-em", "davison", "ijiri", "hybrid", "tile"}))
       ->capture_default_str();
   CLI::Option* start_from =
       command
@@ -130,11 +132,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
   CLI::Option* start =
       command
           ->add_option("--start", args->start,
-                       "shape-process: where each chain starts: exemplar (the fitted exemplar "
-                       "repeated over the output, so that a packed drawing is held rather than "
-                       "sought; it runs as many steps per element as the fit's chains did "
-                       "from the exemplar, or until stationary), empty, or auto (where the fit's "
-                       "chains started: at a packed exemplar, else empty)")
+                       "shape-process: where each chain starts: empty (with the compressing "
+                       "burn-in where the model's fit used it), or exemplar (the exemplar tiled "
+                       "over the output: the output begins as a copy; auto is empty)")
           ->check(CLI::IsMember({"auto", "exemplar", "empty"}))
           ->capture_default_str();
   args->fit_only = options_since(*command, before);
@@ -190,6 +190,15 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.command = "synthesize";
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
+      if (args->method == "tile") {
+        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
+        args->sample.check(args->output, exemplar.dimension);
+        args->sample.check_budget(exemplar);
+        const compare::TiledExemplar method(exemplar, args->sample.domain(exemplar.dimension));
+        out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
+        record_reader(args->reader, record);
+        return args->sample.run(method, args->output, std::move(record), out);
+      }
       if (ijiri) {
         if (args->sample.iterations > 0)
           throw core::UsageError(
@@ -293,8 +302,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.options = flatten_options("fit", args->fit.to_json());
       record_reader(args->reader, record);
       if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
-      const bool at_exemplar =
-          args->start == "auto" ? fit::starts_at_exemplar(fitted.model) : args->start == "exemplar";
+      const bool at_exemplar = args->start == "exemplar";
       record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
       args->sample.verbosity.stage("sampling");
       return args->sample.run(fitted.model, args->output, std::move(record), out,

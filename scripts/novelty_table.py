@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""The novelty table (docs/results/novelty.md): every exemplar of the folders given, synthesised as
+a user would (`shapeproc synthesize`, defaults, an output of 3 x 3 exemplars' size), judged by
+`shapeproc report` against its exemplar. One row per exemplar and seed:
+
+  births and deaths accepted (of those proposed) by the output's chain; copy share and patch copy
+  share with their chance levels, the largest copied patch and the repetition at the exemplar's
+  period (docs/metrics.md, "Novelty"); density against the exemplar's; the class mix's p; overlaps;
+  order; seconds of the whole synthesize command (fit included); the report's failed checks.
+
+Usage: python3 scripts/novelty_table.py [--seeds 1,2,3,4] [--timeout 120] [--tile] OUT.md DIR...
+Folders of .svg files; --tile reads them as seamless tiles (Hero Patterns). The pictures of each
+output are kept in OUT's folder under novelty/ (PNG).
+"""
+import argparse
+import datetime
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SHAPEPROC = os.environ.get("SHAPEPROC", os.path.join(ROOT, "build", "tools", "shapeproc"))
+
+
+def run(args, timeout):
+    start = time.monotonic()
+    p = subprocess.run([SHAPEPROC] + args, capture_output=True, text=True, timeout=timeout)
+    return p, time.monotonic() - start
+
+
+def window_of(path, tile):
+    p, _ = run(["info", path, "--json"] + (["--tile"] if tile else []), 60)
+    if p.returncode != 0:
+        raise RuntimeError(p.stderr.strip().splitlines()[-1] if p.stderr else "info failed")
+    w = json.loads(p.stdout)["window"]
+    return [hi - lo for lo, hi in zip(w["min"], w["max"])]
+
+
+def counter(text, name):
+    m = re.search(name + r"\D*(\d+)/(\d+)", text)
+    return f"{int(m.group(1)):,} / {int(m.group(2)):,}" if m else "-"
+
+
+def verdict(entry, check):
+    for v in entry.get("verdicts", []):
+        if v["check"] == check:
+            return v
+    return None
+
+
+def row(path, seed, args, pictures):
+    name = os.path.splitext(os.path.basename(path))[0]
+    size = window_of(path, args.tile)
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "out.svg")
+        png = os.path.join(pictures, f"{name}-seed{seed}.png")
+        reader = ["--tile"] if args.tile else []
+        command = ["synthesize", path, *reader, "--size", ",".join(f"{3 * s:g}" for s in size),
+                   "--seed", str(seed), "-o", out, "--png", png, "--force"]
+        try:
+            p, seconds = run(command, args.timeout)
+        except subprocess.TimeoutExpired:
+            return f"| {name} | {seed} | timed out after {args.timeout} s |"
+        if p.returncode != 0:
+            last = (p.stderr.strip().splitlines() or ["?"])[-1]
+            return f"| {name} | {seed} | failed: {last} |"
+        q, _ = run(["report", path, out, *reader, "-o", os.path.join(work, "report")], 600)
+        if q.returncode != 0:
+            return f"| {name} | {seed} | report failed: {(q.stderr.strip().splitlines() or ['?'])[-1]} |"
+        with open(os.path.join(work, "report", "metrics.json")) as f:
+            entry = json.load(f)["outputs"][0]
+    n = entry.get("novelty", {})
+    o, c = n.get("output", {}), n.get("chance", {})
+    ratio = sum(x["count"] for x in entry["categories"]) / max(1e-9, sum(
+        x["count"] / x["intensity_ratio"] for x in entry["categories"] if x.get("intensity_ratio")))
+    mix = verdict(entry, "shape mix")
+    order = verdict(entry, "order")
+    failed = [v["check"] for v in entry.get("verdicts", []) if v["outcome"] == "fail"]
+    lattice = " (lattice)" if n.get("lattice_exemplar") else ""
+    fmt = lambda v: f"{v:.2f}" if isinstance(v, (int, float)) else "-"
+    return (f"| {name} | {seed} | {counter(p.stdout, 'births accepted')} | {counter(p.stdout, 'deaths')} "
+            f"| {fmt(o.get('copy'))} ({fmt(c.get('copy'))}) | {fmt(o.get('patch'))} ({fmt(c.get('patch'))}){lattice} "
+            f"| {fmt(o.get('largest_patch'))} | {fmt(o.get('repetition'))} ({fmt(c.get('repetition'))}) "
+            f"| ×{ratio:.2f} | {mix['shown'] if mix else '-'} | {entry['collisions']['pairs']} "
+            f"| {order['shown'] if order else '-'} | {seconds:.1f} | {', '.join(failed) or 'none'} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", default="1,2,3,4")
+    parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--tile", action="store_true")
+    parser.add_argument("out")
+    parser.add_argument("dirs", nargs="+")
+    args = parser.parse_args()
+    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "novelty")
+    os.makedirs(pictures, exist_ok=True)
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    lines = [
+        "# Novelty of default outputs",
+        "",
+        f"Command: `python3 scripts/novelty_table.py {' '.join(sys.argv[1:])}` at commit {commit}, "
+        f"{datetime.date.today().isoformat()}.",
+        "",
+        "Each output: `shapeproc synthesize EXEMPLAR --size 3W,3H --seed S` with every other flag at "
+        "its default, judged by `shapeproc report` (docs/metrics.md). Chance levels in brackets: "
+        "the same measure of the output's elements placed at random.",
+        "",
+        "| exemplar | seed | births accepted | deaths accepted | copy share (chance) | "
+        "patch copy share (chance) | largest copied patch | repetition (chance) | density | "
+        "class mix | overlapping pairs | order | seconds | failed checks |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    seeds = [int(s) for s in args.seeds.split(",")]
+    for folder in args.dirs:
+        for file in sorted(os.listdir(folder)):
+            if not file.endswith(".svg"):
+                continue
+            for seed in seeds:
+                try:
+                    line = row(os.path.join(folder, file), seed, args, pictures)
+                except Exception as e:  # a row that could not be made says why
+                    line = f"| {file} | {seed} | error: {e} |"
+                print(line, flush=True)
+                lines.append(line)
+    with open(args.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
