@@ -70,7 +70,7 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
   sample::SamplerOptions sampling;
   sampling.iterations = options.steps;
   sampling.compression = fit::output_compression(model);  // as the fit's chains
-  sampling.compression.steps = options.steps / 4;
+  sampling.compression.release_steps = options.steps / 4;
   const sample::ShapeProcessSampler sampler(model, window, sampling);
   for (int k = 0; k < options.samples; ++k) {
     core::Random random(options.seed + static_cast<std::uint64_t>(k));

@@ -122,6 +122,36 @@ void BirthDeathChain::add_start(const std::vector<Element>& start) {
   }
 }
 
+int BirthDeathChain::add_or_place_near(const std::vector<Element>& elements, double radius,
+                                       int attempts) {
+  int lost = 0;
+  for (const Element& e : elements) {
+    Element placed = e;
+    bool fits = false;
+    for (int a = 0; a <= attempts && !fits; ++a) {
+      if (a > 0) {
+        placed.position = e.position;
+        Vec3 offset = Vec3::Zero();
+        do {
+          for (int axis = 0; axis < t_.dimension; ++axis)
+            offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
+        } while (offset.squaredNorm() > radius * radius);
+        placed.position = r_.domain.wrap(placed.position + offset);
+      }
+      if (!in_free_region(placed.position) ||
+          (!r_.domain.periodic() && !r_.domain.contains(placed.position)))
+        continue;
+      const double term = log_lambda_over_beta(placed, -1);
+      if (!std::isfinite(term)) continue;
+      state_.add(placed, local_term_, links_);
+      log_density_ += t_.log_beta[static_cast<std::size_t>(placed.category)] + term;
+      fits = true;
+    }
+    if (!fits) ++lost;
+  }
+  return lost;
+}
+
 void BirthDeathChain::add_surroundings(const std::vector<Element>& around) {
   SHAPEPROC_ASSERT(state_.size() == fixed_, "surroundings come before the free elements");
   for (const Element& e : around) state_.add(e, 0.0, {});

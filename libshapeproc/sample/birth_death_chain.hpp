@@ -84,6 +84,12 @@ class BirthDeathChain {
   // forbidden by those before it).
   void add_start(const std::vector<Element>& start);
 
+  // Adds elements as add_start does; one the hard core forbids where it is is tried at up to
+  // `attempts` positions uniform in the ball of `radius` around it (the same shape and category),
+  // the first that fits kept: the compressing burn-in's push of an element its neighbours' grown
+  // hard cores now cover. Returns how many found no place.
+  int add_or_place_near(const std::vector<Element>& elements, double radius, int attempts);
+
   // Random sequential insertion, a burn-in's start rather than a Metropolis-Hastings move: up to
   // `attempts` proposals of a new element (position uniform in the free region, category in
   // proportion to β_c Σ w, shape by class weight), each kept when the hard core and the mask

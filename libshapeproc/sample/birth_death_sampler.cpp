@@ -16,6 +16,13 @@
 
 namespace shapeproc::sample {
 
+namespace {
+// Places tried around an element the grown hard cores cover before it is removed.
+constexpr int kPushAttempts = 24;
+// The share of shifts among a growth stage's steps.
+constexpr double kGrowthShiftProbability = 0.6;
+}  // namespace
+
 ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                                          geometry::Domain domain, SamplerOptions options)
     : model_(model), domain_(std::move(domain)), options_(options) {
@@ -27,12 +34,12 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
-  core::check(
-      options_.iterations <= 0 || !options_.compression.enabled ||
-          (options_.compression.steps > 0 && 2 * options_.compression.steps < options_.iterations),
-      "sample",
-      "with given steps the compressing burn-in needs its own steps, fewer than half of "
-      "them");
+  core::check(options_.iterations <= 0 || !options_.compression.enabled ||
+                  (options_.compression.release_steps > 0 &&
+                   2 * options_.compression.release_steps < options_.iterations),
+              "sample",
+              "with given steps the compressing burn-in needs its own steps, fewer than half of "
+              "them");
   core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
               "trace and observation intervals must be >= 0");
 
@@ -63,6 +70,50 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                         : range > 0               ? 0.5 * range
                                     : 0.05 * domain_.sizes().head(dimension).minCoeff();
   region_ = std::make_unique<const ChainRegion>(std::move(region));
+  const CompressionOptions& c = options_.compression;
+  CompressionSchedule check(c);  // checks the options
+  if (c.enabled && tables_->interaction->range() > 0) {
+    // An element its neighbours' grown hard cores now cover is looked for a place within twice
+    // the growth of one stage of the largest hard core.
+    double largest = 0.0;
+    for (const model::PairInteraction& pair : model_.interactions)
+      for (const model::AxisParameters& axis : pair.axes)
+        if (!axis.thresholds.empty()) largest = std::max(largest, axis.thresholds.front());
+    push_radius_ =
+        std::max(2.0 * (1.0 - c.start_scale) / std::max(1, c.stages) * largest, 1e-3 * reach());
+    // Near a packing a shift of half the range is always refused: the growth moves elements
+    // by little, often, so that they settle into the room the grown cores leave.
+    ChainRegion local = *region_;
+    local.shift_radius = push_radius_;
+    local.shift_probability = kGrowthShiftProbability;
+    growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
+    for (int k = 0; k < c.stages; ++k) {
+      const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
+      growth_scales_.push_back(scale);
+      growth_.push_back(
+          std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
+    }
+  }
+}
+
+std::vector<Element> ShapeProcessSampler::grow(const std::vector<Element>& start,
+                                               core::Random& random,
+                                               const synthesis::ChainControl& control,
+                                               long long& steps) const {
+  std::vector<Element> state = start;
+  for (std::size_t k = 0; k < growth_.size(); ++k) {
+    BirthDeathChain chain(*growth_[k], *growth_region_, random, options_.fixed, {});
+    chain.add_or_place_near(state, push_radius_, kPushAttempts);
+    chain.set_log_boost(options_.compression.log_boost);
+    const long long stage = options_.compression.stage_steps(chain.size());
+    for (long long s = 1; s <= stage; ++s) {
+      chain.step();
+      if (s % 10000 == 0 && control.cancelled()) throw core::Cancelled();
+    }
+    steps += stage;
+    state = chain.free_elements();
+  }
+  return state;
 }
 
 ShapeProcessSampler::~ShapeProcessSampler() = default;
@@ -83,13 +134,18 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
       options_.observe_every == 0 && !options_.compression.enabled &&
       decomposable(domain_, reach()))
     return sample_by_cells(model_, *tables_, *region_, options_, random, control);
-  BirthDeathChain chain(*tables_, *region_, random, options_.fixed, options_.start);
   SampleResult result;
+  long long growth_steps = 0;
+  std::vector<Element> grown;
+  if (!growth_.empty()) grown = grow(options_.start, random, control, growth_steps);
+  BirthDeathChain chain(*tables_, *region_, random, options_.fixed,
+                        growth_.empty() ? options_.start : std::vector<Element>{});
+  if (!growth_.empty()) chain.add_or_place_near(grown, push_radius_, kPushAttempts);
   const bool automatic = options_.iterations <= 0;
   const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
   StationarityRule rule(options_.max_iterations, options_.start.empty());
-  CompressionSchedule compression(options_.compression, options_.max_iterations);
+  CompressionSchedule compression(options_.compression);
   long long step = 1;
   for (;; ++step) {
     chain.set_log_boost(compression.log_boost());
@@ -130,7 +186,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
     result.stationary = verdict == StationarityRule::Verdict::stationary;
     break;
   }
-  result.compression_steps = compression.finished_at();
+  result.compression_steps = growth_steps + compression.finished_at();
   result.iterations = step;
   result.trend = rule.last_check();
   if (automatic && control.progress) control.progress(step, step);

@@ -133,6 +133,16 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   SamplerOptions options_;
   std::unique_ptr<const ChainTables> tables_;
   std::unique_ptr<const ChainRegion> region_;  // the whole domain, or the free region
+  // The compressing burn-in's growth stages: the model with its hard cores scaled
+  // (compression.hpp), smallest first; empty without compression.
+  std::vector<std::unique_ptr<const ChainTables>> growth_;
+  std::vector<double> growth_scales_;
+  double push_radius_ = 0.0;
+  std::unique_ptr<const ChainRegion> growth_region_;  // the region with short, frequent shifts
+  // The growth stages from `start`: the elements they end with; adds their steps to `steps`.
+  std::vector<geometry::Element> grow(const std::vector<geometry::Element>& start,
+                                      core::Random& random, const synthesis::ChainControl& control,
+                                      long long& steps) const;
 };
 
 // One chain on `domain`, for one-off use.

@@ -1,13 +1,33 @@
 #include "libshapeproc/sample/compression.hpp"
 
+#include <algorithm>
+
 #include "libshapeproc/core/check.hpp"
 
 namespace shapeproc::sample {
 
-CompressionSchedule::CompressionSchedule(const CompressionOptions& options, long long max_steps)
-    : options_(options), rule_(max_steps) {
-  core::check(options.steps >= 0 && options.log_boost >= 0, "sample",
-              "the compressing burn-in needs steps >= 0 and a boost >= 0");
+long long CompressionOptions::stage_steps(int elements) const {
+  return steps > 0
+             ? steps
+             : std::max(kLeastStageSteps, kStepsPerElement * static_cast<long long>(elements));
+}
+
+model::ShapeProcessModel with_scaled_hard_cores(const model::ShapeProcessModel& model,
+                                                double scale) {
+  core::check(scale > 0 && scale <= 1, "sample", "a hard core's scale must be in (0, 1]");
+  model::ShapeProcessModel scaled = model;
+  for (model::PairInteraction& pair : scaled.interactions)
+    for (model::AxisParameters& axis : pair.axes)
+      if (!axis.thresholds.empty()) axis.thresholds.front() *= scale;
+  return scaled;
+}
+
+CompressionSchedule::CompressionSchedule(const CompressionOptions& options) : options_(options) {
+  core::check(options.steps >= 0 && options.release_steps >= 0 && options.log_boost >= 0 &&
+                  options.stages >= 0 && options.start_scale > 0 && options.start_scale <= 1,
+              "sample",
+              "the compressing burn-in needs steps >= 0, a boost >= 0, stages >= 0 and a start "
+              "scale in (0, 1]");
   if (!options.enabled) return;
   phase_ = Phase::compress;
   boost_ = options.log_boost;
@@ -16,10 +36,10 @@ CompressionSchedule::CompressionSchedule(const CompressionOptions& options, long
 void CompressionSchedule::after_step(long long step, int elements) {
   switch (phase_) {
     case Phase::compress: {
-      const bool over = options_.steps > 0 ? step >= options_.steps
-                                           : rule_.after_step(step, elements) !=
-                                                 StationarityRule::Verdict::keep_going;
-      if (!over) return;
+      if (first_phase_ == 0)
+        first_phase_ =
+            options_.release_steps > 0 ? options_.release_steps : options_.stage_steps(elements);
+      if (step < first_phase_) return;
       compressed_for_ = step;
       phase_ = Phase::release;
       return;

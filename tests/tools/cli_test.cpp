@@ -336,7 +336,7 @@ TEST(CliSynthesize, StartsEmptyUnlessTheExemplarIsAskedFor) {
   const auto run = [&](const std::string& name, std::vector<std::string> extra) {
     const std::string out = dir.file(name).string();
     std::vector<std::string> args = {"synthesize", tile,      "--tile", "-o", out,
-                                     "--size",     "256,256", "--seed", "3"};
+                                     "--size",     "128,128", "--seed", "3"};
     args.insert(args.end(), extra.begin(), extra.end());
     const Result r = run_cli(args);
     EXPECT_EQ(r.code, 0) << r.err;
@@ -349,16 +349,16 @@ TEST(CliSynthesize, StartsEmptyUnlessTheExemplarIsAskedFor) {
   EXPECT_NE(sought.find("[&quot;start&quot;,&quot;empty&quot;]"), std::string::npos);
   EXPECT_NE(sought.find("[&quot;burn_in&quot;,&quot;compressing&quot;]"), std::string::npos);
   EXPECT_GT(sought_count, 0);
-  if (sought_count < 0.9 * 64)
+  if (sought_count < 0.9 * 16)
     EXPECT_NE(sought_said.find("warning: the chain reached " + std::to_string(sought_count)),
               std::string::npos)
         << sought_said;
   const auto [held, held_count, held_said] = run("held.svg", {"--start", "exemplar"});
   EXPECT_NE(held.find("[&quot;start&quot;,&quot;exemplar&quot;]"), std::string::npos);
-  EXPECT_NE(held_said.find("start: the exemplar tiled over the output (64 elements)"),
+  EXPECT_NE(held_said.find("start: the exemplar tiled over the output (16 elements)"),
             std::string::npos)
       << held_said;
-  EXPECT_GE(held_count, 58);
+  EXPECT_GE(held_count, 12);
   for (const auto& [start, expected] :
        {std::pair<std::string, std::string>{"auto", "empty"}, {"exemplar", "exemplar"}}) {
     const std::string out = dir.file("dots-" + start + ".svg").string();
@@ -399,11 +399,20 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   const nlohmann::json record = nlohmann::json::parse(testing::read_file(model)).at("fit");
   EXPECT_EQ(record.at("tile_repeats"), 6);
   const std::string out = dir.file("strip-out.svg").string();
-  ASSERT_EQ(run_cli({"synthesize", tile, "--tile", "-o", out, "--size", "240,48", "--quiet"}).code,
-            0);
+  // From empty the strip's jammed rows (dots at the hard core along both axes) are not reached
+  // whole; the output says how far it got.
+  const Result synthesised =
+      run_cli({"sample", model, "-o", out, "--size", "240,48", "--seed", "1", "--quiet"});
+  ASSERT_EQ(synthesised.code, 0) << synthesised.err;
   const Result stats = run_cli({"stats", out, "--json"});
   ASSERT_EQ(stats.code, 0) << stats.err;
-  EXPECT_EQ(nlohmann::json::parse(stats.out).at("elements").get<int>(), 32);
+  const int count = nlohmann::json::parse(stats.out).at("elements").get<int>();
+  EXPECT_GT(count, 8);
+  EXPECT_LE(count, 32);
+  if (count < 0.9 * 32)
+    EXPECT_NE(synthesised.out.find("warning: the chain reached " + std::to_string(count)),
+              std::string::npos)
+        << synthesised.out;
   // An output torus under twice the reach (range 57, dots 4 wide: 2 (57 + 4) = 123) is said to
   // be one (`sample` and `synthesize` share the check; the fitted model spares a fit per run).
   const Result small =

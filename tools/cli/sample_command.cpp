@@ -243,7 +243,7 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   } else {
     options.compression = fit::output_compression(model);
     if (options.compression.enabled && options.iterations > 0)
-      options.compression.steps = options.iterations / 4;
+      options.compression.release_steps = options.iterations / 4;
   }
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
