@@ -11,6 +11,20 @@
 
 namespace shapeproc::compare {
 
+bool EmExemplar::same_place(int a, int b) const {
+  if (a == b) return true;
+  if (tile_period.isZero()) return false;
+  const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  const geometry::Element& x = scene.elements[static_cast<std::size_t>(samples.element[i])];
+  const geometry::Element& y = scene.elements[static_cast<std::size_t>(samples.element[j])];
+  if (x.shape != y.shape || samples.sample_id[i] != samples.sample_id[j]) return false;
+  Vec3 d = samples.positions[i] - samples.positions[j];
+  for (int axis = 0; axis < 3; ++axis)
+    if (tile_period[axis] > 0)
+      d[axis] -= tile_period[axis] * std::round(d[axis] / tile_period[axis]);
+  return d.norm() <= 1e-6 * std::max(1.0, spacing);
+}
+
 double EmExemplar::attribute_distance(int element_a, int element_b) const {
   const auto a = static_cast<std::size_t>(element_a), b = static_cast<std::size_t>(element_b);
   return (category[a] != category[b] ? 1.0 : 0.0) + (shape_class[a] != shape_class[b] ? 1.0 : 0.0);
@@ -60,6 +74,8 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
   // A tile smaller than its wide neighbourhoods' diameter is repeated until it holds them: on its
   // own torus the nearest image would miss the elements' further images.
   if (boundary == geometry::Boundary::torus) {
+    ex.tile_period = scene.window.sizes();
+    if (scene.dimension == 2) ex.tile_period.z() = 0.0;
     const geometry::Domain tile(scene.window, scene.dimension, boundary);
     ex.scene = geometry::repeat_to_reach(
         scene, 4.0 * (rings + 0.5) * mean_nearest_distance(scene.elements, tile));

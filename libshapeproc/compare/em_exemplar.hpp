@@ -21,6 +21,12 @@ namespace shapeproc::compare {
 struct EmExemplar {
   geometry::Scene scene;  // a seamless tile smaller than 4r: repeated until it is not
   geometry::Boundary boundary = geometry::Boundary::open;
+  // A seamless tile's own period (its window's sizes before any repeat), zero for an open
+  // exemplar: two elements one or more periods apart are the same element of the drawing.
+  geometry::Vec3 tile_period = geometry::Vec3::Zero();
+  // Whether two samples are the same sample of the drawing: equal, or of the same shape and
+  // whole tile periods apart.
+  bool same_place(int a, int b) const;
   std::vector<SampleTemplate> templates;  // per shape
   ElementSamples samples;
   // Per element: category, shape class (identical shapes, or size groups: fit/shape_classes) and

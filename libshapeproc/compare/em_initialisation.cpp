@@ -137,11 +137,11 @@ void incremental_add(const EmExemplar& exemplar, const geometry::Domain& domain,
 
 InitialOutput initialise(const EmExemplar& exemplar, const geometry::Domain& domain,
                          const OrientationField& orientation, Initialisation rule, double alpha,
-                         core::Random& random) {
+                         core::Random& random, bool diverse) {
   InitialOutput out;
   switch (rule) {
     case Initialisation::patch_copy:
-      patch_copy(exemplar, domain, orientation, alpha, random, out);
+      patch_copy(exemplar, domain, orientation, alpha, random, out, diverse);
       break;
     case Initialisation::random_copy:
       random_copy(exemplar, domain, orientation, random, out);

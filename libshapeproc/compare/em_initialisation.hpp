@@ -33,9 +33,10 @@ struct InitialOutput {
 };
 
 // `alpha`: the attribute weight of eq. 1 (squared length units), for the patches' seams.
+// `diverse`: patch copy's diversity (patch_copy.hpp).
 InitialOutput initialise(const EmExemplar& exemplar, const geometry::Domain& domain,
                          const OrientationField& orientation, Initialisation rule, double alpha,
-                         core::Random& random);
+                         core::Random& random, bool diverse = true);
 
 // The smallest distance between two exemplar elements (minimum image on a torus), at most d̄.
 double smallest_gap(const EmExemplar& exemplar);

@@ -18,6 +18,8 @@ void check_options(const GrowthOptions& o) {
   if (o.k < 1 || o.k > 100) throw core::ArgumentError("--k", "expected 1 to 100");
   if (!(o.alpha >= 0)) throw core::ArgumentError("--alpha", "the weight must be >= 0");
   if (!(o.ratio > 1.0)) throw core::ArgumentError("--ratio", "the ratio must be > 1");
+  if (!(o.patch_radius >= 0))
+    throw core::ArgumentError("--patch-radius", "the patch radius must be >= 0");
   if (!(o.seed_separation > 0 && o.seed_separation <= 1))
     throw core::ArgumentError("region growing", "the seed separation must be in (0, 1]");
   if (!(o.bounding_radius >= 0))

@@ -29,6 +29,12 @@ struct GrowthOptions {
   // method has, the shapes themselves (the signed shape distance below 0; touching allowed).
   bool exact_overlap = false;
   double frozen_weight = 0.1, anchor_weight = 100.0;
+  // Diversity: a seed extends the exemplar patch it was copied in (its candidate is its own
+  // exemplar element, or one of its images a tile period away) only while it lies within this many
+  // neighbourhood radii of where that patch began; beyond, its own element is not a candidate and
+  // the best other one starts a new patch. Without it a seamless tile grows into the tile repeated.
+  // 0: off (the paper).
+  double patch_radius = 1.5;
 };
 
 // The exemplar analysed for growth (single-sample elements); throws core::ArgumentError for bad

@@ -76,6 +76,7 @@ std::vector<std::pair<std::string, std::string>> NeighbourhoodEm::record_options
       {"em.samples_per_element",
        options_.samples.per_element > 0 ? std::to_string(options_.samples.per_element) : "auto"},
       {"em.initialisation", to_string(options_.initialisation)},
+      {"em.diverse_patches", options_.diverse_patches ? "yes" : "no"},
       {"em.search", options_.search == SearchRule::brute_force ? "brute-force" : "k-coherence"},
       {"em.reconstruction", to_string(options_.reconstruction)},
       {"em.orientation", options_.orientation.describe()},
@@ -84,8 +85,9 @@ std::vector<std::pair<std::string, std::string>> NeighbourhoodEm::record_options
 
 synthesis::SynthesisResult NeighbourhoodEm::synthesize(
     core::Random& random, const synthesis::ChainControl& control) const {
-  InitialOutput start = initialise(exemplar_, domain_, options_.orientation,
-                                   options_.initialisation, settings_.alpha, random);
+  InitialOutput start =
+      initialise(exemplar_, domain_, options_.orientation, options_.initialisation, settings_.alpha,
+                 random, options_.diverse_patches);
   OutputSamples output = std::move(start.output);
   SearchResult seed;
   seed.match = std::move(start.copied_from);

@@ -41,6 +41,9 @@ struct EmOptions {
   double alpha = 1.0, lambda = 1.0;
   SampleOptions samples;
   Initialisation initialisation = Initialisation::patch_copy;
+  // Diversity: patch copy never continues a neighbouring cell's exemplar patch (patch_copy.hpp);
+  // off, a seamless tile is copied whole.
+  bool diverse_patches = true;
   SearchRule search = SearchRule::k_coherence;
   Reconstruction reconstruction = Reconstruction::rigid;
   int iterations = 10;

@@ -138,7 +138,7 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
 
 void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
                 const OrientationField& orientation, double alpha, core::Random& random,
-                InitialOutput& out) {
+                InitialOutput& out, bool diverse) {
   const int dim = domain.dimension();
   const Vec3 window_min = exemplar.scene.window.min(), period = exemplar.scene.window.sizes();
   const bool wraps = exemplar.boundary == geometry::Boundary::torus;
@@ -171,6 +171,17 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
             }),
         patch.end());
     return patch;
+  };
+  // Each filled cell's translation from the exemplar (output minus exemplar position).
+  std::vector<std::pair<Eigen::Vector3i, Vec3>> shifts;
+  const auto continues_neighbour = [&](const Eigen::Vector3i& at, const Vec3& shift) {
+    if (!diverse) return false;
+    for (const auto& [other, s] : shifts) {
+      if ((other - at).cwiseAbs().maxCoeff() > 1) continue;
+      if (geometry::minimum_image(s - shift, exemplar.tile_period).norm() < 0.25 * exemplar.spacing)
+        return true;
+    }
+    return false;
   };
   for (int k = 0; k < counts.z(); ++k)
     for (int j = 0; j < counts.y(); ++j)
@@ -218,6 +229,7 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
         }
         Placement best;
         double best_cost = std::numeric_limits<double>::infinity();
+        Vec3 best_shift = Vec3::Zero();
         const bool first_cell = out.output.elements() == 0;
         for (int c = 0; c < (first_cell ? 1 : kPatchCandidates); ++c) {
           Vec3 origin = Vec3::Zero();
@@ -228,6 +240,7 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
           Placement patch = uncrowded(patch_at(exemplar, domain, origin, lo, extent, radians));
           if (first_cell) {
             best = std::move(patch);
+            best_shift = lo - origin;
             break;
           }
           // The patch as drawn, and moved to close its seam.
@@ -244,15 +257,18 @@ void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
           const double moved_cost = seam_cost(exemplar, domain, out, grid, moved, radians, alpha,
                                               filled, bordering, in_cell)
                                         .cost;
-          if (seam.cost < best_cost) {
+          if (seam.cost < best_cost && !continues_neighbour(at, lo - origin)) {
             best_cost = seam.cost;
             best = std::move(patch);
+            best_shift = lo - origin;
           }
-          if (moved_cost < best_cost) {
+          if (moved_cost < best_cost && !continues_neighbour(at, lo - moved_origin)) {
             best_cost = moved_cost;
             best = std::move(moved);
+            best_shift = lo - moved_origin;
           }
         }
+        shifts.emplace_back(at, best_shift);
         for (const auto& [element, position] : best) {
           elements.insert(static_cast<int>(placed.size()), position);
           placed.push_back(position);

@@ -23,9 +23,13 @@ namespace shapeproc::compare {
 
 inline constexpr int kPatchCandidates = 16;
 
-// Fills `out` (empty on entry) by patch copy; `alpha` is eq. 1's attribute weight.
+// Fills `out` (empty on entry) by patch copy; `alpha` is eq. 1's attribute weight. With
+// `diverse`, a cell never takes the exemplar patch that continues a neighbouring cell's (the
+// same translation from the exemplar, modulo a seamless tile's period, within a quarter of its
+// mean nearest distance): without it the seam-closing move picks exactly that continuation and
+// a seamless tile comes out repeated.
 void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
                 const OrientationField& orientation, double alpha, core::Random& random,
-                InitialOutput& out);
+                InitialOutput& out, bool diverse = true);
 
 }  // namespace shapeproc::compare

@@ -34,12 +34,43 @@ struct Growth {
   std::vector<int> attempts;  // per element: rounds it was abandoned as a seed
   std::vector<char> seen;     // gather_candidates' scratch, one per exemplar element
   long long abandoned = 0, rounds = 0;
+  std::vector<Vec3> origin;  // per element: where the exemplar patch it was copied in began
+  long long patches = 0;     // patches begun (initial ones included)
 };
+
+// Adds an element copied in the patch begun at `origin`.
+int add_element(Growth& g, int source, const Vec3& p, const Vec3& origin) {
+  const int e = g.state.add(source, p);
+  if (static_cast<std::size_t>(e) >= g.origin.size())
+    g.origin.resize(static_cast<std::size_t>(e) + 1, Vec3::Zero());
+  g.origin[static_cast<std::size_t>(e)] = origin;
+  return e;
+}
 
 // The candidates of element e: co(source) ∪ co(match), each once (k-coherence's gathering).
 std::vector<int> candidates_of(Growth& g, int e) {
   std::vector<int> out;
   gather_candidates(g.exemplar.sets, g.state.source(e), {g.state.match(e)}, g.seen, out);
+  return out;
+}
+
+// Whether seed s's patch reaches beyond the patch radius (GrowthOptions::patch_radius).
+bool patch_full(const Growth& g, int s) {
+  if (!(g.options.patch_radius > 0)) return false;
+  const Vec3 from =
+      g.domain.minimum_image(g.state.position(s) - g.origin[static_cast<std::size_t>(s)]);
+  return from.norm() > g.options.patch_radius * g.exemplar.reach_of(g.state.source(s));
+}
+
+// Seed s's candidates: k-coherence's; once its patch is full, every exemplar sample of its key
+// but the images of its own (k-coherence's sets of a seamless tile hold mostly those).
+std::vector<int> generation_candidates(Growth& g, int s) {
+  if (!patch_full(g, s)) return candidates_of(g, s);
+  const EmExemplar& em = g.exemplar.em;
+  const int own = g.state.source(s);
+  std::vector<int> out;
+  for (const int m : em.samples_with_key(em.samples.key[static_cast<std::size_t>(own)]))
+    if (!em.same_place(m, own)) out.push_back(m);
   return out;
 }
 
@@ -83,11 +114,12 @@ void place_initial_patch(Growth& g, core::Random& random, int part, const Vec3& 
   }
   const int c = best[random.index(best.size())];
   if (!g.state.in_domain(centre) || g.state.collides(c, centre)) return;
-  push_horizon(g, g.state.add(c, centre));
+  push_horizon(g, add_element(g, c, centre, centre));
+  ++g.patches;
   for (const geometry::Neighbour& n : em.near[static_cast<std::size_t>(c)]) {
     const Vec3 p = centre + n.offset;
     if (g.state.in_domain(p) && !g.state.collides(n.element, p))
-      push_horizon(g, g.state.add(n.element, p));
+      push_horizon(g, add_element(g, n.element, p, centre));
   }
 }
 
@@ -166,7 +198,7 @@ int generate(Growth& g, int s) {
                        g.options.tolerance * g.options.tolerance * spacing * spacing;
   double limit = std::numeric_limits<double>::infinity();
   std::vector<std::pair<double, int>> ranked;
-  for (const int m : candidates_of(g, s)) {
+  for (const int m : generation_candidates(g, s)) {
     const double cost = distance_to(g, s, hood, m, nullptr, limit);
     ranked.emplace_back(cost, m);
     limit = std::min(limit, g.options.ratio * cost + slack);
@@ -177,7 +209,11 @@ int generate(Growth& g, int s) {
     const std::vector<std::pair<int, Vec3>> copies = copies_of(g, s, hood, m);
     if (copies.empty()) continue;
     g.state.set_match(s, m);
-    for (const auto& [e, p] : copies) push_horizon(g, g.state.add(e, p));
+    // Its own element continues its patch; any other begins one here.
+    const bool continues = g.exemplar.em.same_place(m, g.state.source(s));
+    const Vec3 origin = continues ? g.origin[static_cast<std::size_t>(s)] : g.state.position(s);
+    if (!continues) ++g.patches;
+    for (const auto& [e, p] : copies) push_horizon(g, add_element(g, e, p, origin));
     return static_cast<int>(copies.size());
   }
   return 0;
@@ -305,6 +341,7 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
           {"growth.bounding_radius",
            options_.bounding_radius > 0 ? number(options_.bounding_radius) : "auto"},
           {"growth.optimise", options_.optimise ? "yes" : "no"},
+          {"growth.patch_radius", number(options_.patch_radius)},
           {"growth.overlap", options_.exact_overlap ? "shapes" : "circles"}};
 }
 
@@ -320,6 +357,8 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
            {},
            std::vector<char>(exemplar_.em.samples.size(), 0),
            0,
+           0,
+           {},
            0};
   const std::size_t parts = exemplar_.parts();
   std::vector<double> sum(parts, 0.0), count(parts, 0.0);
@@ -386,6 +425,7 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
   result.record.stationary = true;
   result.counters = {{"rounds", std::to_string(g.rounds)},
                      {"seeds abandoned", std::to_string(g.abandoned)},
+                     {"patches", std::to_string(g.patches)},
                      {"free-space points left", std::to_string(g.state.free_points())}};
   return result;
 }

@@ -150,11 +150,12 @@ struct OutputIndex {
     for (std::size_t n = 0; n < keep; ++n) nearest[i].push_back(found[n].second);
   }
 
-  // An element of `size_class` within `radius` of `position` (which must lie in the box).
-  bool occupied(const Vec3& position, int size_class, double radius) const {
+  // An element of `size_class` other than `self` within `radius` of `position` (which must lie
+  // in the box).
+  bool occupied(const Vec3& position, int size_class, double radius, int self) const {
     bool found = false;
     grid.for_each_candidate(position, [&](int j) {
-      if (found || classes[static_cast<std::size_t>(j)] != size_class) return;
+      if (found || j == self || classes[static_cast<std::size_t>(j)] != size_class) return;
       if (domain.minimum_image(positions[static_cast<std::size_t>(j)] - position).norm() <= radius)
         found = true;
     });
@@ -269,10 +270,12 @@ double largest_patch(const OutputIndex& out, const geometry::Scene& exemplar,
   return static_cast<double>(largest) / static_cast<double>(n);
 }
 
-// The share of elements repeated by a same-size element at each of the exemplar's period vectors.
+// The share of elements repeated by a same-size element at each of the exemplar's period vectors
+// (those shorter than the output along their axis: a torus's own period says nothing).
 double repetition(const OutputIndex& out, const Vec3& period, int dimension, double tolerance) {
   long long eligible = 0, repeated = 0;
   for (int axis = 0; axis < dimension; ++axis) {
+    if (!(period[axis] < out.domain.sizes()[axis] - tolerance)) continue;
     Vec3 step = Vec3::Zero();
     step[axis] = period[axis];
     for (std::size_t i = 0; i < out.positions.size(); ++i) {
@@ -282,7 +285,7 @@ double repetition(const OutputIndex& out, const Vec3& period, int dimension, dou
       else if (!out.domain.contains(target))
         continue;
       ++eligible;
-      if (out.occupied(target, out.classes[i], tolerance)) ++repeated;
+      if (out.occupied(target, out.classes[i], tolerance, static_cast<int>(i))) ++repeated;
     }
   }
   return eligible > 0 ? static_cast<double>(repeated) / static_cast<double>(eligible) : 0.0;

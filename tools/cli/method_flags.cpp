@@ -58,6 +58,9 @@ void EmFlags::add_to(CLI::App& command) {
       .add_option("--samples-per-element", samples,
                   "ma-em: samples per element, 1 to 16, or auto (from each shape's elongation)")
       ->capture_default_str();
+  command.add_flag("--copy-patches", copy_patches,
+                   "ma-em: let patch copy continue a neighbouring cell's exemplar patch, as the "
+                   "paper (a seamless tile then comes out repeated)");
   command.add_option("--initialisation", initialisation, "ma-em: the starting output")
       ->check(CLI::IsMember({"patch-copy", "random-copy", "incremental-add"}))
       ->capture_default_str();
@@ -103,6 +106,7 @@ compare::EmOptions EmFlags::options(const geometry::Domain& domain, long long it
     o.samples.per_element = static_cast<int>((*n)[0]);
   }
   o.initialisation = compare::parse_initialisation(initialisation);
+  o.diverse_patches = !copy_patches;
   o.search =
       search == "brute-force" ? compare::SearchRule::brute_force : compare::SearchRule::k_coherence;
   o.reconstruction = compare::parse_reconstruction(reconstruction);
@@ -129,6 +133,12 @@ void GrowthFlags::add_to(CLI::App& command) {
                   "davison: a candidate that can grow is taken only within this ratio of the "
                   "best candidate's neighbourhood distance (> 1)")
       ->check(CLI::Range(1.0 + 1e-9, 1e6))
+      ->capture_default_str();
+  command
+      .add_option("--patch-radius", patch_radius,
+                  "davison: a copied exemplar patch grows at most this many neighbourhood radii "
+                  "from where it began, then a new one begins (diversity; 0: off, as the paper)")
+      ->check(non_negative_number())
       ->capture_default_str();
   command
       .add_option("--bounding-radius", bounding_radius,
@@ -158,6 +168,7 @@ compare::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
   o.k = shared.k;
   o.alpha = shared.alpha;
   o.ratio = ratio;
+  o.patch_radius = patch_radius;
   o.bounding_radius = bounding_radius;
   o.optimise = !no_optimise;
   if (overlap == "none")

@@ -27,6 +27,7 @@ struct EmFlags {
   std::string reconstruction = "rigid";
   std::string orientation;
   bool physics = false;
+  bool copy_patches = false;  // --copy-patches: patch copy without its diversity
   int physics_steps = compare::kPhysicsSubSteps;
 
   // The options both neighbourhood methods (ma-em, davison) take.
@@ -42,6 +43,7 @@ struct EmFlags {
 // Region growing's options (--method davison), and --overlap, which ijiri takes too.
 struct GrowthFlags {
   double ratio = compare::GrowthOptions{}.ratio;
+  double patch_radius = compare::GrowthOptions{}.patch_radius;
   double bounding_radius = 0.0;
   bool no_optimise = false;
   std::string overlap;

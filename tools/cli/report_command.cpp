@@ -90,6 +90,7 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   // element's images one period away are the element itself, and the contacts and nearest
   // distances they make would go uncounted.
   std::string exemplar_note;
+  const geometry::Scene tile = exemplar.scene;  // novelty is judged against the drawing itself
   if (exemplar.boundary == geometry::Boundary::torus) {
     const int times = geometry::tile_repeats(exemplar.scene.elements.size());
     if (times > 1) {
@@ -104,15 +105,22 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   for (const std::string& file : request.outputs) {
     outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
     evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
+    // Novelty against the drawing itself, not its repeat (whose period may be the output's).
+    evals.back().novelty =
+        metrics::measure_novelty(tile, outputs.back().scene, outputs.back().boundary);
   }
 
-  const evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
+  evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
       exemplar.scene, exemplar.boundary, exemplar_eval.statistics, model.get());
+  measured.scene = nullptr;  // novelty is measured above
   std::vector<std::vector<evaluation::Verdict>> verdicts;
-  for (std::size_t i = 0; i < outputs.size(); ++i)
-    verdicts.push_back(evaluation::judge(evaluation::measure_for_verdicts(
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    evaluation::Judged judged = evaluation::measure_for_verdicts(
         measured, outputs[i].scene, outputs[i].boundary, evals[i].statistics, *evals[i].comparison,
-        &*evals[i].neighbourhood)));
+        &*evals[i].neighbourhood);
+    judged.novelty = evals[i].novelty;
+    verdicts.push_back(evaluation::judge(judged));
+  }
 
   report::Report r;
   r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics,
