@@ -206,7 +206,12 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   FitResult result = std::move(mple);
   const std::string fit_json = result.model.fit_json;
   result.model = with_estimates(start, mle);
-  if (!mle.converged) {
+  if (!mle.converged && !mle.abandoned.empty()) {
+    result.notes.push_back("the maximum-likelihood fit gave up after " +
+                           std::to_string(mle.iterations) + " iterations: " + mle.abandoned +
+                           "; the model is the iterate closest to the exemplar, and its outputs "
+                           "hold fewer elements than the exemplar's density");
+  } else if (!mle.converged) {
     result.notes.push_back(
         "the maximum-likelihood fit did not converge in " + std::to_string(mle.iterations) +
         " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +

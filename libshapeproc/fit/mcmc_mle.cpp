@@ -62,11 +62,14 @@ constexpr long long kRoughDivisor = 4;      // first simulations: a quarter of t
 constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a pair or more
 constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
 constexpr int kUnreachableAfter = 4;        // simulations without variance: unreachable
-constexpr std::size_t kAveraged = 8;        // estimates averaged in the final phase
-constexpr int kStalledAfter = 2;            // rough simulations without progress end that phase…
-constexpr double kNearTolerance = 2;        // …when the gap is within this many tolerances
-constexpr double kDiverged = 10;            // a gap this many times the best one undoes the step
-constexpr double kMaxOvershoot = 10;        // stationary window: the largest step division
+// Compressed chains short of the exemplar's count (unreached below).
+constexpr std::size_t kUnreachedAfter = 8;
+constexpr double kReachedShare = 0.9, kStalledGain = 0.02;
+constexpr std::size_t kAveraged = 8;  // estimates averaged in the final phase
+constexpr int kStalledAfter = 2;      // rough simulations without progress end that phase…
+constexpr double kNearTolerance = 2;  // …when the gap is within this many tolerances
+constexpr double kDiverged = 10;      // a gap this many times the best one undoes the step
+constexpr double kMaxOvershoot = 10;  // stationary window: the largest step division
 // Chains that disagree more than this (R-hat) are not at one stationary state: a model that
 // holds a packed exemplar in some chains and loses it in others, or chains still drifting. Their
 // errors are then inflated by the disagreement, and small z would be no evidence.
@@ -121,6 +124,27 @@ std::string condensed_start(const StatisticsMoments& m, const std::vector<double
              core::format_general(observed[c], 3) + ")";
   }
   return {};
+}
+
+// Compressed chains that stay short of the exemplar's count: "" while they may still reach it,
+// else the reason to give up. `reached` holds, per simulation so far, the smallest share of a
+// category's observed count the chains' mean reached. Given up after kUnreachedAfter
+// simulations when no share reached kReachedShare and the last half gained under kStalledGain on
+// the first half's best (a jammed exemplar: pushing β on does not add elements).
+std::string unreached(const std::vector<double>& reached, const StatisticsMoments& m,
+                      const std::vector<double>& observed, std::size_t categories) {
+  if (reached.size() < kUnreachedAfter) return {};
+  const std::size_t half = reached.size() / 2;
+  const double before = *std::max_element(reached.begin(), reached.begin() + half);
+  const double after = *std::max_element(reached.begin() + half, reached.end());
+  if (std::max(before, after) >= kReachedShare || after > before + kStalledGain) return {};
+  std::string counts;
+  for (std::size_t c = 0; c < categories; ++c)
+    counts += (c ? ", " : "") + core::format_general(m.mean[c], 3) + " elements against " +
+              core::format_general(observed[c], 3);
+  return "its chains, from empty through the compressing burn-in, stay short of the exemplar's "
+         "count (" +
+         counts + ") however large β grows";
 }
 
 // What one Newton step needs at a point: the penalised gap and information over the free θ.
@@ -371,8 +395,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   std::vector<int> unvaried(p, 0);  // consecutive simulations in which t_k never varied
   model::ShapeProcessModel model = start;
   bool rough = true;
-  int stalled = 0;   // simulations since the gap last shrank
-  int diverged = 0;  // steps undone by the step control
+  int stalled = 0;              // simulations since the gap last shrank
+  int diverged = 0;             // steps undone by the step control
+  std::vector<double> reached;  // per simulation: the least share of a count reached (unreached)
   // Final phase: each simulation gives one estimate of the MLE (the maximum of its reweighted
   // likelihood), whose Monte Carlo error is as large as the gap's; the next simulation runs at
   // the mean of the last kAveraged estimates, so that the error of θ shrinks below the test's.
@@ -493,6 +518,14 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     last_r_hat = here.worst_r_hat;
     r.chains = here.chains;
     if (improved) best = here;
+    if (options.sampling.compress) {
+      double share = std::numeric_limits<double>::infinity();
+      for (std::size_t c = 0; c < categories; ++c)
+        if (observed[c] > 0) share = std::min(share, m.mean[c] / observed[c]);
+      reached.push_back(share);
+      r.abandoned = unreached(reached, m, observed, categories);
+      if (!r.abandoned.empty()) break;
+    }
     if (r.iterations == 1 && options.abandon_condensed_start > 0) {
       r.abandoned = condensed_start(m, observed, categories, options.abandon_condensed_start);
       if (!r.abandoned.empty()) break;
