@@ -63,7 +63,7 @@ constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a 
 constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
 constexpr int kUnreachableAfter = 4;        // simulations without variance: unreachable
 // Compressed chains short of the exemplar's count (unreached below).
-constexpr std::size_t kUnreachedAfter = 8;
+constexpr std::size_t kUnreachedAfter = 8, kStallWindow = 4;
 constexpr double kReachedShare = 0.9, kStalledGain = 0.02;
 constexpr std::size_t kAveraged = 8;  // estimates averaged in the final phase
 constexpr int kStalledAfter = 2;      // rough simulations without progress end that phase…
@@ -128,15 +128,15 @@ std::string condensed_start(const StatisticsMoments& m, const std::vector<double
 
 // Compressed chains that stay short of the exemplar's count: "" while they may still reach it,
 // else the reason to give up. `reached` holds, per simulation so far, the smallest share of a
-// category's observed count the chains' mean reached. Given up after kUnreachedAfter
-// simulations when no share reached kReachedShare and the last half gained under kStalledGain on
-// the first half's best (a jammed exemplar: pushing β on does not add elements).
+// category's observed count the chains' mean reached. Given up after at least kUnreachedAfter
+// simulations when no share reached kReachedShare and the last kStallWindow gained under
+// kStalledGain on the best before them (a jammed exemplar: pushing β on does not add elements).
 std::string unreached(const std::vector<double>& reached, const StatisticsMoments& m,
                       const std::vector<double>& observed, std::size_t categories) {
   if (reached.size() < kUnreachedAfter) return {};
-  const std::size_t half = reached.size() / 2;
-  const double before = *std::max_element(reached.begin(), reached.begin() + half);
-  const double after = *std::max_element(reached.begin() + half, reached.end());
+  const auto window = reached.end() - static_cast<std::ptrdiff_t>(kStallWindow);
+  const double before = *std::max_element(reached.begin(), window);
+  const double after = *std::max_element(window, reached.end());
   if (std::max(before, after) >= kReachedShare || after > before + kStalledGain) return {};
   std::string counts;
   for (std::size_t c = 0; c < categories; ++c)
