@@ -10,7 +10,9 @@
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/synthesis/synthesizer.hpp"
+#include "tests/test_support.hpp"
 
 namespace shapeproc::testing {
 
@@ -104,6 +106,13 @@ inline int overlapping_bars(const geometry::Scene& scene, const geometry::Domain
       pairs += std::abs(d.x()) < 30.0 - 1e-9 && std::abs(d.y()) < 4.0 - 1e-9;
     }
   return pairs;
+}
+
+// Hero Patterns' bubbles tile (17 discs, data/third-party), read as the seamless tile it is.
+inline geometry::Scene bubbles_tile() {
+  io::ReaderOptions seamless;
+  seamless.tile = true;
+  return io::read_scene(data_path("third-party/hero-patterns/bubbles.svg"), seamless);
 }
 
 // One chain of `method` from `seed`.

@@ -146,10 +146,7 @@ TEST(NeighbourhoodEm, ElongatedElementsKeepTheirShapeFromSeveralSamples) {
 // small and the density is kept (seed 1: largest copied patch 0.69 against 0.12; 150 and 153
 // elements against 9 × 17).
 TEST(NeighbourhoodEm, DiversePatchesKeepATileFromComingOutRepeated) {
-  io::ReaderOptions seamless;
-  seamless.tile = true;
-  const geometry::Scene tile =
-      io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), seamless);
+  const geometry::Scene tile = testing::bubbles_tile();
   const geometry::Domain domain =
       geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
   EmOptions paper;

@@ -71,10 +71,7 @@ TEST(RegionGrowing, FillsAnOpenDomainWithoutOverlapsAndRepeats) {
 // small and the density is kept (seed 1: largest copied patch 1.00 against 0.23; 153 and 147
 // elements against 9 × 17).
 TEST(RegionGrowing, ThePatchRadiusKeepsATileFromComingOutRepeated) {
-  io::ReaderOptions seamless;
-  seamless.tile = true;
-  const geometry::Scene tile =
-      io::read_scene(testing::data_path("third-party/hero-patterns/bubbles.svg"), seamless);
+  const geometry::Scene tile = testing::bubbles_tile();
   const geometry::Domain domain =
       geometry::Domain::from_sizes({300, 300}, geometry::Boundary::torus);
   GrowthOptions paper;

@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
+#include "tests/compare/compare_scenes.hpp"
 #include "tests/metrics/metric_scenes.hpp"
 
 namespace shapeproc::metrics {
@@ -98,17 +99,8 @@ TEST(Novelty, ALatticeIsItsOwnRepeat) {
 }
 
 TEST(Novelty, ACheckerboardOfTwoShapesIsALatticeButEveryShapeApartIsNot) {
-  auto disc = [](double side) {  // a filled square: its size is what counts
-    const double h = side / 2;
-    geometry::Path2 path;
-    const geometry::Vec2 corners[] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
-    for (int i = 0; i < 4; ++i)
-      path.segments.push_back(geometry::Segment2::line(corners[i], corners[(i + 1) % 4]));
-    path.closed = true;
-    geometry::Drawable2 drawable;
-    drawable.paths.push_back(path);
-    return geometry::Shape{geometry::PlanarShape{{drawable}}, ""};
-  };
+  const auto disc = [](double side) { return testing::rectangle(side, side); };  // its size counts
+
   geometry::Scene checker;
   checker.window = Box3(Vec3::Zero(), Vec3(40, 40, 0));
   checker.categories.push_back({"default"});
