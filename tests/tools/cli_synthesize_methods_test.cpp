@@ -43,6 +43,34 @@ TEST(CliSynthesizeMaEm, OutputsCarryTheMethodsRecordAndRepeat) {
   EXPECT_EQ(nlohmann::json::parse(stats.out).at("boundary"), "torus");
 }
 
+// The tile baseline: the bubbles tile repeated over 3 x 3 tiles, whatever the seed; `stats
+// --against` finds it a copy (every novelty measure 1, against chance levels far below) and says it
+// repeats the exemplar. Options of the fitted and grown methods are refused.
+TEST(CliSynthesizeTile, TheExemplarRepeatedIsTheBaselineStatsCallsACopy) {
+  const testing::TempDir dir;
+  const std::string tile = data("third-party/hero-patterns/bubbles.svg");
+  const std::string out = dir.file("tile.svg").string();
+  const Result r = run_cli({"synthesize", tile, "--tile", "--method", "tile", "-o", out, "--size",
+                            "300,300", "--seed", "5", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("tile: the exemplar repeated over the output"), std::string::npos) << r.out;
+  const Result stats = run_cli({"stats", out, "--against", tile, "--tile", "--json"});
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  const nlohmann::json j = nlohmann::json::parse(stats.out);
+  EXPECT_EQ(j.at("elements"), 9 * 17);
+  const nlohmann::json& novelty = j.at("novelty");
+  for (const char* measure : {"copy", "patch", "largest_patch", "repetition"}) {
+    EXPECT_DOUBLE_EQ(novelty.at("output").at(measure).get<double>(), 1.0) << measure;
+    EXPECT_LT(novelty.at("chance").at(measure).get<double>(), 0.2) << measure;
+  }
+  EXPECT_TRUE(novelty.at("repeats_exemplar").get<bool>());
+  const Result text = run_cli({"stats", out, "--against", tile, "--tile"});
+  EXPECT_NE(text.out.find("repeats the exemplar"), std::string::npos) << text.out;
+  expect_one_line_error(run_cli({"synthesize", tile, "--tile", "--method", "tile", "-o",
+                                 dir.file("x.svg").string(), "--size", "300,300", "--ratio", "3"}),
+                        2, "--ratio");
+}
+
 TEST(CliSynthesizeMaEm, OptionsOfTheOtherMethodAndNonsenseAreRefused) {
   const testing::TempDir dir;
   const std::string out = dir.file("em.svg").string();
