@@ -89,6 +89,32 @@ def row(path, seed, args, pictures):
             f"| {order['shown'] if order else '-'} | {seconds:.1f} | {', '.join(failed) or 'none'} |")
 
 
+def shown_arguments(args):
+    """The command's arguments as the header shows them: the folders by --name when given."""
+    shown = [f"--seeds {args.seeds}", f"--timeout {args.timeout:g}"]
+    if args.tile:
+        shown.append("--tile")
+    return " ".join(shown + [args.out] + ([args.name] if args.name else args.dirs))
+
+
+def summary(rows):
+    """One paragraph of totals over the rows that were made."""
+    made = [[x.strip() for x in r.strip().strip("|").split("|")] for r in rows]
+    made = [c for c in made if len(c) >= 14]
+    if not made:
+        return ["", "No row could be made."]
+    density = [float(c[8].lstrip("×")) for c in made]
+    seconds = [float(c[12]) for c in made]
+    births = sum(1 for c in made if not c[2].startswith("0 "))
+    deaths = sum(1 for c in made if not c[3].startswith("0 "))
+    repeats = sum(1 for c in made if "novelty" in c[13])
+    return ["", f"Totals over {len(made)} of {len(rows)} rows: births accepted in {births}, deaths "
+            f"in {deaths}; density within ×0.9–×1.1 in {sum(0.9 <= d <= 1.1 for d in density)}; "
+            f"'repeats the exemplar' in {repeats}; overlapping pairs in "
+            f"{sum(1 for c in made if c[10] != '0')}; seconds {min(seconds):.1f} to "
+            f"{max(seconds):.1f}, over 30 s in {sum(s > 30 for s in seconds)}."]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", default="1,2,3,4")
@@ -96,6 +122,7 @@ def main():
     parser.add_argument("--tile", action="store_true")
     parser.add_argument("out")
     parser.add_argument("dirs", nargs="+")
+    parser.add_argument("--name", help="how the header names the folders (default: as given)")
     args = parser.parse_args()
     pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "novelty")
     os.makedirs(pictures, exist_ok=True)
@@ -104,7 +131,7 @@ def main():
     lines = [
         "# Novelty of default outputs",
         "",
-        f"Command: `python3 scripts/novelty_table.py {' '.join(sys.argv[1:])}` at commit {commit}, "
+        f"Command: `python3 scripts/novelty_table.py {shown_arguments(args)}` at commit {commit}, "
         f"{datetime.date.today().isoformat()}.",
         "",
         "Each output: `shapeproc synthesize EXEMPLAR --size 3W,3H --seed S` with every other flag at "
@@ -128,6 +155,7 @@ def main():
                     line = f"| {file} | {seed} | error: {e} |"
                 print(line, flush=True)
                 lines.append(line)
+    lines += summary([l for l in lines if l.startswith("| ") and not l.startswith("| exemplar")])
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")
 
