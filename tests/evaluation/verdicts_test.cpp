@@ -83,8 +83,11 @@ Judgement judge_against(const geometry::Scene& exemplar, const geometry::Scene& 
 TEST(Verdicts, TheExemplarItselfPassesEveryCheckButNovelty) {
   const geometry::Scene exemplar = squares(20, 10.0, 200.0);
   const Judgement j = judge_against(exemplar, exemplar);
-  for (const Verdict& v : j.verdicts)
-    if (v.metric != "novelty") EXPECT_NE(v.outcome, Outcome::fail) << v.metric << " " << v.shown;
+  for (const Verdict& v : j.verdicts) {
+    if (v.metric != "novelty") {
+      EXPECT_NE(v.outcome, Outcome::fail) << v.metric << " " << v.shown;
+    }
+  }
   EXPECT_EQ(j["novelty"].outcome, Outcome::fail);
   EXPECT_EQ(j["novelty"].problem, "repeats the exemplar");
   EXPECT_DOUBLE_EQ(j["novelty"].value, 1.0);

@@ -349,10 +349,11 @@ TEST(CliSynthesize, StartsEmptyUnlessTheExemplarIsAskedFor) {
   EXPECT_NE(sought.find("[&quot;start&quot;,&quot;empty&quot;]"), std::string::npos);
   EXPECT_NE(sought.find("[&quot;burn_in&quot;,&quot;compressing&quot;]"), std::string::npos);
   EXPECT_GT(sought_count, 0);
-  if (sought_count < 0.9 * 16)
+  if (sought_count < 0.9 * 16) {
     EXPECT_NE(sought_said.find("warning: the chain reached " + std::to_string(sought_count)),
               std::string::npos)
         << sought_said;
+  }
   const auto [held, held_count, held_said] = run("held.svg", {"--start", "exemplar"});
   EXPECT_NE(held.find("[&quot;start&quot;,&quot;exemplar&quot;]"), std::string::npos);
   EXPECT_NE(held_said.find("start: the exemplar tiled over the output (16 elements)"),
@@ -409,10 +410,11 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   const int count = nlohmann::json::parse(stats.out).at("elements").get<int>();
   EXPECT_GT(count, 8);
   EXPECT_LE(count, 32);
-  if (count < 0.9 * 32)
+  if (count < 0.9 * 32) {
     EXPECT_NE(synthesised.out.find("warning: the chain reached " + std::to_string(count)),
               std::string::npos)
         << synthesised.out;
+  }
   // An output torus under twice the reach (range 57, dots 4 wide: 2 (57 + 4) = 123) is said to
   // be one (`sample` and `synthesize` share the check; the fitted model spares a fit per run).
   const Result small =
