@@ -38,8 +38,8 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                   (options_.compression.release_steps > 0 &&
                    2 * options_.compression.release_steps < options_.iterations),
               "sample",
-              "with given steps the compressing burn-in needs its own steps, fewer than half of "
-              "them");
+              "with given steps the compressing burn-in needs its own release steps, fewer than "
+              "half of them");
   core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
               "trace and observation intervals must be >= 0");
 
@@ -70,29 +70,32 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                         : range > 0               ? 0.5 * range
                                     : 0.05 * domain_.sizes().head(dimension).minCoeff();
   region_ = std::make_unique<const ChainRegion>(std::move(region));
+  check_compression(options_.compression);
+  if (options_.compression.enabled && range > 0) prepare_growth();
+}
+
+// The growth stages' models and the short, frequent shifts they move elements by.
+void ShapeProcessSampler::prepare_growth() {
   const CompressionOptions& c = options_.compression;
-  CompressionSchedule check(c);  // checks the options
-  if (c.enabled && tables_->interaction->range() > 0) {
-    // An element its neighbours' grown hard cores now cover is looked for a place within twice
-    // the growth of one stage of the largest hard core.
-    double largest = 0.0;
-    for (const model::PairInteraction& pair : model_.interactions)
-      for (const model::AxisParameters& axis : pair.axes)
-        if (!axis.thresholds.empty()) largest = std::max(largest, axis.thresholds.front());
-    push_radius_ =
-        std::max(2.0 * (1.0 - c.start_scale) / std::max(1, c.stages) * largest, 1e-3 * reach());
-    // Near a packing a shift of half the range is always refused: the growth moves elements
-    // by little, often, so that they settle into the room the grown cores leave.
-    ChainRegion local = *region_;
-    local.shift_radius = push_radius_;
-    local.shift_probability = kGrowthShiftProbability;
-    growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
-    for (int k = 0; k < c.stages; ++k) {
-      const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
-      growth_scales_.push_back(scale);
-      growth_.push_back(
-          std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
-    }
+  // An element its neighbours' grown hard cores now cover is looked for a place within twice
+  // the growth of one stage of the largest hard core.
+  double largest = 0.0;
+  for (const model::PairInteraction& pair : model_.interactions)
+    for (const model::AxisParameters& axis : pair.axes)
+      if (!axis.thresholds.empty()) largest = std::max(largest, axis.thresholds.front());
+  push_radius_ =
+      std::max(2.0 * (1.0 - c.start_scale) / std::max(1, c.stages) * largest, 1e-3 * reach());
+  // Near a packing a shift of half the range is always refused: the growth moves elements by
+  // little, often, so that they settle into the room the grown cores leave.
+  ChainRegion local = *region_;
+  local.shift_radius = push_radius_;
+  local.shift_probability = kGrowthShiftProbability;
+  growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
+  for (int k = 0; k < c.stages; ++k) {
+    const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
+    growth_scales_.push_back(scale);
+    growth_.push_back(
+        std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
   }
 }
 

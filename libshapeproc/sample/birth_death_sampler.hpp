@@ -139,6 +139,7 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   std::vector<double> growth_scales_;
   double push_radius_ = 0.0;
   std::unique_ptr<const ChainRegion> growth_region_;  // the region with short, frequent shifts
+  void prepare_growth();
   // The growth stages from `start`: the elements they end with; adds their steps to `steps`.
   std::vector<geometry::Element> grow(const std::vector<geometry::Element>& start,
                                       core::Random& random, const synthesis::ChainControl& control,

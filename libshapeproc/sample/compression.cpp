@@ -22,12 +22,16 @@ model::ShapeProcessModel with_scaled_hard_cores(const model::ShapeProcessModel& 
   return scaled;
 }
 
-CompressionSchedule::CompressionSchedule(const CompressionOptions& options) : options_(options) {
+void check_compression(const CompressionOptions& options) {
   core::check(options.steps >= 0 && options.release_steps >= 0 && options.log_boost >= 0 &&
                   options.stages >= 0 && options.start_scale > 0 && options.start_scale <= 1,
               "sample",
               "the compressing burn-in needs steps >= 0, a boost >= 0, stages >= 0 and a start "
               "scale in (0, 1]");
+}
+
+CompressionSchedule::CompressionSchedule(const CompressionOptions& options) : options_(options) {
+  check_compression(options);
   if (!options.enabled) return;
   phase_ = Phase::compress;
   boost_ = options.log_boost;

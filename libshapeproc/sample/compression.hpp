@@ -44,6 +44,9 @@ struct CompressionOptions {
 model::ShapeProcessModel with_scaled_hard_cores(const model::ShapeProcessModel& model,
                                                 double scale);
 
+// Throws core::ArgumentError for options out of range.
+void check_compression(const CompressionOptions& options);
+
 class CompressionSchedule {
  public:
   explicit CompressionSchedule(const CompressionOptions& options);
