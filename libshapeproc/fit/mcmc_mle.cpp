@@ -75,8 +75,8 @@ constexpr double kMaxOvershoot = 10;  // stationary window: the largest step div
 // errors are then inflated by the disagreement, and small z would be no evidence.
 constexpr double kMaxRHat = 1.1;
 // A gap within the tolerance counts only when every free statistic's sample is worth this many
-// independent observations (effective_sample_size.hpp): chains held at a packed exemplar that
-// mix slowly (dashes-rows: 3 from 4 chains of 50,000 steps) give errors as large as the gaps
+// independent observations (effective_sample_size.hpp): chains at a packed exemplar's density
+// that mix slowly give errors as large as the gaps
 // themselves, and a test passed with them says nothing. Such a sample gets more chains at the same
 // θ (more_chains), pooled with its own, up to kMostChainFactor times the setting's; the
 // simulations after it run that many, half of them first (first_round).

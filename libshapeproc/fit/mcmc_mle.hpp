@@ -54,7 +54,8 @@ enum class WindowModel {
   // solves E_θ[t_W(X)] = t(z) for the statistics t_W of the window's pairs, those that do not
   // meet across the torus's seam (fit::stationary_domain).
   stationary,
-  // stationary, except for a packed exemplar (its chains held at it): own. The default, as for
+  // stationary, except for a packed exemplar (its chains compress from empty): own. The default, as
+  // for
   // the command line's --edge auto.
   automatic,
 };

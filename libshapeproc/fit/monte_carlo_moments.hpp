@@ -52,8 +52,8 @@ struct StatisticsMoments {
   std::vector<double> mean;            // by θ index
   std::vector<double> standard_error;  // of the mean (effective_sample_size.hpp)
   // Per statistic, the observations' worth in independent ones (effective_sample_size.hpp): small
-  // where the chains sit in different states and rarely leave them (a packed exemplar held by
-  // some chains and lost by others), so that no mean of this sample is yet to be trusted. The
+  // where the chains sit in different states and rarely leave them (a packed state reached by
+  // some chains and not by others), so that no mean of this sample is yet to be trusted. The
   // number of observations for a constant statistic; empty after reweighting.
   std::vector<double> effective_size;
   std::vector<double> covariance;  // row-major, parameters x parameters
