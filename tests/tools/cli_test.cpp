@@ -415,6 +415,10 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
               std::string::npos)
         << synthesised.out;
   }
+  // The compressing burn-in needs a few steps of its own: fewer are refused, saying why.
+  expect_one_line_error(run_cli({"sample", model, "-o", dir.file("few.svg").string(), "--size",
+                                 "240,48", "--iterations", "3"}),
+                        2, "--iterations: this model's outputs start with the compressing burn-in");
   // An output torus under twice the reach (range 57, dots 4 wide: 2 (57 + 4) = 123) is said to
   // be one (`sample` and `synthesize` share the check; the fitted model spares a fit per run).
   const Result small =

@@ -242,8 +242,13 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
         << " elements): the output begins as a copy of the exemplar, which the chain then moves\n";
   } else {
     options.compression = fit::output_compression(model);
-    if (options.compression.enabled && options.iterations > 0)
+    if (options.compression.enabled && options.iterations > 0) {
+      if (options.iterations < 8)
+        throw core::UsageError(
+            "--iterations: this model's outputs start with the compressing burn-in (its fit "
+            "found a packed exemplar), which needs at least 8 steps");
       options.compression.release_steps = options.iterations / 4;
+    }
   }
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
