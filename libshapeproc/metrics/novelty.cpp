@@ -19,6 +19,8 @@ using geometry::Vec3;
 
 // A lattice exemplar holds at most this many elements per primitive cell (its basis).
 constexpr int kLatticeBasis = 2;
+// Two shapes are the same as drawn when their boxes' sides also agree within this (side_distance).
+constexpr double kSideTolerance = 0.2;
 // Candidate translations scored on every output element after the screening.
 constexpr std::size_t kFinalists = 8;
 
@@ -33,16 +35,41 @@ struct SizeClasses {
   std::vector<int> exemplar, output;  // per element
 };
 
+// A shape's size and the sides of its bounding box as drawn: the box tells a turned shape from
+// the same shape unturned (a segment across from one along).
+struct ShapeKey {
+  geometry::ShapeSize size;
+  Vec3 sides = Vec3::Zero();
+};
+
+ShapeKey shape_key(const geometry::Shape& shape) {
+  ShapeKey key{geometry::shape_size(shape), Vec3::Zero()};
+  const geometry::Box3 box = geometry::bounding_box(shape);
+  if (!box.isEmpty()) key.sides = box.sizes();
+  return key;
+}
+
+// Σ |log ratio| of the box's sides, each side counted from a quarter of the radius up, so that a
+// thin shape's near-zero side does not tell apart turns of a few degrees.
+double side_distance(const ShapeKey& a, const ShapeKey& b) {
+  const double floor = 0.25 * std::max({a.size.radius, b.size.radius, 1e-12});
+  double d = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+    d += std::abs(std::log((a.sides[axis] + floor) / (b.sides[axis] + floor)));
+  return d;
+}
+
 SizeClasses size_classes(const geometry::Scene& exemplar, const geometry::Scene& output,
                          double tolerance) {
-  std::vector<geometry::ShapeSize> representatives;
+  std::vector<ShapeKey> representatives;
   auto classify = [&](const geometry::Scene& scene) {
     std::vector<int> of_shape(scene.shapes.size(), -1);
     for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
-      const geometry::ShapeSize size = geometry::shape_size(scene.shapes[s]);
+      const ShapeKey size = shape_key(scene.shapes[s]);
       int found = -1;
       for (std::size_t k = 0; k < representatives.size() && found < 0; ++k)
-        if (geometry::size_distance(size, representatives[k]) <= tolerance)
+        if (geometry::size_distance(size.size, representatives[k].size) <= tolerance &&
+            side_distance(size, representatives[k]) <= kSideTolerance)
           found = static_cast<int>(k);
       if (found < 0) {
         found = static_cast<int>(representatives.size());

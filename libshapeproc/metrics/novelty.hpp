@@ -38,8 +38,9 @@ namespace shapeproc::metrics {
 struct NoveltyOptions {
   double tolerance = 0.0;  // τ; 0: a quarter of the exemplar's mean spacing
   int neighbours = 4;      // k of the patch test
-  // Two shapes are the same size when geometry::size_distance is at most this (about 5% apart in
-  // radius and in area).
+  // Two shapes are the same (as drawn, turn included) when geometry::size_distance is at most
+  // this (about 5% apart in radius and in area) and their bounding boxes' sides agree (within
+  // about 20% of each side counted from a quarter of the radius).
   double size_tolerance = 0.1;
   int chance_draws = 4;  // random placements averaged for the chance levels
   std::uint64_t seed = 1;

@@ -116,6 +116,21 @@ TEST(Novelty, ACheckerboardOfTwoShapesIsALatticeButEveryShapeApartIsNot) {
   EXPECT_FALSE(is_lattice_exemplar(distinct));
 }
 
+// Equal bars on a grid: all along, a lattice; turned every way at random (across or along), the
+// same sizes make no lattice, since a turned shape is another shape as drawn.
+TEST(Novelty, TurnedShapesAreOtherShapes) {
+  geometry::Scene bars;
+  bars.window = Box3(Vec3::Zero(), Vec3(80, 80, 0));
+  bars.categories.push_back({"default"});
+  bars.shapes = {testing::rectangle(12, 2), testing::rectangle(2, 12)};
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) bars.elements.push_back({0, 0, Vec3(10 + 20 * i, 10 + 20 * j, 0)});
+  EXPECT_TRUE(is_lattice_exemplar(bars));
+  core::Random random(4);
+  for (geometry::Element& e : bars.elements) e.shape = static_cast<int>(random.index(2));
+  EXPECT_FALSE(is_lattice_exemplar(bars));
+}
+
 TEST(Novelty, BadScenesAreRefused) {
   geometry::Scene empty = irregular_tile();
   empty.elements.clear();
