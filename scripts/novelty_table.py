@@ -17,6 +17,7 @@ import datetime
 import json
 import os
 import re
+import struct
 import subprocess
 import sys
 import tempfile
@@ -38,6 +39,20 @@ def window_of(path, tile):
         raise RuntimeError(p.stderr.strip().splitlines()[-1] if p.stderr else "info failed")
     w = json.loads(p.stdout)["window"]
     return [hi - lo for lo, hi in zip(w["min"], w["max"])]
+
+
+def strip_text_chunks(png):
+    """Drops a PNG's text chunks: they hold the command line, with this machine's paths."""
+    with open(png, "rb") as f:
+        data = f.read()
+    out, i = [data[:8]], 8
+    while i < len(data):
+        length = struct.unpack(">I", data[i:i + 4])[0]
+        if data[i + 4:i + 8] not in (b"tEXt", b"iTXt", b"zTXt"):
+            out.append(data[i:i + 12 + length])
+        i += 12 + length
+    with open(png, "wb") as f:
+        f.write(b"".join(out))
 
 
 def counter(text, name):
@@ -68,6 +83,8 @@ def row(path, seed, args, pictures):
         if p.returncode != 0:
             last = (p.stderr.strip().splitlines() or ["?"])[-1]
             return f"| {name} | {seed} | failed: {last} |"
+        if os.path.exists(png):
+            strip_text_chunks(png)
         q, _ = run(["report", path, out, *reader, "-o", os.path.join(work, "report")], 600)
         if q.returncode != 0:
             return f"| {name} | {seed} | report failed: {(q.stderr.strip().splitlines() or ['?'])[-1]} |"
