@@ -1,6 +1,6 @@
 // Fit times on the shipped exemplars (run ./build/benchmarks/fit_benchmarks): the whole fit at the
 // defaults, the pseudo-likelihood fit and then the maximum-likelihood fit by MCMC from it (4 chains
-// on the machine's cores). Issue 17's target: under 5 s per 2D exemplar on 2 cores.
+// on the machine's cores). The target: under 5 s per 2D exemplar on 2 cores.
 #include <benchmark/benchmark.h>
 
 #include <nlohmann/json.hpp>
