@@ -65,15 +65,15 @@ SizeClasses size_classes(const geometry::Scene& exemplar, const geometry::Scene&
   auto classify = [&](const geometry::Scene& scene) {
     std::vector<int> of_shape(scene.shapes.size(), -1);
     for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
-      const ShapeKey size = shape_key(scene.shapes[s]);
+      const ShapeKey key = shape_key(scene.shapes[s]);
       int found = -1;
       for (std::size_t k = 0; k < representatives.size() && found < 0; ++k)
-        if (geometry::size_distance(size.size, representatives[k].size) <= tolerance &&
-            side_distance(size, representatives[k]) <= kSideTolerance)
+        if (geometry::size_distance(key.size, representatives[k].size) <= tolerance &&
+            side_distance(key, representatives[k]) <= kSideTolerance)
           found = static_cast<int>(k);
       if (found < 0) {
         found = static_cast<int>(representatives.size());
-        representatives.push_back(size);
+        representatives.push_back(key);
       }
       of_shape[s] = found;
     }

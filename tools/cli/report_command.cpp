@@ -104,10 +104,8 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   std::vector<Evaluation> evals;
   for (const std::string& file : request.outputs) {
     outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
-    evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics));
     // Novelty against the drawing itself, not its repeat (whose period may be the output's).
-    evals.back().novelty =
-        metrics::measure_novelty(tile, outputs.back().scene, outputs.back().boundary);
+    evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics, &tile));
   }
 
   evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(

@@ -261,7 +261,8 @@ nlohmann::json MetricFlags::to_json() const {
 
 Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
                     const EvaluatedScene* reference,
-                    const metrics::SceneStatistics* reference_statistics) {
+                    const metrics::SceneStatistics* reference_statistics,
+                    const geometry::Scene* drawing) {
   Evaluation e;
   if (reference && reference->scene.dimension != scene.scene.dimension) {
     throw core::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " +
@@ -275,7 +276,8 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
     e.comparison = metrics::compare(e.statistics, *reference_statistics);
     e.neighbourhood = metrics::average_neighbourhood_distance(
         scene.scene, scene.boundary, reference->scene, reference->boundary, flags.neighbourhood);
-    e.novelty = metrics::measure_novelty(reference->scene, scene.scene, scene.boundary);
+    e.novelty = metrics::measure_novelty(drawing ? *drawing : reference->scene, scene.scene,
+                                         scene.boundary);
   }
   return e;
 }

@@ -57,9 +57,12 @@ struct Evaluation {
 };
 
 // Statistics of `scene`; against a reference, at the reference's range and compared with it.
+// Novelty is measured against `drawing` when given (a tile the reference repeats), else against
+// the reference's scene.
 Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
                     const EvaluatedScene* reference = nullptr,
-                    const metrics::SceneStatistics* reference_statistics = nullptr);
+                    const metrics::SceneStatistics* reference_statistics = nullptr,
+                    const geometry::Scene* drawing = nullptr);
 
 nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& evaluation);
 
