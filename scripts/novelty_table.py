@@ -56,8 +56,12 @@ def strip_text_chunks(png):
 
 
 def counter(text, name):
-    m = re.search(name + r"\D*(\d+)/(\d+)", text)
-    return f"{int(m.group(1)):,} / {int(m.group(2)):,}" if m else "-"
+    """The sampler's counter `name` (accepted / proposed), and the growth stages' own in brackets
+    where the compressing burn-in ran."""
+    m = re.search(r"(?<!growth )" + name + r"\D*(\d+)/(\d+)", text)
+    shown = f"{int(m.group(1)):,} / {int(m.group(2)):,}" if m else "-"
+    g = re.search(r"growth " + name + r"\D*(\d+)/(\d+)", text)
+    return shown + (f" (growth {int(g.group(1)):,} / {int(g.group(2)):,})" if g else "")
 
 
 def verdict(entry, check):
@@ -155,7 +159,7 @@ def main():
         "its default, judged by `shapeproc report` (docs/metrics.md). Chance levels in brackets: "
         "the same measure of the output's elements placed at random.",
         "",
-        "| exemplar | seed | births accepted | deaths accepted | copy share (chance) | "
+        "| exemplar | seed | births accepted (in the growth stages) | deaths accepted | copy share (chance) | "
         "patch copy share (chance) | largest copied patch | repetition (chance) | density | "
         "class mix | overlapping pairs | order | seconds | failed checks |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",

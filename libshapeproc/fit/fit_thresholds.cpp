@@ -16,30 +16,61 @@ using geometry::Element;
 
 namespace {
 
-// Bands whose quantiles coincide (up to this share of the width below) are degenerate.
+// Quantiles closer than this share of the shell half-width below are one distance: a drawing's
+// lattice repeats its distances only up to the rounding of its coordinates (hexagons: 2.015 and
+// 2.020 px for one shell).
+constexpr double kCoincide = 0.2;
+// A hair, as a share of the same half-width.
 constexpr double kDegenerate = 1e-6;
-// Their width instead, as a share of the exemplar's mean spacing (|W| / n)^(1/dim).
-constexpr double kLatticeBand = 0.01;
+// The half-width of a shell's band, as a share of the exemplar's mean spacing (|W| / n)^(1/dim).
+constexpr double kShellJitter = 0.1;
 
-// Quantile thresholds. A band whose two quantiles coincide (a lattice, whose pairs repeat one
-// distance: hexagons gave [2.0155443424633040, 2.0155443424633073) holding 3 pairs) is widened
-// to `width`: a band narrower than the rounding of a shift can neither keep its pairs nor regain
-// them, and no γ makes the sampler hold such an exemplar.
+// Quantile thresholds. Where several quantiles coincide, the distance d they share is a shell of
+// a lattice (hexagons gave [2.0155443424633040, 2.0155443424633073) for three quantiles): its
+// pairs repeat one distance, and a band narrower than a shift's rounding could neither keep them
+// nor regain them. The shell gets the band [d − w, d + w) of half-width `w` instead: its γ holds
+// elements near the lattice distance, grains and defects allowed, and where the shell is the
+// closest one the hard core sits at d − w, so that a chain from empty has room to order.
 std::vector<double> thresholds_from(std::vector<double> distances,
-                                    const std::vector<double>& quantiles, double width) {
+                                    const std::vector<double>& quantiles, double w) {
   std::sort(distances.begin(), distances.end());
-  std::vector<double> thresholds;
+  std::vector<double> values;  // distinct quantile values, with how many quantiles share each
+  std::vector<int> shared;
   for (double q : quantiles) {
-    double d = quantile(distances, q);
-    if (!thresholds.empty() && d - thresholds.back() < kDegenerate * width)
-      d = thresholds.back() + width;
-    thresholds.push_back(d);
+    const double d = quantile(distances, q);
+    if (!values.empty() && d - values.back() < kCoincide * w) {
+      ++shared.back();
+    } else {
+      values.push_back(d);
+      shared.push_back(1);
+    }
   }
-  // The hard core sits a hair below the smallest distance, so that the exemplar's closest pairs,
-  // measured again after a translation (a tile repeated over an output), do not fall below it by
-  // rounding; a hard core at 0 (touching) stays at 0.
-  if (!thresholds.empty() && thresholds.front() > 0)
-    thresholds.front() = std::max(0.0, thresholds.front() - kDegenerate * width);
+  std::vector<double> thresholds;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const double d = values[k];
+    const double floor = thresholds.empty() ? 0.0 : thresholds.back() + kDegenerate * w;
+    if (shared[k] == 1) {
+      // The hard core sits a hair below the smallest distance, so that the exemplar's closest
+      // pairs, measured again after a translation, do not fall below it by rounding; a hard core
+      // at 0 (touching) stays at 0.
+      thresholds.push_back(k == 0 ? std::max(0.0, d - kDegenerate * w) : std::max(floor, d));
+      continue;
+    }
+    const double next = k + 1 < values.size() ? values[k + 1] : d + 2 * w;
+    thresholds.push_back(std::max(floor, d - w));
+    thresholds.push_back(
+        std::max(thresholds.back() + kDegenerate * w, std::min(d + w, 0.5 * (d + next))));
+  }
+  // A band that holds no pair (above a shell, up to a quantile that falls on the next shell's
+  // distance, which its half-open band leaves out) would get γ = 0: a forbidden ring where the
+  // exemplar merely has no pair. It joins the band above it, or the range ends below it.
+  const auto pairs_in = [&](double lo, double hi) {
+    return std::lower_bound(distances.begin(), distances.end(), hi) -
+           std::lower_bound(distances.begin(), distances.end(), lo);
+  };
+  for (std::size_t k = thresholds.size(); k-- > 2;)
+    if (pairs_in(thresholds[k - 1], thresholds[k]) == 0)
+      thresholds.erase(thresholds.begin() + static_cast<std::ptrdiff_t>(k));
   return thresholds;
 }
 
@@ -142,8 +173,8 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
     all_distances.push_back(p.measurement.distance);
   }
   const bool fixed_thresholds = !options.thresholds.empty();
-  const double lattice_band =
-      kLatticeBand *
+  const double shell_jitter =
+      kShellJitter *
       std::pow(exemplar.window_measure() / static_cast<double>(exemplar.elements.size()),
                1.0 / exemplar.dimension);
   if (!fixed_thresholds && all_distances.size() < 2) {
@@ -192,7 +223,7 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
               noted_pool = true;
             }
           }
-          axis.thresholds = thresholds_from(*source, options.quantiles, lattice_band);
+          axis.thresholds = thresholds_from(*source, options.quantiles, shell_jitter);
         }
         const std::size_t bands = axis.thresholds.size() - 1;
         axis.gammas.assign(bands, 1.0);

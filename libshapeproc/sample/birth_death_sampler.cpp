@@ -102,7 +102,7 @@ void ShapeProcessSampler::prepare_growth() {
 std::vector<Element> ShapeProcessSampler::grow(const std::vector<Element>& start,
                                                core::Random& random,
                                                const synthesis::ChainControl& control,
-                                               long long& steps) const {
+                                               long long& steps, MoveCounts& moves) const {
   std::vector<Element> state = start;
   for (std::size_t k = 0; k < growth_.size(); ++k) {
     BirthDeathChain chain(*growth_[k], *growth_region_, random, options_.fixed, {});
@@ -114,6 +114,7 @@ std::vector<Element> ShapeProcessSampler::grow(const std::vector<Element>& start
       if (s % 10000 == 0 && control.cancelled()) throw core::Cancelled();
     }
     steps += stage;
+    moves += chain.moves();
     state = chain.free_elements();
   }
   return state;
@@ -140,7 +141,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   SampleResult result;
   long long growth_steps = 0;
   std::vector<Element> grown;
-  if (!growth_.empty()) grown = grow(options_.start, random, control, growth_steps);
+  if (!growth_.empty())
+    grown = grow(options_.start, random, control, growth_steps, result.growth_moves);
   BirthDeathChain chain(*tables_, *region_, random, options_.fixed,
                         growth_.empty() ? options_.start : std::vector<Element>{});
   if (!growth_.empty()) chain.add_or_place_near(grown, push_radius_, kPushAttempts);
@@ -235,6 +237,10 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                               std::to_string(sampled.compression_steps));
     out.counters.emplace_back("elements after compression",
                               std::to_string(sampled.compressed_count));
+    const MoveCounts& g = sampled.growth_moves;
+    out.counters.emplace_back("growth births accepted",
+                              ratio(g.births_accepted, g.births_proposed));
+    out.counters.emplace_back("growth deaths", ratio(g.deaths_accepted, g.deaths_proposed));
   }
   if (sampled.cells > 0) {
     out.counters.emplace_back("cells", std::to_string(sampled.cells));

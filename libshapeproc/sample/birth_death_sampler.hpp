@@ -90,6 +90,9 @@ struct SampleResult {
   // without one).
   long long compression_steps = 0;
   int compressed_count = 0;
+  // The moves of its growth stages (their own chains; `moves` counts the chain at the model's
+  // hard cores, whose first phases end the burn-in).
+  MoveCounts growth_moves;
   // The automatic rule's last check: the mean counts of the two quarters it compared and the
   // standard error of their difference (zero with --iterations).
   CountTrend trend;
@@ -140,10 +143,11 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   double push_radius_ = 0.0;
   std::unique_ptr<const ChainRegion> growth_region_;  // the region with short, frequent shifts
   void prepare_growth();
-  // The growth stages from `start`: the elements they end with; adds their steps to `steps`.
+  // The growth stages from `start`: the elements they end with; adds their steps to `steps` and
+  // their moves to `moves`.
   std::vector<geometry::Element> grow(const std::vector<geometry::Element>& start,
                                       core::Random& random, const synthesis::ChainControl& control,
-                                      long long& steps) const;
+                                      long long& steps, MoveCounts& moves) const;
 };
 
 // One chain on `domain`, for one-off use.

@@ -372,12 +372,11 @@ TEST(FitExistence, PackedExemplarsFollowTheDataShareAndSettle) {
   EXPECT_GT(usual.model.categories[0].beta_standard_error, 0.0);
 }
 
-// A lattice repeats one distance, so the quantiles 0, 0.1 and 0.2 of a 3 x 3 square lattice's
-// pairs on its 30 x 30 torus (18 at 10, 18 at 14.1) coincide at 10. Bands of zero width could
-// neither keep their pairs nor regain them; they are widened to 1% of the mean spacing (0.1), and
-// the hard core sits a hair below 10, so that the lattice's own pairs, measured again after a
-// translation, do not fall below it by rounding.
-TEST(FitThresholds, ALatticesCoincidingQuantilesBecomeBandsOfAHundredthOfTheSpacing) {
+// A lattice's shell (quantiles that coincide: a 3 × 3 grid of spacing 10 on its torus has 18 pairs
+// at 10 and 18 at 14.14) becomes the band [d − w, d + w), w a tenth of the mean spacing: the hard
+// core sits w below the lattice distance. A band above it that would hold no pair (up to the
+// quantile 14.14, which its half-open band leaves out) is dropped rather than given γ = 0.
+TEST(FitThresholds, ALatticesShellIsABandAroundItsDistanceAndNoBandIsEmpty) {
   std::vector<Vec3> lattice;
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) lattice.emplace_back(5 + 10 * i, 5 + 10 * j, 0);
@@ -387,15 +386,16 @@ TEST(FitThresholds, ALatticesCoincidingQuantilesBecomeBandsOfAHundredthOfTheSpac
   options.boundary = geometry::Boundary::torus;
   options.measurement.directions = 1;
   options.quadrature = 8;
-  const FitResult fit = fit_shape_process(scene, options);
-  const model::AxisParameters& axis = fit.model.interactions.at(0).axes.at(0);
-  ASSERT_EQ(axis.thresholds.size(), 3u);
-  EXPECT_LT(axis.thresholds[0], 10.0);
-  EXPECT_GT(axis.thresholds[0], 10.0 - 1e-6);
-  EXPECT_NEAR(axis.thresholds[1], 10.1, 1e-6);
-  EXPECT_NEAR(axis.thresholds[2], 10.2, 1e-6);
-  EXPECT_EQ(axis.observed_pairs[0], 18);
-  EXPECT_EQ(axis.observed_pairs[1], 0);
+  for (const std::vector<double>& quantiles :
+       {std::vector<double>{0.0, 0.1, 0.2}, std::vector<double>{0.0, 0.1, 0.2, 0.9}}) {
+    options.quantiles = quantiles;
+    const FitResult fit = fit_shape_process(scene, options);
+    const model::AxisParameters& axis = fit.model.interactions.at(0).axes.at(0);
+    ASSERT_EQ(axis.thresholds.size(), 2u);
+    EXPECT_NEAR(axis.thresholds[0], 9.0, 1e-9);
+    EXPECT_NEAR(axis.thresholds[1], 11.0, 1e-9);
+    EXPECT_EQ(axis.observed_pairs[0], 18);
+  }
 }
 
 // The border rule is robust to rounding: on the unit window with range 0.1, a point at x = 0.9 is
