@@ -1,8 +1,8 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 
-#include <chrono>
 #include <cmath>
 
+#include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/fit/existence_check.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
@@ -15,13 +15,7 @@ namespace shapeproc::fit {
 
 int default_quadrature_cells(int dimension) { return dimension == 3 ? 8 : 48; }
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 const char* edge_name(const FitOptions& options) {
   if (options.boundary == geometry::Boundary::torus) return "periodic";
@@ -43,13 +37,13 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   // The exemplar's window as a domain: a torus for the periodic edge treatment.
   const geometry::Domain window(exemplar.window, exemplar.dimension, options.boundary);
   const bool periodic = window.periodic();
-  auto clock = std::chrono::steady_clock::now();
+  core::Stopwatch clock;
   const geometry::PairMeasurer measurer(exemplar, model.measurement_options(periodic));
-  result.seconds.proxies = seconds_since(clock);
+  result.seconds.proxies = clock.seconds();
   stage("measurements");
-  clock = std::chrono::steady_clock::now();
+  clock.restart();
   const std::vector<geometry::PairRecord> pairs = measurer.all_pairs(exemplar.elements);
-  result.seconds.measurements = seconds_since(clock);
+  result.seconds.measurements = clock.seconds();
 
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
   assign_shape_classes(model, exemplar);
@@ -60,7 +54,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   result.data_points = statistics.data_points;
 
   stage("quadrature");
-  clock = std::chrono::steady_clock::now();
+  clock.restart();
   const QuadratureDesign quadrature = quadrature_design(exemplar, options, region, measurer,
                                                         interaction, statistics, shapes_of, window);
   result.quadrature_cells = quadrature.cells;
@@ -72,18 +66,18 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   PseudoLikelihoodDesign design = quadrature.design;
   merge_equal_points(design);
   if (existence) merge_equal_points(heavier);
-  result.seconds.quadrature = seconds_since(clock);
+  result.seconds.quadrature = clock.seconds();
 
   stage("optimisation");
   // Maximum pseudo-likelihood, from β at the data's density and γ = 1.
-  clock = std::chrono::steady_clock::now();
+  clock.restart();
   const double measure = geometry::measure(region.box, exemplar.dimension);
   std::vector<double> start(static_cast<std::size_t>(design.parameter_count), 0.0);
   for (std::size_t c = 0; c < model.categories.size(); ++c)
     start[c] = std::log(statistics.per_category[c] / measure);
   MpleResult mple = maximise_pseudo_likelihood(design, start);
   const bool follows_share = existence && check_existence(heavier, mple);
-  result.seconds.optimisation = seconds_since(clock);
+  result.seconds.optimisation = clock.seconds();
   result.log_pseudo_likelihood = mple.log_pseudo_likelihood;
 
   assign_estimates(model, interaction, mple);

@@ -1,7 +1,6 @@
 #include "libshapeproc/metrics/scene_statistics.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -10,6 +9,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/random.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 
 namespace shapeproc::metrics {
 
@@ -163,7 +163,7 @@ int SceneStatistics::elements() const { return std::accumulate(counts.begin(), c
 
 SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options,
                                    core::Random random) {
-  const auto start = std::chrono::steady_clock::now();
+  const core::Stopwatch watch;
   core::check(!scene.elements.empty(), "statistics", "the scene has no elements");
   core::check_non_negative("statistics", "the range", options.range);
   core::check(options.correlation_bins >= 1, "statistics",
@@ -283,7 +283,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
     stats.correlation.push_back(expected > 0 ? correlation_counts[k] / expected
                                              : std::numeric_limits<double>::quiet_NaN());
   }
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = watch.seconds();
   return stats;
 }
 

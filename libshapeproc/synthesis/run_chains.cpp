@@ -1,13 +1,13 @@
 #include "libshapeproc/synthesis/run_chains.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
 
 #include "libshapeproc/core/assert.hpp"
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 
 namespace shapeproc::synthesis {
 
@@ -72,7 +72,7 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
         };
       const std::uint64_t seed = chain_seed(options.seed, c);
       core::Random random(seed);
-      const auto start = std::chrono::steady_clock::now();
+      const core::Stopwatch watch;
       try {
         SynthesisResult result = synthesizer.synthesize(random, control);
         SynthesisRecord record = options.record;
@@ -90,8 +90,7 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
         record.chain = c + 1;
         record.chains = chains;
         record.chain_seed = seed;
-        record.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        record.seconds = watch.seconds();
         result.record = std::move(record);
         results[index] = std::move(result);
       } catch (...) {

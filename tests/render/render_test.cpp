@@ -64,23 +64,46 @@ TEST(PngText, RejectsBadKeywordsAndBytesThatAreNotAPng) {
   EXPECT_THROW(add_png_text(png, {{std::string(80, 'k'), "x"}}), core::ArgumentError);
 }
 
+// Occurrences of `needle` in `text`.
+std::size_t count_of(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+    ++n;
+  return n;
+}
+
+// Two axes of two bands each: every axis is drawn on both of its opposite directions, as a black
+// hard-core sector and one sector per band whose title names the axis, the band, its γ and its
+// thresholds.
 TEST(InteractionPlot, DrawsOneCurvePerAxisOfEveryPair) {
   model::ShapeProcessModel m;
   m.dimension = 2;
   m.categories = {{"dots", 0.01}};
-  m.measurement.directions = 2;
+  m.measurement.directions = 4;
   model::PairInteraction pair;
   model::AxisParameters axis;
+  axis.direction = geometry::Vec3(1, 0, 0);
   axis.thresholds = {1.0, 2.0, 3.0};
   axis.gammas = {0.5, 2.0};
-  pair.axes = {axis};
-  m.measurement.directions = 1;
+  model::AxisParameters other = axis;
+  other.direction = geometry::Vec3(0, 1, 0);
+  other.gammas = {3.0, 1.0};
+  pair.axes = {axis, other};
   m.interactions = {pair};
   const std::string svg = interaction_plot_svg(m);
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
-  EXPECT_NE(svg.find("<svg"), std::string::npos);
-  EXPECT_NE(svg.find("dots"), std::string::npos);
+  EXPECT_NE(svg.find("dots - dots"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(count_of(svg, "<title>axis "), 8u);  // 2 axes x 2 directions x 2 bands
+  EXPECT_EQ(count_of(svg, "<title>axis 0 band 1: gamma 0.5 on [1, 2)</title>"), 2u);
+  EXPECT_EQ(count_of(svg, "<title>axis 0 band 2: gamma 2 on [2, 3)</title>"), 2u);
+  EXPECT_EQ(count_of(svg, "<title>axis 1 band 1: gamma 3 on [1, 2)</title>"), 2u);
+  EXPECT_EQ(count_of(svg, "<title>axis 1 band 2: gamma 1 on [2, 3)</title>"), 2u);
+  // Hard-core sectors: 4, and the legend's swatch.
+  EXPECT_EQ(count_of(svg, "fill=\"black\""), 5u);
+  // γ = 1 is drawn white, and inhibition and attraction in other colours.
+  EXPECT_NE(svg.find("fill=\"#ffffff\" stroke=\"#555\" stroke-width=\"0.3\"><title>axis 1 band 2"),
+            std::string::npos);
 
   // A category name from an input file (`class`, `attr:NAME`) is text, never markup: a name
   // holding a script reaches the plot a user opens in a browser escaped.

@@ -5,12 +5,12 @@
 // `synthesize --method M` would, with the same seed; centroid and hausdorff are the shape process
 // with those distances (the paper's Fig. 11); hybrid-M is `synthesize --method hybrid
 // --start-from M`.
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/cli.hpp"
@@ -124,12 +124,11 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
         const std::string model =
             method == "shape-process" ? (directory / "model.json").string() : std::string();
         std::ostringstream said, errors;
-        const auto start = std::chrono::steady_clock::now();
+        const core::Stopwatch watch;
         const int code = run_arguments(synthesize_arguments(method, args->exemplar, args->reader,
                                                             args->size, args->seed, output, model),
                                        said, errors);
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds = watch.seconds();
         std::istringstream lines(said.str());
         for (std::string line; std::getline(lines, line);) out << "  " << line << '\n';
         if (code != 0) {

@@ -1,10 +1,10 @@
 // shapeproc fit EXEMPLAR -o model.json: thresholds from quantiles, then maximum pseudo-likelihood.
-#include <chrono>
 #include <iomanip>
 #include <memory>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/fit/fit_estimate.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
@@ -39,7 +39,7 @@ std::vector<double> number_list(const std::string& text, const char* option) {
 
 int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
             std::ostream& out) {
-  const auto start = std::chrono::steady_clock::now();
+  const core::Stopwatch watch;
   if (io::extension_of(args.output) != "json")
     throw core::UsageError(args.output + ": the model is written as .json");
   core::check_writable(args.output);
@@ -48,8 +48,7 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
   io::write_model(result.model, args.output);
 
   print_model_summary(result.model, out);
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = watch.seconds();
   out << std::fixed << std::setprecision(1) << "time: proxies " << result.seconds.proxies * 1e3
       << " ms, measurements " << result.seconds.measurements * 1e3 << " ms, quadrature "
       << result.seconds.quadrature * 1e3 << " ms, fit " << result.seconds.optimisation * 1e3

@@ -1,5 +1,4 @@
 // shapeproc measure EXEMPLAR: proxies, then d and o for every pair of elements within range.
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -7,6 +6,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/geometry/directions.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -43,10 +43,6 @@ void write_pairs(std::ostream& out, int dimension, const std::vector<geometry::P
   }
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 int run_measure(const MeasureArguments& args, const std::vector<std::string>& arguments,
                 std::ostream& out) {
   const io::ReaderOptions reader = args.reader.options();
@@ -64,17 +60,17 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
   options.periodic = args.periodic;
   options.proxy.tolerance = args.proxy_tolerance;
 
-  const auto start = std::chrono::steady_clock::now();
+  core::Stopwatch watch;
   std::unique_ptr<geometry::PairMeasurer> measurer;
   try {
     measurer = std::make_unique<geometry::PairMeasurer>(scene, options);
   } catch (const std::invalid_argument& e) {
     throw core::UsageError(std::string("--directions: ") + e.what());
   }
-  const double proxy_seconds = seconds_since(start);
-  const auto measure_start = std::chrono::steady_clock::now();
+  const double proxy_seconds = watch.seconds();
+  watch.restart();
   const std::vector<geometry::PairRecord> pairs = measurer->all_pairs(scene.elements, args.range);
-  const double measure_seconds = seconds_since(measure_start);
+  const double measure_seconds = watch.seconds();
 
   const nlohmann::json parameters = {
       {"input", args.input},

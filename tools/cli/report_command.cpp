@@ -2,12 +2,12 @@
 // metrics.json comparing outputs with their exemplar.
 #include "tools/cli/report_command.hpp"
 
-#include <chrono>
 #include <memory>
 #include <sstream>
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/evaluation/envelope.hpp"
 #include "libshapeproc/evaluation/verdicts.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
@@ -70,7 +70,7 @@ void fill_goodness(const nlohmann::json& e, const std::vector<std::string>& name
 }  // namespace
 
 int write_report(const ReportRequest& request, std::ostream& out) {
-  const auto start = std::chrono::steady_clock::now();
+  const core::Stopwatch watch;
   std::unique_ptr<model::ShapeProcessModel> model;
   MetricFlags flags = request.metrics;
   if (!request.model.empty()) {
@@ -132,14 +132,12 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   r.model = model.get();
   if (model) {
     read_goodness(*model, r);
-    const auto envelopes_start = std::chrono::steady_clock::now();
+    const core::Stopwatch envelopes_watch;
     const evaluation::EnvelopeOptions envelope;
     r.envelopes =
         evaluation::nearest_envelopes(exemplar.scene, exemplar.boundary, *model, envelope);
     r.envelope_samples = envelope.samples;
-    r.timings.emplace_back(
-        "simulation envelopes",
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - envelopes_start).count());
+    r.timings.emplace_back("simulation envelopes", envelopes_watch.seconds());
   }
   r.model_label = request.model;
   r.command = request.command;
@@ -177,9 +175,7 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   std::filesystem::create_directories(request.directory);
   core::write_file_atomically(std::filesystem::path(request.directory) / "metrics.json",
                               [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
-  r.timings.emplace_back(
-      "reading and metrics, in total",
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  r.timings.emplace_back("reading and metrics, in total", watch.seconds());
   report::write_report(r, request.directory);
   report::write_verdict_markdown(r, std::filesystem::path(request.directory) / "verdicts.md");
   // The verdicts first: what a person would notice, one line per output.
