@@ -9,6 +9,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
+#include "libshapeproc/io/svg_path_data.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -23,31 +24,12 @@ constexpr int kVersion = 1;
 
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-std::string path_data(const geometry::Path2& path) {
-  std::string d = "M" + core::format_number(path.start_point().x()) + " " +
-                  core::format_number(path.start_point().y());
-  for (const geometry::Segment2& s : path.segments) {
-    if (s.cubic) {
-      d += "C" + core::format_number(s.control1.x()) + " " + core::format_number(s.control1.y()) +
-           " " + core::format_number(s.control2.x()) + " " + core::format_number(s.control2.y()) +
-           " ";
-    } else {
-      d += "L";
-    }
-    d += core::format_number(s.end.x()) + " " + core::format_number(s.end.y());
-  }
-  if (path.closed) d += "Z";
-  return d;
-}
-
 json shape_json(const geometry::Shape& shape) {
   if (const auto* planar = std::get_if<geometry::PlanarShape>(&shape.geometry)) {
     json parts = json::array();
     for (const geometry::Drawable2& part : planar->parts) {
-      std::string d;
-      for (const geometry::Path2& path : part.paths) d += (d.empty() ? "" : " ") + path_data(path);
       parts.push_back(
-          {{"d", d},
+          {{"d", svg_path_data(part.paths)},
            {"fill_rule", part.fill_rule == geometry::FillRule::evenodd ? "evenodd" : "nonzero"},
            {"style", part.style}});
     }

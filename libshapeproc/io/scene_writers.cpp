@@ -5,6 +5,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/io/csv_reader.hpp"
+#include "libshapeproc/io/svg_path_data.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -13,39 +14,9 @@ using geometry::Scene;
 
 namespace {
 
-std::string path_data(const geometry::Path2& path) {
-  std::string d;
-  auto point = [&](const geometry::Vec2& p) {
-    d += core::format_number(p.x());
-    d += ' ';
-    d += core::format_number(p.y());
-  };
-  d += 'M';
-  point(path.start_point());
-  for (const geometry::Segment2& s : path.segments) {
-    if (s.cubic) {
-      d += 'C';
-      point(s.control1);
-      d += ' ';
-      point(s.control2);
-      d += ' ';
-    } else {
-      d += 'L';
-    }
-    point(s.end);
-  }
-  if (path.closed) d += 'Z';
-  return d;
-}
-
 void write_drawable(std::ostream& out, const geometry::Drawable2& drawable,
                     const std::string& attributes) {
-  out << "<path" << attributes << " d=\"";
-  for (std::size_t i = 0; i < drawable.paths.size(); ++i) {
-    if (i > 0) out << ' ';
-    out << path_data(drawable.paths[i]);
-  }
-  out << '"';
+  out << "<path" << attributes << " d=\"" << svg_path_data(drawable.paths) << '"';
   if (drawable.fill_rule == geometry::FillRule::evenodd) out << " fill-rule=\"evenodd\"";
   for (const auto& [name, value] : drawable.style) {
     out << ' ' << name << "=\"" << core::xml_escape(value) << '"';
