@@ -302,12 +302,14 @@ void write_model(const ShapeProcessModel& model, const std::filesystem::path& fi
   core::write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
-ShapeProcessModel parse_model(std::string_view text, const std::string& file_name) {
+namespace {
+
+// The text as JSON; malformed text is an InputError naming the file and, where known, the line.
+json parse_document(std::string_view text, const std::string& file_name) {
   if (trim(text).empty()) throw core::InputError(file_name, 0, "the file is empty");
   check_json_nesting(text, file_name);
-  json document;
   try {
-    document = json::parse(text.begin(), text.end());
+    return json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     const std::size_t byte = std::min(e.byte, text.size());
     const int line = 1 + static_cast<int>(std::count(
@@ -322,22 +324,10 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
       message = message.substr(bracket + 2);
     throw core::InputError(file_name, 0, "malformed JSON: " + message);
   }
-  const Reader r(file_name);
-  if (!document.is_object() || !document.contains("format") || document["format"] != kFormat) {
-    throw core::InputError(
-        file_name, 0,
-        std::string("not a shapeproc model file (it has no \"format\": \"") + kFormat + "\")");
-  }
-  const int version = r.integer(r.field(document, "", "version"), "version");
-  if (version != kVersion)
-    r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " +
-                          std::to_string(version));
-  ShapeProcessModel model;
-  model.dimension = r.integer(r.field(document, "", "dimension"), "dimension");
-  if (model.dimension != 2 && model.dimension != 3) r.fail("dimension", "must be 2 or 3");
-  model.units = document.contains("units") ? r.text(document["units"], "units")
-                                           : (model.dimension == 2 ? "px" : "1");
+}
 
+std::vector<CategoryParameters> parse_categories(const json& document, const Reader& r) {
+  std::vector<CategoryParameters> out;
   const json& categories = r.array(r.field(document, "", "categories"), "categories");
   for (std::size_t c = 0; c < categories.size(); ++c) {
     const std::string where = "categories[" + std::to_string(c) + "]";
@@ -350,10 +340,56 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
       category.beta_status = status_from(
           r.text(categories[c]["beta_status"], where + ".beta_status"), r, where + ".beta_status");
     }
-    model.categories.push_back(category);
+    out.push_back(category);
   }
+  return out;
+}
+
+// One axis of a pair, at `at` ("interaction[p].axes[i]").
+AxisParameters parse_axis(const json& value, const std::string& at, int dimension,
+                          const Reader& r) {
+  AxisParameters axis;
+  const std::vector<double> direction =
+      r.numbers(r.field(value, at, "direction"), at + ".direction");
+  if (static_cast<int>(direction.size()) != dimension) {
+    r.fail(at + ".direction", "expected " + std::to_string(dimension) + " numbers for a " +
+                                  std::to_string(dimension) + "D model");
+  }
+  axis.direction = geometry::Vec3::Zero();
+  for (int k = 0; k < dimension; ++k) axis.direction[k] = direction[static_cast<std::size_t>(k)];
+  axis.thresholds = r.numbers(r.field(value, at, "thresholds"), at + ".thresholds");
+  axis.gammas = r.numbers(r.field(value, at, "gammas"), at + ".gammas");
+  const std::size_t bands = axis.gammas.size();
+  axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());
+  axis.status.assign(bands, ParameterStatus::fixed);
+  if (value.contains("gamma_standard_errors")) {
+    const std::vector<double> se =
+        r.numbers(value["gamma_standard_errors"], at + ".gamma_standard_errors");
+    if (se.size() != bands) r.fail(at + ".gamma_standard_errors", "expected one per gamma");
+    axis.gamma_standard_errors = se;
+  }
+  if (value.contains("status")) {
+    const json& status = r.array(value["status"], at + ".status");
+    if (status.size() != bands) r.fail(at + ".status", "expected one per gamma");
+    for (std::size_t k = 0; k < bands; ++k) {
+      axis.status[k] = status_from(r.text(status[k], at + ".status"), r,
+                                   at + ".status[" + std::to_string(k) + "]");
+    }
+  }
+  if (value.contains("observed_pairs")) {
+    for (const json& v : r.array(value["observed_pairs"], at + ".observed_pairs"))
+      axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
+  }
+  return axis;
+}
+
+// The pairs' interactions; `axes_seen`: the axes of the last pair (what the directions default
+// to).
+std::vector<PairInteraction> parse_interactions(const json& document, int dimension,
+                                                const Reader& r, std::size_t& axes_seen) {
+  std::vector<PairInteraction> out;
   const json& interaction = r.array(r.field(document, "", "interaction"), "interaction");
-  std::size_t axes_seen = 0;
+  axes_seen = 0;
   for (std::size_t p = 0; p < interaction.size(); ++p) {
     const std::string where = "interaction[" + std::to_string(p) + "]";
     PairInteraction pair;
@@ -364,47 +400,17 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     if (pair.first > pair.second) std::swap(pair.first, pair.second);
     const json& axes = r.array(r.field(interaction[p], where, "axes"), where + ".axes");
     axes_seen = axes.size();
-    for (std::size_t i = 0; i < axes.size(); ++i) {
-      const std::string at = where + ".axes[" + std::to_string(i) + "]";
-      AxisParameters axis;
-      const std::vector<double> direction =
-          r.numbers(r.field(axes[i], at, "direction"), at + ".direction");
-      if (static_cast<int>(direction.size()) != model.dimension) {
-        r.fail(at + ".direction", "expected " + std::to_string(model.dimension) +
-                                      " numbers for a " + std::to_string(model.dimension) +
-                                      "D model");
-      }
-      axis.direction = geometry::Vec3::Zero();
-      for (int k = 0; k < model.dimension; ++k)
-        axis.direction[k] = direction[static_cast<std::size_t>(k)];
-      axis.thresholds = r.numbers(r.field(axes[i], at, "thresholds"), at + ".thresholds");
-      axis.gammas = r.numbers(r.field(axes[i], at, "gammas"), at + ".gammas");
-      const std::size_t bands = axis.gammas.size();
-      axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());
-      axis.status.assign(bands, ParameterStatus::fixed);
-      if (axes[i].contains("gamma_standard_errors")) {
-        const std::vector<double> se =
-            r.numbers(axes[i]["gamma_standard_errors"], at + ".gamma_standard_errors");
-        if (se.size() != bands) r.fail(at + ".gamma_standard_errors", "expected one per gamma");
-        axis.gamma_standard_errors = se;
-      }
-      if (axes[i].contains("status")) {
-        const json& status = r.array(axes[i]["status"], at + ".status");
-        if (status.size() != bands) r.fail(at + ".status", "expected one per gamma");
-        for (std::size_t k = 0; k < bands; ++k) {
-          axis.status[k] = status_from(r.text(status[k], at + ".status"), r,
-                                       at + ".status[" + std::to_string(k) + "]");
-        }
-      }
-      if (axes[i].contains("observed_pairs")) {
-        for (const json& v : r.array(axes[i]["observed_pairs"], at + ".observed_pairs"))
-          axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
-      }
-      pair.axes.push_back(std::move(axis));
-    }
-    model.interactions.push_back(std::move(pair));
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      pair.axes.push_back(
+          parse_axis(axes[i], where + ".axes[" + std::to_string(i) + "]", dimension, r));
+    out.push_back(std::move(pair));
   }
-  // Measurement settings; the number of directions defaults to what the axes imply.
+  return out;
+}
+
+// Measurement settings; the number of directions defaults to what the axes imply.
+void parse_measurement(const json& document, std::size_t axes_seen, const Reader& r,
+                       ShapeProcessModel& model) {
   int directions =
       axes_seen <= 1 ? 1 : (model.dimension == 2 ? static_cast<int>(2 * axes_seen) : 12);
   if (document.contains("measurement")) {
@@ -440,6 +446,10 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     }
   }
   model.measurement.directions = directions;
+}
+
+// The shapes, centred on their bounding boxes, and the shape classes.
+void parse_shapes(const json& document, const Reader& r, ShapeProcessModel& model) {
   const json& shapes = r.array(r.field(document, "", "shapes"), "shapes");
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     const std::string where = "shapes[" + std::to_string(s) + "]";
@@ -455,17 +465,42 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
     if (!box.isEmpty()) geometry::translate(shape.shape, -box.center());
     model.shapes.push_back(std::move(shape));
   }
-  if (document.contains("shape_classes")) {
-    const json& classes = r.array(document["shape_classes"], "shape_classes");
-    for (std::size_t k = 0; k < classes.size(); ++k) {
-      const std::string where = "shape_classes[" + std::to_string(k) + "]";
-      model::ShapeClass c;
-      c.category = r.integer(r.field(classes[k], where, "category"), where + ".category");
-      c.weight = r.number(r.field(classes[k], where, "weight"), where + ".weight");
-      if (classes[k].contains("label")) c.label = r.text(classes[k]["label"], where + ".label");
-      model.shape_classes.push_back(c);
-    }
+  if (!document.contains("shape_classes")) return;
+  const json& classes = r.array(document["shape_classes"], "shape_classes");
+  for (std::size_t k = 0; k < classes.size(); ++k) {
+    const std::string where = "shape_classes[" + std::to_string(k) + "]";
+    model::ShapeClass c;
+    c.category = r.integer(r.field(classes[k], where, "category"), where + ".category");
+    c.weight = r.number(r.field(classes[k], where, "weight"), where + ".weight");
+    if (classes[k].contains("label")) c.label = r.text(classes[k]["label"], where + ".label");
+    model.shape_classes.push_back(c);
   }
+}
+
+}  // namespace
+
+ShapeProcessModel parse_model(std::string_view text, const std::string& file_name) {
+  const json document = parse_document(text, file_name);
+  const Reader r(file_name);
+  if (!document.is_object() || !document.contains("format") || document["format"] != kFormat) {
+    throw core::InputError(
+        file_name, 0,
+        std::string("not a shapeproc model file (it has no \"format\": \"") + kFormat + "\")");
+  }
+  const int version = r.integer(r.field(document, "", "version"), "version");
+  if (version != kVersion)
+    r.fail("version", "this shapeproc reads version " + std::to_string(kVersion) + ", got " +
+                          std::to_string(version));
+  ShapeProcessModel model;
+  model.dimension = r.integer(r.field(document, "", "dimension"), "dimension");
+  if (model.dimension != 2 && model.dimension != 3) r.fail("dimension", "must be 2 or 3");
+  model.units = document.contains("units") ? r.text(document["units"], "units")
+                                           : (model.dimension == 2 ? "px" : "1");
+  model.categories = parse_categories(document, r);
+  std::size_t axes_seen = 0;
+  model.interactions = parse_interactions(document, model.dimension, r, axes_seen);
+  parse_measurement(document, axes_seen, r, model);
+  parse_shapes(document, r, model);
   if (document.contains("fit")) model.fit_json = document["fit"].dump();
   try {
     validate(model);
