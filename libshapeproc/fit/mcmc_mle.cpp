@@ -329,6 +329,62 @@ double convergence_tolerance(double significance, std::size_t components) {
   return 0.5 * (low + high);
 }
 
+namespace {
+
+// Every category and shape class must hold an element of the exemplar.
+void check_observed(const model::ShapeProcessModel& start, const std::vector<double>& observed,
+                    std::size_t p, std::size_t parameters) {
+  core::check(observed.size() == p, "mle", "the observed statistics have the wrong size");
+  for (std::size_t c = 0; c < start.categories.size(); ++c) {
+    core::check(observed[c] > 0, "mle",
+                "category '" + start.categories[c].name + "' has no element");
+  }
+  for (std::size_t k = parameters; k < p; ++k)
+    core::check(observed[k] > 0, "mle",
+                "shape class " + std::to_string(k - parameters) + " has no element");
+}
+
+// No interaction parameter: the Poisson MLE in closed form, β_c = n_c / |W|, w_k = n_k / n_c
+// (without border correction: with it the fixed elements would have to be set apart).
+void poisson_closed_form(const model::ShapeProcessModel& start, const geometry::Domain& window,
+                         const MleOptions& options, MleResult& r) {
+  const std::vector<double>& observed = r.observed;
+  const std::size_t categories = start.categories.size(), p = observed.size();
+  const std::size_t parameters = categories;
+  const double measure =
+      options.sampling.observe_region.isEmpty()
+          ? window.measure()
+          : geometry::measure(options.sampling.observe_region, window.dimension());
+  for (std::size_t c = 0; c < categories; ++c) {
+    r.theta[c] = std::log(observed[c] / measure);
+    r.standard_errors[c] = 1.0 / std::sqrt(observed[c]);
+    r.status[c] = model::ParameterStatus::free;
+  }
+  for (std::size_t k = parameters; k < p; ++k) {
+    const std::size_t c = static_cast<std::size_t>(start.shape_classes[k - parameters].category);
+    r.theta[k] = std::log(observed[k] / observed[c]);
+    r.standard_errors[k] = std::sqrt(1.0 / observed[k] - 1.0 / observed[c]);
+  }
+  r.expected = observed;
+  r.expected_error.assign(p, 0.0);
+  r.converged = true;
+}
+
+// A statistic every observation of the last simulation held at the exemplar's value: the
+// likelihood still grows beyond θ_k, so the MLE is infinite; θ_k is the value at which the
+// chains held it, with no error.
+void mark_unbounded(const std::vector<std::size_t>& free, MleResult& r) {
+  for (std::size_t k : free) {
+    if (r.expected_error[k] == 0 &&
+        std::abs(r.expected[k] - r.observed[k]) <= 1e-9 * std::max(1.0, r.observed[k])) {
+      r.status[k] = model::ParameterStatus::unbounded;
+      r.standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+}
+
+}  // namespace
+
 MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geometry::Domain& window,
                               const std::vector<double>& observed, const MleOptions& options) {
   const auto clock = Clock::now();
@@ -338,14 +394,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   const std::size_t parameters = static_cast<std::size_t>(interaction.parameter_count());
   const std::size_t categories = start.categories.size();
   const bool classes = p > parameters;
-  core::check(observed.size() == p, "mle", "the observed statistics have the wrong size");
-  for (std::size_t c = 0; c < categories; ++c) {
-    core::check(observed[c] > 0, "mle",
-                "category '" + start.categories[c].name + "' has no element");
-  }
-  for (std::size_t k = parameters; k < p; ++k)
-    core::check(observed[k] > 0, "mle",
-                "shape class " + std::to_string(k - parameters) + " has no element");
+  check_observed(start, observed, p, parameters);
   MleResult r;
   r.observed = observed;
   r.theta = theta_of(start);
@@ -366,26 +415,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
       free.push_back(k);
     }
   }
-  // No interaction parameter: the Poisson MLE in closed form, β_c = n_c / |W|, w_k = n_k / n_c
-  // (without border correction: with it the fixed elements would have to be set apart).
+  // No interaction parameter: the closed form.
   if (parameters == categories && options.sampling.fixed.empty()) {
-    const double measure =
-        options.sampling.observe_region.isEmpty()
-            ? window.measure()
-            : geometry::measure(options.sampling.observe_region, window.dimension());
-    for (std::size_t c = 0; c < categories; ++c) {
-      r.theta[c] = std::log(observed[c] / measure);
-      r.standard_errors[c] = 1.0 / std::sqrt(observed[c]);
-      r.status[c] = model::ParameterStatus::free;
-    }
-    for (std::size_t k = parameters; k < p; ++k) {
-      const std::size_t c = static_cast<std::size_t>(start.shape_classes[k - parameters].category);
-      r.theta[k] = std::log(observed[k] / observed[c]);
-      r.standard_errors[k] = std::sqrt(1.0 / observed[k] - 1.0 / observed[c]);
-    }
-    r.expected = observed;
-    r.expected_error.assign(p, 0.0);
-    r.converged = true;
+    poisson_closed_form(start, window, options, r);
     return r;
   }
   std::optional<Newton> newton;
@@ -610,16 +642,7 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
   }
   r.worst_r_hat = r.converged ? last_r_hat : best.worst_r_hat;
   for (std::size_t k : free) r.penalised[k] = newton->pairs_moved(k, r.theta) >= kNotablyMoved;
-  // A statistic every observation of the last simulation held at the exemplar's value (chains
-  // started at a packed exemplar that never lose an element): the likelihood still grows beyond
-  // θ_k, so the MLE is infinite; θ_k is the value at which the chains held it, with no error.
-  for (std::size_t k : free) {
-    if (r.converged && r.expected_error[k] == 0 &&
-        std::abs(r.expected[k] - observed[k]) <= 1e-9 * std::max(1.0, observed[k])) {
-      r.status[k] = model::ParameterStatus::unbounded;
-      r.standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
+  if (r.converged) mark_unbounded(free, r);
   r.seconds = std::chrono::duration<double>(Clock::now() - clock).count();
   return r;
 }
