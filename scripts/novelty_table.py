@@ -42,7 +42,7 @@ def window_of(path, tile):
 
 
 def strip_text_chunks(png):
-    """Drops a PNG's text chunks: they hold the command line, with this machine's paths."""
+    """Drops a PNG's text chunks: they hold the command line, with the local paths of whoever ran it."""
     with open(png, "rb") as f:
         data = f.read()
     out, i = [data[:8]], 8

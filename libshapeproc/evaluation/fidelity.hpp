@@ -1,4 +1,4 @@
-// Does a fitted model reproduce its exemplar? The checks of issue 17, for one exemplar:
+// Does a fitted model reproduce its exemplar? The fidelity checks, for one exemplar:
 //   1. On the exemplar's own window and edge treatment, `chains` chains of the model: the mean of
 //   every
 //      sufficient statistic (elements per category, pairs per band, elements per shape class)

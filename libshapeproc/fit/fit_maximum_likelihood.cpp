@@ -26,7 +26,7 @@ constexpr int kAbandonTorusAfter = 2;
 // elements (MleOptions::abandon_condensed_start): at the pseudo-likelihood's estimate rings' torus
 // holds 68, 62 and 67 elements against 19 (seeds 1–3), dots-random's 46–47 against 30 and
 // two-kinds' 23–25 red discs against 17; from there rings' torus converged at one seed of three,
-// in 30 iterations (stop 43).
+// in 30 iterations.
 constexpr double kCondensedStart = 2.0;
 }  // namespace
 

@@ -1,5 +1,5 @@
 // Elements as a person sees them: connected pieces of ink, optionally on the torus of a seamless
-// tile (issue "read what the artist drew").
+// tile.
 //
 // The scene's elements are taken apart into subpaths and joined again where their ink meets:
 //   - outlines that cross or run together along a piece of positive length (pieces that meet
