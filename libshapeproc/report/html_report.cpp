@@ -195,15 +195,20 @@ double picture_scale(const Report& report) {
   return scale;
 }
 
-void write_report(const Report& report, const std::filesystem::path& directory) {
-  require(report.exemplar);
-  for (const ReportScene& o : report.outputs) require(o);
-  std::filesystem::create_directories(directory);
+namespace {
 
-  // Pictures, one scale for all, colliding elements in red.
-  const double scale = picture_scale(report);
+// The scenes in the report's order: the exemplar, then the outputs.
+std::vector<const ReportScene*> scenes_of(const Report& report) {
   std::vector<const ReportScene*> scenes{&report.exemplar};
   for (const ReportScene& o : report.outputs) scenes.push_back(&o);
+  return scenes;
+}
+
+// The pictures, one scale for all, colliding elements in red: their file names, in the scenes'
+// order. Also the interaction plot and the overview.
+std::vector<std::string> write_pictures(const Report& report, double scale,
+                                        const std::filesystem::path& directory) {
+  const std::vector<const ReportScene*> scenes = scenes_of(report);
   std::vector<std::string> pictures;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     render::RenderOptions options;
@@ -215,11 +220,10 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   }
   if (report.model) render::write_interaction_plot(*report.model, directory / "interaction.svg");
   write_overview(report, scale, directory / "overview.png");
+  return pictures;
+}
 
-  const metrics::SceneStatistics& ex = *report.exemplar.statistics;
-  const std::string unit = report.exemplar.scene->units;
-  const std::string area = unit + (ex.dimension == 2 ? "²" : "³");
-  std::ostringstream html;
+void write_head(const Report& report, std::ostringstream& html) {
   html << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
           "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
        << "<title>shapeproc report: " << escape(report.exemplar.label) << "</title>\n<style>\n"
@@ -237,9 +241,12 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
   html << "<h1>" << escape(report.exemplar.label) << " and " << report.outputs.size() << " output"
        << (report.outputs.size() == 1 ? "" : "s") << "</h1>\n";
   if (!report.command.empty()) html << "<p><code>" << escape(report.command) << "</code></p>\n";
+}
 
-  write_verdicts(report, html);
-
+void write_picture_section(const Report& report, double scale,
+                           const std::vector<std::string>& pictures, std::ostringstream& html) {
+  const std::vector<const ReportScene*> scenes = scenes_of(report);
+  const std::string unit = report.exemplar.scene->units;
   html << "<h2>Pictures</h2>\n<p>One scale for all (" << num(scale, 3) << " px per " << escape(unit)
        << "); elements in a collision (shape distance 0) are drawn in red. All of them in one "
           "picture: <a href=\"overview.png\">overview.png</a>.</p>\n";
@@ -255,8 +262,14 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     if (!scenes[i]->note.empty()) html << "<br/>" << escape(scenes[i]->note);
     html << "</figcaption></figure>\n";
   }
+}
 
-  // Metrics table: one column per scene.
+// The metrics table: one column per scene.
+void write_metrics_table(const Report& report, std::ostringstream& html) {
+  const std::vector<const ReportScene*> scenes = scenes_of(report);
+  const metrics::SceneStatistics& ex = *report.exemplar.statistics;
+  const std::string unit = report.exemplar.scene->units;
+  const std::string area = unit + (ex.dimension == 2 ? "²" : "³");
   html << "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>exemplar</th>";
   for (std::size_t i = 0; i < report.outputs.size(); ++i) html << "<th>output " << i + 1 << "</th>";
   html << "</tr>\n";
@@ -322,7 +335,10 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
           "exemplar's mean nearest distance. Neighbourhood distance: Davison et al. eq. 5 with Ma "
           "et al.'s eq. 1, "
           "divided by a². See docs/metrics.md.</p>\n";
+}
 
+// The model's sections: its interaction function, goodness of fit and envelopes.
+void write_model_sections(const Report& report, std::ostringstream& html) {
   if (report.model) {
     html << "<h2>Interaction function</h2>\n<p>" << escape(report.model_label)
          << ": γ per axis and distance band (black: hard core, red: repulsion, blue: "
@@ -357,7 +373,12 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
            << "</td></tr>\n";
     html << "</table>\n";
   }
+}
 
+// The distance charts of every scene, overall and per axis, and the per-axis W1 table.
+void write_distance_charts(const Report& report, std::ostringstream& html) {
+  const metrics::SceneStatistics& ex = *report.exemplar.statistics;
+  const std::string unit = report.exemplar.scene->units;
   html << "<h2>Distances</h2>\n" << legend(report) << "\n<div class=\"charts\">\n";
   const double range = ex.range;
   auto all_series = [&](auto pick) {
@@ -422,7 +443,23 @@ void write_report(const Report& report, const std::filesystem::path& directory) 
     }
     html << "</table>\n";
   }
+}
 
+}  // namespace
+
+void write_report(const Report& report, const std::filesystem::path& directory) {
+  require(report.exemplar);
+  for (const ReportScene& o : report.outputs) require(o);
+  std::filesystem::create_directories(directory);
+  const double scale = picture_scale(report);
+  const std::vector<std::string> pictures = write_pictures(report, scale, directory);
+  std::ostringstream html;
+  write_head(report, html);
+  write_verdicts(report, html);
+  write_picture_section(report, scale, pictures, html);
+  write_metrics_table(report, html);
+  write_model_sections(report, html);
+  write_distance_charts(report, html);
   if (!report.timings.empty()) {
     html << "<h2>Timings</h2>\n<table>\n";
     for (const auto& [stage, seconds] : report.timings)
