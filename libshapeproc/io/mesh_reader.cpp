@@ -93,19 +93,19 @@ std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
 
 }  // namespace
 
-geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderOptions& options) {
-  const std::string name = file.string();
-  const std::string ext = extension_of(file);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw core::InputError(name, 0, "no such file");
-  if (std::filesystem::file_size(file, ec) == 0)
-    throw core::InputError(name, 0, "the file is empty");
-  if (!std::ifstream(file)) throw core::InputError(name, 0, "cannot open the file for reading");
-  if (options.mesh_split == MeshSplit::groups && ext != "obj") {
-    throw core::UsageError("--split groups needs an OBJ file, got " + name);
-  }
-  check_mesh_header(file);
+namespace {
 
+// The triangles as read: vertices, vertex triples and their bounding box.
+struct MeshTriangles {
+  std::vector<geometry::Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  geometry::Box3 box;
+};
+
+// Reads the file with OpenMesh, then checks what it read: finite vertices, no degenerate
+// triangle. Any problem is an InputError naming the file.
+MeshTriangles read_triangles(const std::string& name, const std::string& ext) {
+  MeshTriangles out;
   OmMesh mesh;
   std::string complaint;
   bool read = false;
@@ -128,8 +128,9 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   if (mesh.n_faces() == 0) throw core::InputError(name, 0, "no triangles");
 
   // Geometry checks on the triangles as read.
-  std::vector<geometry::Vec3> points(mesh.n_vertices());
-  geometry::Box3 box;
+  std::vector<geometry::Vec3>& points = out.points;
+  points.resize(mesh.n_vertices());
+  geometry::Box3& box = out.box;
   for (const auto vh : mesh.vertices()) {
     const auto& p = mesh.point(vh);
     points[vh.idx()] = geometry::Vec3(p[0], p[1], p[2]);
@@ -138,7 +139,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
                              "vertex " + std::to_string(vh.idx()) + " has a non-finite coordinate");
     }
   }
-  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<int, 3>>& triangles = out.triangles;
   triangles.reserve(mesh.n_faces());
   for (const auto fh : mesh.faces()) {
     std::array<int, 3> t{};
@@ -159,9 +160,16 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     }
   }
 
-  // Elements: connected components or OBJ groups.
+  return out;
+}
+
+// Each triangle's element (connected components, or OBJ groups) and the elements' names.
+std::vector<int> elements_of_triangles(const std::filesystem::path& file, const std::string& name,
+                                       const MeshTriangles& mesh, const ReaderOptions& options,
+                                       std::vector<std::string>& element_names) {
+  const std::vector<geometry::Vec3>& points = mesh.points;
+  const std::vector<std::array<int, 3>>& triangles = mesh.triangles;
   std::vector<int> element_of_triangle(triangles.size());
-  std::vector<std::string> element_names;
   if (options.mesh_split == MeshSplit::groups) {
     const ObjGroups groups = scan_obj_groups(file);
     if (groups.of_triangle.size() != triangles.size()) {
@@ -191,31 +199,17 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     }
   }
 
-  if (options.window && options.window->dimension != 3)
-    throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
-  const geometry::Box3 window = options.window ? options.window->box : box;
-  // A tile: pieces cut by the window's faces join their counterparts across the opposite faces,
-  // each moved by whole periods to make its element whole (mesh_tile_seams.hpp).
-  std::vector<Eigen::Vector3i> periods_of_triangle;
-  SeamJoin seams;
-  if (options.tile && options.mesh_split == MeshSplit::components &&
-      window.sizes().minCoeff() > 0.0) {
-    seams = join_across_faces(points, triangles, element_of_triangle,
-                              static_cast<int>(element_names.size()), window);
-    periods_of_triangle.resize(triangles.size());
-    for (std::size_t f = 0; f < triangles.size(); ++f) {
-      const auto piece = static_cast<std::size_t>(element_of_triangle[f]);
-      periods_of_triangle[f] = seams.periods_of_piece[piece];
-      element_of_triangle[f] = seams.element_of_piece[piece];
-    }
-    element_names.resize(static_cast<std::size_t>(seams.elements));
-    for (int e = 0; e < seams.elements; ++e)
-      element_names[static_cast<std::size_t>(e)] = "component " + std::to_string(e);
-  }
+  return element_of_triangle;
+}
 
-  geometry::Scene scene;
-  scene.dimension = 3;
-  scene.units = "1";
+// The scene's elements: each element's triangles with its own vertices, moved by whole periods
+// where a tile's seams joined them, placed inside the window.
+void add_elements(const MeshTriangles& mesh, const std::vector<int>& element_of_triangle,
+                  const std::vector<std::string>& element_names,
+                  const std::vector<Eigen::Vector3i>& periods_of_triangle,
+                  const geometry::Box3& window, geometry::Scene& scene) {
+  const std::vector<geometry::Vec3>& points = mesh.points;
+  const std::vector<std::array<int, 3>>& triangles = mesh.triangles;
   const int category = scene.category_index("default");
   std::vector<geometry::TriangleMesh> pieces(element_names.size());
   // Each element's own index of a mesh vertex, by (element, vertex): a table per element the
@@ -248,6 +242,56 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     if (!periods_of_triangle.empty())
       scene.elements[added].position = wrap_into(scene.elements[added].position, window);
   }
+}
+
+}  // namespace
+
+geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderOptions& options) {
+  const std::string name = file.string();
+  const std::string ext = extension_of(file);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw core::InputError(name, 0, "no such file");
+  if (std::filesystem::file_size(file, ec) == 0)
+    throw core::InputError(name, 0, "the file is empty");
+  if (!std::ifstream(file)) throw core::InputError(name, 0, "cannot open the file for reading");
+  if (options.mesh_split == MeshSplit::groups && ext != "obj") {
+    throw core::UsageError("--split groups needs an OBJ file, got " + name);
+  }
+  check_mesh_header(file);
+  const MeshTriangles mesh = read_triangles(name, ext);
+  const std::vector<geometry::Vec3>& points = mesh.points;
+  const std::vector<std::array<int, 3>>& triangles = mesh.triangles;
+  const geometry::Box3& box = mesh.box;
+  std::vector<std::string> element_names;
+  std::vector<int> element_of_triangle =
+      elements_of_triangles(file, name, mesh, options, element_names);
+
+  if (options.window && options.window->dimension != 3)
+    throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+  const geometry::Box3 window = options.window ? options.window->box : box;
+  // A tile: pieces cut by the window's faces join their counterparts across the opposite faces,
+  // each moved by whole periods to make its element whole (mesh_tile_seams.hpp).
+  std::vector<Eigen::Vector3i> periods_of_triangle;
+  SeamJoin seams;
+  if (options.tile && options.mesh_split == MeshSplit::components &&
+      window.sizes().minCoeff() > 0.0) {
+    seams = join_across_faces(points, triangles, element_of_triangle,
+                              static_cast<int>(element_names.size()), window);
+    periods_of_triangle.resize(triangles.size());
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      const auto piece = static_cast<std::size_t>(element_of_triangle[f]);
+      periods_of_triangle[f] = seams.periods_of_piece[piece];
+      element_of_triangle[f] = seams.element_of_piece[piece];
+    }
+    element_names.resize(static_cast<std::size_t>(seams.elements));
+    for (int e = 0; e < seams.elements; ++e)
+      element_names[static_cast<std::size_t>(e)] = "component " + std::to_string(e);
+  }
+
+  geometry::Scene scene;
+  scene.dimension = 3;
+  scene.units = "1";
+  add_elements(mesh, element_of_triangle, element_names, periods_of_triangle, window, scene);
   if (seams.joined_pieces > 0)
     scene.notes.push_back("--tile: " + std::to_string(seams.joined_pieces) +
                           " pieces cut by the window's faces joined their counterparts across "
