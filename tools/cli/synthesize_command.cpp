@@ -88,6 +88,135 @@ int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& 
   return args.sample.run(method, args.output, std::move(record), out);
 }
 
+// --method tile: the exemplar repeated over the output.
+int run_tile(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  args.sample.check(args.output, exemplar.dimension);
+  args.sample.check_budget(exemplar);
+  const compare::TiledExemplar method(exemplar, args.sample.domain(exemplar.dimension));
+  out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
+  record_reader(args.reader, record);
+  return args.sample.run(method, args.output, std::move(record), out);
+}
+
+// --method ijiri: seed-and-grow.
+int run_ijiri(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+  if (args.sample.iterations > 0)
+    throw core::UsageError(
+        "--iterations: --method ijiri grows until no seed is left; it takes no iteration "
+        "count");
+  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  args.sample.check(args.output, exemplar.dimension);
+  args.sample.check_budget(exemplar);
+  if (exemplar.dimension != 2)
+    throw core::UsageError(args.input + ": --method ijiri grows 2D exemplars only");
+  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
+  compare::SeedGrowthOptions options =
+      args.ijiri.options(exemplar, args.em.orientation, args.growth.overlap, domain);
+  args.sample.verbosity.stage("analysing the exemplar");
+  const compare::SeedAndGrow method(exemplar, args.reader.boundary(), domain, std::move(options));
+  if (!args.ijiri.show.empty()) {
+    if (io::extension_of(args.ijiri.show) != "svg")
+      throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
+                             "'");
+    show_connectivity(method.exemplar(), args.ijiri.show);
+    out << "wrote the connectivity to " << args.ijiri.show << '\n';
+  }
+  out << "seed-and-grow: " << exemplar.elements.size() << " exemplar elements, "
+      << method.exemplar().references.size() << " with closed rings, mean edge "
+      << core::format_number(method.exemplar().connectivity.mean_edge) << ' ' << exemplar.units
+      << '\n';
+  if (!args.ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args.ijiri.flips);
+  if (!args.ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args.ijiri.seeds);
+  record_reader(args.reader, record);
+  args.sample.verbosity.stage("growing");
+  return args.sample.run(method, args.output, std::move(record), out);
+}
+
+// --method davison: region growing, with an optional palette.
+int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+  if (args.sample.iterations > 0)
+    throw core::UsageError(
+        "--iterations: --method davison grows until the domain is full; it takes no "
+        "iteration count");
+  const geometry::Boundary boundary = args.reader.boundary();
+  std::vector<compare::GrowthSource> palette;
+  palette.reserve(2);  // `exemplar` stays valid
+  palette.push_back({io::read_scene(args.input, args.reader.options()), boundary});
+  const geometry::Scene& exemplar = palette.front().scene;
+  args.sample.check(args.output, exemplar.dimension);
+  args.sample.check_budget(exemplar);
+  if (args.growth.palette.empty() &&
+      (args.growth.palette_rings > 0 || args.growth.palette_bounding_radius >= 0))
+    throw core::UsageError(
+        "--palette-neighbourhood, --palette-bounding-radius: they need --palette");
+  if (!args.growth.palette.empty()) {
+    palette.push_back({io::read_scene(args.growth.palette, args.reader.options()), boundary,
+                       args.growth.palette_rings, args.growth.palette_bounding_radius});
+    if (palette.back().scene.dimension != exemplar.dimension)
+      throw core::UsageError(args.growth.palette + ": --palette is " +
+                             std::to_string(palette.back().scene.dimension) +
+                             "D but the exemplar is " + std::to_string(exemplar.dimension) + "D");
+    record.inputs.emplace_back("palette", args.growth.palette);
+  }
+  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
+  args.sample.verbosity.stage("analysing the exemplar");
+  const compare::RegionGrowing method(palette, domain, args.growth.options(args.em));
+  const compare::GrowthExemplar& grown = method.exemplar();
+  for (std::size_t s = 0, part = 0; s < grown.part.size(); ++s) {
+    if (static_cast<std::size_t>(grown.part[s]) != part) continue;
+    const std::size_t count = palette[part].scene.elements.size();
+    out << (part == 0 ? "region growing: " : "palette: ") << count
+        << " exemplar elements, neighbourhood radius " << core::format_number(grown.reach[s]) << ' '
+        << palette[part].scene.units << '\n';
+    ++part;
+  }
+  record_reader(args.reader, record);
+  args.sample.verbosity.stage("growing");
+  return args.sample.run(method, args.output, std::move(record), out);
+}
+
+// --method ma-em: the neighbourhood EM.
+int run_em(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  args.sample.check(args.output, exemplar.dimension);
+  args.sample.check_budget(exemplar);
+  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
+  const compare::EmOptions options = args.em.options(domain, args.sample.iterations);
+  args.sample.verbosity.stage("analysing the exemplar");
+  const compare::NeighbourhoodEm method(exemplar, args.reader.boundary(), domain, options);
+  out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
+      << method.exemplar().samples.size() << " samples, radius "
+      << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';
+  record_reader(args.reader, record);
+  args.sample.verbosity.stage("synthesising");
+  return args.sample.run(method, args.output, std::move(record), out);
+}
+
+// --method shape-process or hybrid: fit, then sample (a hybrid from another method's output).
+int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>& arguments,
+                      synthesis::SynthesisRecord record, std::ostream& out) {
+  const bool hybrid = args.method == "hybrid";
+  args.fit.options(args.reader);  // its own checks, before reading or fitting anything
+  args.fit.threads = args.sample.threads;
+  geometry::Scene exemplar;
+  const fit::FitResult fitted =
+      fit_exemplar(args.input, args.fit, args.reader, arguments, args.sample.verbosity,
+                   args.sample.budget.budget(), &exemplar,
+                   [&](const geometry::Scene& read) { args.sample.check_budget(read); });
+  if (!args.model.empty()) io::write_model(fitted.model, args.model);
+  print_model_brief(fitted.model, out);
+  if (!args.model.empty()) record.inputs.emplace_back("model", args.model);
+  record.options = flatten_options("fit", args.fit.to_json());
+  record_reader(args.reader, record);
+  if (hybrid) return run_hybrid(args, fitted.model, std::move(record), out);
+  const bool at_exemplar = args.start == "exemplar";
+  record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
+  args.sample.verbosity.stage("sampling");
+  return args.sample.run(fitted.model, args.output, std::move(record), out,
+                         at_exemplar ? &exemplar : nullptr);
+}
+
 }  // namespace
 
 void add_synthesize_command(CLI::App& app, Action& action,
@@ -190,123 +319,11 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.command = "synthesize";
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
-      if (args->method == "tile") {
-        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
-        args->sample.check(args->output, exemplar.dimension);
-        args->sample.check_budget(exemplar);
-        const compare::TiledExemplar method(exemplar, args->sample.domain(exemplar.dimension));
-        out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
-        record_reader(args->reader, record);
-        return args->sample.run(method, args->output, std::move(record), out);
-      }
-      if (ijiri) {
-        if (args->sample.iterations > 0)
-          throw core::UsageError(
-              "--iterations: --method ijiri grows until no seed is left; it takes no iteration "
-              "count");
-        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
-        args->sample.check(args->output, exemplar.dimension);
-        args->sample.check_budget(exemplar);
-        if (exemplar.dimension != 2)
-          throw core::UsageError(args->input + ": --method ijiri grows 2D exemplars only");
-        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
-        compare::SeedGrowthOptions options =
-            args->ijiri.options(exemplar, args->em.orientation, args->growth.overlap, domain);
-        args->sample.verbosity.stage("analysing the exemplar");
-        const compare::SeedAndGrow method(exemplar, args->reader.boundary(), domain,
-                                          std::move(options));
-        if (!args->ijiri.show.empty()) {
-          if (io::extension_of(args->ijiri.show) != "svg")
-            throw core::UsageError("--show-connectivity: expected an .svg file, got '" +
-                                   args->ijiri.show + "'");
-          show_connectivity(method.exemplar(), args->ijiri.show);
-          out << "wrote the connectivity to " << args->ijiri.show << '\n';
-        }
-        out << "seed-and-grow: " << exemplar.elements.size() << " exemplar elements, "
-            << method.exemplar().references.size() << " with closed rings, mean edge "
-            << core::format_number(method.exemplar().connectivity.mean_edge) << ' '
-            << exemplar.units << '\n';
-        if (!args->ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args->ijiri.flips);
-        if (!args->ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args->ijiri.seeds);
-        record_reader(args->reader, record);
-        args->sample.verbosity.stage("growing");
-        return args->sample.run(method, args->output, std::move(record), out);
-      }
-      if (growth) {
-        if (args->sample.iterations > 0)
-          throw core::UsageError(
-              "--iterations: --method davison grows until the domain is full; it takes no "
-              "iteration count");
-        const geometry::Boundary boundary = args->reader.boundary();
-        std::vector<compare::GrowthSource> palette;
-        palette.reserve(2);  // `exemplar` stays valid
-        palette.push_back({io::read_scene(args->input, args->reader.options()), boundary});
-        const geometry::Scene& exemplar = palette.front().scene;
-        args->sample.check(args->output, exemplar.dimension);
-        args->sample.check_budget(exemplar);
-        if (args->growth.palette.empty() &&
-            (args->growth.palette_rings > 0 || args->growth.palette_bounding_radius >= 0))
-          throw core::UsageError(
-              "--palette-neighbourhood, --palette-bounding-radius: they need --palette");
-        if (!args->growth.palette.empty()) {
-          palette.push_back({io::read_scene(args->growth.palette, args->reader.options()), boundary,
-                             args->growth.palette_rings, args->growth.palette_bounding_radius});
-          if (palette.back().scene.dimension != exemplar.dimension)
-            throw core::UsageError(args->growth.palette + ": --palette is " +
-                                   std::to_string(palette.back().scene.dimension) +
-                                   "D but the exemplar is " + std::to_string(exemplar.dimension) +
-                                   "D");
-          record.inputs.emplace_back("palette", args->growth.palette);
-        }
-        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
-        args->sample.verbosity.stage("analysing the exemplar");
-        const compare::RegionGrowing method(palette, domain, args->growth.options(args->em));
-        const compare::GrowthExemplar& grown = method.exemplar();
-        for (std::size_t s = 0, part = 0; s < grown.part.size(); ++s) {
-          if (static_cast<std::size_t>(grown.part[s]) != part) continue;
-          const std::size_t count = palette[part].scene.elements.size();
-          out << (part == 0 ? "region growing: " : "palette: ") << count
-              << " exemplar elements, neighbourhood radius " << core::format_number(grown.reach[s])
-              << ' ' << palette[part].scene.units << '\n';
-          ++part;
-        }
-        record_reader(args->reader, record);
-        args->sample.verbosity.stage("growing");
-        return args->sample.run(method, args->output, std::move(record), out);
-      }
-      if (em) {
-        const geometry::Scene exemplar = io::read_scene(args->input, args->reader.options());
-        args->sample.check(args->output, exemplar.dimension);
-        args->sample.check_budget(exemplar);
-        const geometry::Domain domain = args->sample.domain(exemplar.dimension);
-        const compare::EmOptions options = args->em.options(domain, args->sample.iterations);
-        args->sample.verbosity.stage("analysing the exemplar");
-        const compare::NeighbourhoodEm method(exemplar, args->reader.boundary(), domain, options);
-        out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
-            << method.exemplar().samples.size() << " samples, radius "
-            << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';
-        record_reader(args->reader, record);
-        args->sample.verbosity.stage("synthesising");
-        return args->sample.run(method, args->output, std::move(record), out);
-      }
-      args->fit.options(args->reader);  // its own checks, before reading or fitting anything
-      args->fit.threads = args->sample.threads;
-      geometry::Scene exemplar;
-      const fit::FitResult fitted =
-          fit_exemplar(args->input, args->fit, args->reader, arguments, args->sample.verbosity,
-                       args->sample.budget.budget(), &exemplar,
-                       [&](const geometry::Scene& read) { args->sample.check_budget(read); });
-      if (!args->model.empty()) io::write_model(fitted.model, args->model);
-      print_model_brief(fitted.model, out);
-      if (!args->model.empty()) record.inputs.emplace_back("model", args->model);
-      record.options = flatten_options("fit", args->fit.to_json());
-      record_reader(args->reader, record);
-      if (hybrid) return run_hybrid(*args, fitted.model, std::move(record), out);
-      const bool at_exemplar = args->start == "exemplar";
-      record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
-      args->sample.verbosity.stage("sampling");
-      return args->sample.run(fitted.model, args->output, std::move(record), out,
-                              at_exemplar ? &exemplar : nullptr);
+      if (args->method == "tile") return run_tile(*args, std::move(record), out);
+      if (ijiri) return run_ijiri(*args, std::move(record), out);
+      if (growth) return run_davison(*args, std::move(record), out);
+      if (em) return run_em(*args, std::move(record), out);
+      return run_shape_process(*args, arguments, std::move(record), out);
     };
   });
 }
