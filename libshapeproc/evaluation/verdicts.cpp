@@ -105,6 +105,124 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
       output_boundary, output_statistics, comparison, neighbourhood);
 }
 
+namespace {
+
+// The shape mix: the chi-square test of the classes' counts, naming the class that drifted most.
+Verdict mix_verdict(const ShapeMix& mix) {
+  Verdict v{"shape mix", mix.p_value, "p = " + number(mix.p_value, 3), "p ≥ 0.01", Outcome::pass,
+            "",          ""};
+  if (!(mix.p_value >= 0.01)) {
+    v.outcome = Outcome::fail;
+    v.problem = "the mix of shapes drifts";
+  }
+  v.brief = "p " + number(mix.p_value, 3);
+  // Name the class that drifted most.
+  double worst = 0.0;
+  int total = 0, exemplar_total_count = 0;
+  for (std::size_t c = 0; c < mix.classes.size(); ++c) {
+    total += mix.output[c];
+    exemplar_total_count += mix.exemplar[c];
+  }
+  for (std::size_t c = 0; c < mix.classes.size() && total > 0; ++c) {
+    const double share = static_cast<double>(mix.output[c]) / total;
+    const double wanted = static_cast<double>(mix.exemplar[c]) / exemplar_total_count;
+    if (std::abs(share - wanted) > worst) {
+      worst = std::abs(share - wanted);
+      v.shown = "p = " + number(mix.p_value, 3) + " (" + mix.classes[c] + " " +
+                number(100 * share, 0) + "% against " + number(100 * wanted, 0) + "%)";
+    }
+  }
+  return v;
+}
+
+Verdict overlap_verdict(const metrics::SceneStatistics& o, const metrics::SceneStatistics& ex) {
+  const double share = overlap_share(o), wanted = overlap_share(ex);
+  Verdict v{"overlaps",
+            share,
+            number(100 * share, 1) + "% of elements",
+            "at most the exemplar's " + number(100 * wanted, 1) + "% + 1",
+            Outcome::pass,
+            "",
+            ""};
+  if (share > wanted + 0.01) {
+    v.outcome = Outcome::fail;
+    v.problem = "elements overlap";
+  }
+  v.brief = number(100 * share, 1) + "%";
+  return v;
+}
+
+Verdict touching_verdict(const metrics::SceneStatistics& o, const metrics::SceneStatistics& ex) {
+  const double per = touching_per_element(o), wanted = touching_per_element(ex);
+  const double slack = std::max(0.1, 0.5 * wanted);
+  Verdict v{"touching",
+            per,
+            number(per) + " pairs per element",
+            number(wanted) + " ± " + number(slack),
+            Outcome::pass,
+            "",
+            ""};
+  if (std::abs(per - wanted) > slack) {
+    v.outcome = Outcome::fail;
+    v.problem = per > wanted ? "elements touch more often" : "contacts are lost";
+  }
+  v.brief = number(per);
+  return v;
+}
+
+// Long-range order, of planar arrangements (a 3D scene's projection says little).
+Verdict order_verdict(const Judged& j) {
+  const double order = j.output_order.order(), wanted = j.exemplar_order.order();
+  Verdict v{"order",
+            order,
+            number(order) + " (ψ" + std::to_string(j.output_order.symmetry()) + ")",
+            number(wanted) + " ± 0.2",
+            Outcome::pass,
+            "",
+            ""};
+  if (std::abs(order - wanted) > 0.2) {
+    v.outcome = Outcome::fail;
+    v.problem = order < wanted ? "loses the exemplar's lattice" : "more regular than the exemplar";
+  }
+  v.brief = number(order);
+  return v;
+}
+
+// Spacing: W1 of the nearest-neighbour distributions.
+Verdict spacing_verdict(const Judged& j) {
+  const double w1 = j.comparison->all.nearest;
+  Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, "", ""};
+  v.brief = number(w1);
+  if (!(w1 <= 0.15)) {
+    v.outcome = Outcome::fail;
+    v.problem = "nearest distances differ";
+  }
+  return v;
+}
+
+// The fitted model's own statistics: pairs per band and element.
+Verdict model_verdict(const ModelStatistics& m) {
+  const auto w = static_cast<std::size_t>(m.worst);
+  const double worst = std::abs(m.z[w]);
+  Verdict v{
+      "model statistics",
+      worst,
+      "|z| " + number(worst, 1) + " (" + m.names[w] + ": " + number(m.output[w]) + " against " +
+          number(m.exemplar[w]) + " pairs per element)",
+      "|z| ≤ " + number(m.critical, 1) + " (1% over " + std::to_string(m.z.size()) + " bands)",
+      Outcome::pass,
+      "",
+      ""};
+  v.brief = number(worst, 1);
+  if (!(worst <= m.critical)) {
+    v.outcome = Outcome::fail;
+    v.problem = "pairs in a band differ";
+  }
+  return v;
+}
+
+}  // namespace
+
 std::vector<Verdict> judge(const Judged& j) {
   std::vector<Verdict> out;
   const metrics::SceneStatistics& ex = *j.exemplar;
@@ -118,122 +236,16 @@ std::vector<Verdict> judge(const Judged& j) {
       if (c < j.comparison->intensity_ratio.size())
         out.push_back(density("density: " + o.categories[c], j.comparison->intensity_ratio[c]));
 
-  // The shape mix.
-  if (j.mix.degrees > 0) {
-    Verdict v{"shape mix", j.mix.p_value, "p = " + number(j.mix.p_value, 3),
-              "p ≥ 0.01",  Outcome::pass, "",
-              ""};
-    if (!(j.mix.p_value >= 0.01)) {
-      v.outcome = Outcome::fail;
-      v.problem = "the mix of shapes drifts";
-    }
-    v.brief = "p " + number(j.mix.p_value, 3);
-    // Name the class that drifted most.
-    double worst = 0.0;
-    int total = 0, exemplar_total_count = 0;
-    for (std::size_t c = 0; c < j.mix.classes.size(); ++c) {
-      total += j.mix.output[c];
-      exemplar_total_count += j.mix.exemplar[c];
-    }
-    for (std::size_t c = 0; c < j.mix.classes.size() && total > 0; ++c) {
-      const double share = static_cast<double>(j.mix.output[c]) / total;
-      const double wanted = static_cast<double>(j.mix.exemplar[c]) / exemplar_total_count;
-      if (std::abs(share - wanted) > worst) {
-        worst = std::abs(share - wanted);
-        v.shown = "p = " + number(j.mix.p_value, 3) + " (" + j.mix.classes[c] + " " +
-                  number(100 * share, 0) + "% against " + number(100 * wanted, 0) + "%)";
-      }
-    }
-    out.push_back(v);
-  }
+  if (j.mix.degrees > 0) out.push_back(mix_verdict(j.mix));
 
-  // Overlaps and touching pairs.
-  {
-    const double share = overlap_share(o), wanted = overlap_share(ex);
-    Verdict v{"overlaps",
-              share,
-              number(100 * share, 1) + "% of elements",
-              "at most the exemplar's " + number(100 * wanted, 1) + "% + 1",
-              Outcome::pass,
-              "",
-              ""};
-    if (share > wanted + 0.01) {
-      v.outcome = Outcome::fail;
-      v.problem = "elements overlap";
-    }
-    v.brief = number(100 * share, 1) + "%";
-    out.push_back(v);
-  }
-  {
-    const double per = touching_per_element(o), wanted = touching_per_element(ex);
-    const double slack = std::max(0.1, 0.5 * wanted);
-    Verdict v{"touching",
-              per,
-              number(per) + " pairs per element",
-              number(wanted) + " ± " + number(slack),
-              Outcome::pass,
-              "",
-              ""};
-    if (std::abs(per - wanted) > slack) {
-      v.outcome = Outcome::fail;
-      v.problem = per > wanted ? "elements touch more often" : "contacts are lost";
-    }
-    v.brief = number(per);
-    out.push_back(v);
-  }
+  out.push_back(overlap_verdict(o, ex));
+  out.push_back(touching_verdict(o, ex));
 
-  // Long-range order, of planar arrangements (a 3D scene's projection says little).
-  if (ex.dimension == 2) {
-    const double order = j.output_order.order(), wanted = j.exemplar_order.order();
-    Verdict v{"order",
-              order,
-              number(order) + " (ψ" + std::to_string(j.output_order.symmetry()) + ")",
-              number(wanted) + " ± 0.2",
-              Outcome::pass,
-              "",
-              ""};
-    if (std::abs(order - wanted) > 0.2) {
-      v.outcome = Outcome::fail;
-      v.problem =
-          order < wanted ? "loses the exemplar's lattice" : "more regular than the exemplar";
-    }
-    v.brief = number(order);
-    out.push_back(v);
-  }
+  if (ex.dimension == 2) out.push_back(order_verdict(j));
 
-  // Spacing: W1 of the nearest-neighbour distributions.
-  {
-    const double w1 = j.comparison->all.nearest;
-    Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, "", ""};
-    v.brief = number(w1);
-    if (!(w1 <= 0.15)) {
-      v.outcome = Outcome::fail;
-      v.problem = "nearest distances differ";
-    }
-    out.push_back(v);
-  }
+  out.push_back(spacing_verdict(j));
 
-  // The fitted model's own statistics: pairs per band and element.
-  if (j.model && j.model->worst >= 0) {
-    const ModelStatistics& m = *j.model;
-    const auto w = static_cast<std::size_t>(m.worst);
-    const double worst = std::abs(m.z[w]);
-    Verdict v{
-        "model statistics",
-        worst,
-        "|z| " + number(worst, 1) + " (" + m.names[w] + ": " + number(m.output[w]) + " against " +
-            number(m.exemplar[w]) + " pairs per element)",
-        "|z| ≤ " + number(m.critical, 1) + " (1% over " + std::to_string(m.z.size()) + " bands)",
-        Outcome::pass,
-        "",
-        ""};
-    v.brief = number(worst, 1);
-    if (!(worst <= m.critical)) {
-      v.outcome = Outcome::fail;
-      v.problem = "pairs in a band differ";
-    }
-    out.push_back(v);
-  }
+  if (j.model && j.model->worst >= 0) out.push_back(model_verdict(*j.model));
 
   if (j.novelty) out.push_back(novelty(*j.novelty));
   if (j.neighbourhood)
