@@ -385,9 +385,320 @@ void mark_unbounded(const std::vector<std::size_t>& free, MleResult& r) {
 
 }  // namespace
 
+namespace {
+
+// One iterate of the search: its θ, the expectations simulated there and how close they came.
+struct Iterate {
+  std::vector<double> theta, expected, expected_error;
+  int chains = 0;
+  double worst_z = std::numeric_limits<double>::infinity();
+  double worst_r_hat = std::numeric_limits<double>::infinity();
+  double ranking_z = std::numeric_limits<double>::infinity();
+};
+
+// The Monte Carlo search for the maximum likelihood: simulations at θ, Newton steps on their
+// moments (reweighted between simulations), the rough and final phases and their stopping rules.
+class LikelihoodSearch {
+ public:
+  // `r` holds the observed statistics, the start θ and the statuses; `free` the free components.
+  LikelihoodSearch(const model::ShapeProcessModel& start, const geometry::Domain& window,
+                   const MleOptions& options, std::size_t categories, std::size_t parameters,
+                   std::vector<std::size_t> free, MleResult& r);
+  // Iterates until convergence, a cap or a reason to give up.
+  void run();
+  // The result's θ, expectations and statuses once the loop has ended.
+  void finish();
+
+ private:
+  enum class Next { again, stop, decide };
+  // The simulation of an iteration; false when it only grew a sample that needs more chains.
+  bool simulate(StatisticsMoments& m, double& effective);
+  Next drop_unreachable(const StatisticsMoments& m);
+  // What a simulation's moments decide: give up, undo the step, converge, or step on.
+  Next decide(StatisticsMoments& m, double effective);
+  void converge(const StatisticsMoments& m, const Gap& g);
+  std::vector<double> mean_of_estimates() const;
+  double ranking_z(const StatisticsMoments& m, const Gap& g) const;
+  double worst_r_hat(const StatisticsMoments& m) const;
+  double least_effective(const StatisticsMoments& m) const;
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - clock_).count(); }
+
+  const Clock::time_point clock_ = Clock::now();
+  const geometry::Domain& window_;
+  const MleOptions& options_;
+  MleResult& r_;
+  const std::vector<double>& observed_;
+  const std::size_t categories_, parameters_, p_;
+  std::vector<std::size_t> free_;
+  std::optional<Newton> newton_;
+  const std::vector<double> start_theta_;
+  std::vector<int> unvaried_;  // consecutive simulations in which t_k never varied
+  model::ShapeProcessModel model_;
+  bool rough_ = true;
+  int stalled_ = 0;              // simulations since the gap last shrank
+  int diverged_ = 0;             // steps undone by the step control
+  std::vector<double> reached_;  // per simulation: the least share of a count reached (unreached)
+  // Final phase: each simulation gives one estimate of the MLE (the maximum of its reweighted
+  // likelihood), whose Monte Carlo error is as large as the gap's; the next simulation runs at
+  // the mean of the last kAveraged estimates, so that the error of θ shrinks below the test's.
+  std::vector<std::vector<double>> estimates_;
+  // By the gap: ranking iterates whose chains agree first picked, on crescents-grid, an early
+  // one where every chain had lost the exemplar alike (|z| 538).
+  Iterate best_;
+  double last_r_hat_ = 1.0;
+  // More chains where the sample is worth too few independent observations: the chains of each
+  // simulation from then on, and the sample at the current θ that chains are added to.
+  int chains_;
+  const int most_chains_;
+  std::optional<StatisticsMoments> added_to_;
+  // Every simulation samples the same shapes on the same window: one set of proxies for all.
+  std::shared_ptr<const sample::ChainGeometry> geometry_;
+  int rests_ = 0;  // simulations that ran the rest of a first round's chains (not iterations)
+};
+
+LikelihoodSearch::LikelihoodSearch(const model::ShapeProcessModel& start,
+                                   const geometry::Domain& window, const MleOptions& options,
+                                   std::size_t categories, std::size_t parameters,
+                                   std::vector<std::size_t> free, MleResult& r)
+    : window_(window),
+      options_(options),
+      r_(r),
+      observed_(r.observed),
+      categories_(categories),
+      parameters_(parameters),
+      p_(r.observed.size()),
+      free_(std::move(free)),
+      start_theta_(r.theta),
+      unvaried_(r.observed.size(), 0),
+      model_(start),
+      chains_(options.sampling.chains),
+      most_chains_(kMostChainFactor * options.sampling.chains) {
+  newton_.emplace(observed_, free_, categories_, parameters_, options_);
+  r_.tolerance = convergence_tolerance(options_.significance, free_.size());
+  geometry_ = options_.sampling.geometry ? options_.sampling.geometry
+                                         : std::make_shared<const sample::ChainGeometry>(
+                                               model_, model::Interaction(model_), window_);
+}
+
+std::vector<double> LikelihoodSearch::mean_of_estimates() const {
+  const std::size_t first = estimates_.size() > kAveraged ? estimates_.size() - kAveraged : 0;
+  std::vector<double> mean = estimates_.back();
+  for (std::size_t k : free_) {
+    double sum = 0.0;
+    for (std::size_t e = first; e < estimates_.size(); ++e) sum += estimates_[e][k];
+    mean[k] = sum / static_cast<double>(estimates_.size() - first);
+  }
+  return mean;
+}
+
+// The largest |z| with each error no larger than a sample worth kMinEffectiveSize independent
+// observations would give: a sample of too few has large errors, and every gap looks small in
+// them; ranked this way it still competes, on the precision it should have had. The spread is
+// capped at a Poisson count's of the exemplar's size: chains split between a sparse and a
+// condensed state have a spread as large as their gap (two-kinds on its torus: 34.8 ± 14 red
+// discs against 17, ranked best and returned), and the gap is measured against the count.
+double LikelihoodSearch::ranking_z(const StatisticsMoments& m, const Gap& g) const {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < free_.size(); ++i) {
+    const std::size_t k = free_[i];
+    const double spread =
+        std::sqrt(std::min(std::max(0.0, m.covariance[k * p_ + k]), std::max(observed_[k], 1.0)) /
+                  kMinEffectiveSize);
+    const double se =
+        std::max(std::min(m.standard_error[k], std::max(spread, kNegligibleGap)), 1e-9);
+    worst = std::max(worst, std::abs(g.gap[static_cast<Eigen::Index>(i)]) / se);
+  }
+  return worst;
+}
+
+double LikelihoodSearch::worst_r_hat(const StatisticsMoments& m) const {
+  double worst = 1.0;
+  for (std::size_t k : free_)
+    if (k < m.r_hat.size()) worst = std::max(worst, m.r_hat[k]);
+  return worst;
+}
+
+double LikelihoodSearch::least_effective(const StatisticsMoments& m) const {
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t k : free_)
+    if (k < m.effective_size.size() && m.standard_error[k] > kNegligibleGap)
+      least = std::min(least, m.effective_size[k]);
+  return least;
+}
+
+bool LikelihoodSearch::simulate(StatisticsMoments& m, double& effective) {
+  set_theta(model_, r_.theta);
+  ChainsSetting setting = options_.sampling;
+  setting.geometry = geometry_;
+  const int simulation = r_.iterations + rests_;
+  setting.seed = options_.sampling.seed + static_cast<std::uint64_t>(simulation) * 1000003ULL;
+  setting.chains = added_to_ ? chains_ - added_to_->chains() : first_round(chains_, options_);
+  if (rough_) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
+  m = statistics_moments(model_, window_, setting, added_to_ ? &*added_to_ : nullptr);
+  added_to_.reset();
+  effective = least_effective(m);
+  if (m.chains() < chains_ && effective < kMinEffectiveSize) {
+    added_to_ = std::move(m);  // the rest of the chains, at the same θ, before any decision
+    ++rests_;
+    --r_.iterations;  // one iteration, in two simulations
+    return false;
+  }
+  r_.expected = m.mean;
+  r_.expected_error = m.standard_error;
+  return true;
+}
+
+// Statistics the chains never vary, simulation after simulation, while their parameter is
+// pushed towards the exemplar's count: unreachable (a jammed exemplar). They leave the free set
+// at their start value, and the next simulation runs without them.
+LikelihoodSearch::Next LikelihoodSearch::drop_unreachable(const StatisticsMoments& m) {
+  bool dropped = false;
+  for (std::size_t k : free_) {
+    const bool never = m.covariance[k * p_ + k] <= kNoInformation && observed_[k] != m.mean[k];
+    unvaried_[k] = never ? unvaried_[k] + 1 : 0;
+    if (unvaried_[k] >= kUnreachableAfter) {
+      r_.status[k] = model::ParameterStatus::unreachable;
+      r_.theta[k] = start_theta_[k];
+      dropped = true;
+    }
+  }
+  if (!dropped) return Next::decide;
+  free_.erase(std::remove_if(free_.begin(), free_.end(),
+                             [&](std::size_t k) {
+                               return r_.status[k] == model::ParameterStatus::unreachable;
+                             }),
+              free_.end());
+  newton_.emplace(observed_, free_, categories_, parameters_, options_);
+  r_.tolerance = convergence_tolerance(options_.significance, free_.size());
+  return free_.empty() ? Next::stop : Next::again;
+}
+
+LikelihoodSearch::Next LikelihoodSearch::decide(StatisticsMoments& m, double effective) {
+  const Gap g = newton_->gap(m, r_.theta);
+  if (options_.progress)
+    options_.progress({r_.iterations, g.worst_z, effective, m.chains(), seconds()});
+  const Iterate here{r_.theta,  m.mean,         m.standard_error, m.chains(),
+                     g.worst_z, worst_r_hat(m), ranking_z(m, g)};
+  const bool improved = here.ranking_z < best_.ranking_z;
+  last_r_hat_ = here.worst_r_hat;
+  r_.chains = here.chains;
+  if (improved) best_ = here;
+  if (options_.sampling.compress) {
+    double share = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < categories_; ++c)
+      if (observed_[c] > 0) share = std::min(share, m.mean[c] / observed_[c]);
+    reached_.push_back(share);
+    r_.abandoned = unreached(reached_, m, observed_, categories_);
+    if (!r_.abandoned.empty()) return Next::stop;
+  }
+  if (r_.iterations == 1 && options_.abandon_condensed_start > 0) {
+    r_.abandoned = condensed_start(m, observed_, categories_, options_.abandon_condensed_start);
+    if (!r_.abandoned.empty()) return Next::stop;
+  }
+  // Step control: a step that made the gap much worse than the best iterate's is undone, and
+  // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
+  // parameters where they hold almost nothing and the gaps explode).
+  if (here.ranking_z > kDiverged * best_.ranking_z && g.worst_z > r_.tolerance) {
+    if (++diverged_ == options_.abandon_after_diverged) {
+      r_.abandoned = "its steps diverging";
+      return Next::stop;
+    }
+    r_.theta = best_.theta;
+    newton_->shorten_steps();
+    return Next::again;
+  }
+  // The rough phase ends at the tolerance, or where the gap stops shrinking near it (its noise
+  // floor); far from it (a sampler that cannot mix), the simulations stay short.
+  stalled_ = improved ? 0 : stalled_ + 1;
+  if (rough_ && g.worst_z > r_.tolerance && g.worst_z < kNearTolerance * r_.tolerance &&
+      stalled_ >= kStalledAfter) {
+    rough_ = false;
+  }
+  if (g.worst_z <= r_.tolerance) {
+    if (rough_) {
+      rough_ = false;  // within tolerance at a quarter of the precision: check at full length
+      return Next::again;
+    }
+    if (effective < kMinEffectiveSize && chains_ < most_chains_) {
+      chains_ = more_chains(m.chains(), effective, most_chains_);
+      added_to_ = std::move(m);  // the same θ again, with a sample whose test means something
+      estimates_.clear();        // those of the smaller samples would hold the average back
+      return Next::again;
+    }
+  }
+  // R-hat is asked of the setting's chains only. R-hat² is about 1 + 1 / (what one chain is
+  // worth), so R-hat ≤ 1.1 asks every chain to be worth about 5 observations, which more chains
+  // cannot give; a sample grown to more chains has its disagreement in its errors (the
+  // multi-chain effective size, from 7 or more degrees of freedom) and its test passes on 20
+  // effective observations.
+  const bool chains_agree = here.worst_r_hat <= kMaxRHat || m.chains() > options_.sampling.chains;
+  if (g.worst_z <= r_.tolerance && chains_agree && effective >= kMinEffectiveSize) {
+    converge(m, g);
+    return Next::stop;
+  }
+  const bool last = r_.iterations == options_.max_iterations || seconds() > options_.max_seconds;
+  if (last) return Next::stop;  // θ stays where the reported expectations were estimated
+  if (rough_ || g.worst_z > kNearTolerance * r_.tolerance) {
+    // Far from the tolerance the steps are not noise to be averaged away: a larger sample
+    // (more chains) that finds a gap the smaller ones hid moves θ at full steps again.
+    estimates_.clear();
+    r_.theta = newton_->reweighted_steps(m, g, r_.theta);
+  } else {
+    estimates_.push_back(newton_->reweighted_steps(m, g, r_.theta));
+    r_.theta = mean_of_estimates();
+  }
+  return Next::again;
+}
+
+// The estimate: the maximum of the likelihood as the final sample approximates it (Geyer &
+// Thompson), averaged with the final phase's earlier estimates, where the sample's reweighting
+// stays valid; otherwise the converged θ.
+void LikelihoodSearch::converge(const StatisticsMoments& m, const Gap& g) {
+  r_.converged = true;
+  estimates_.push_back(newton_->reweighted_steps(m, g, r_.theta));
+  const std::vector<double> polished = mean_of_estimates();
+  std::vector<double> delta(p_, 0.0);
+  for (std::size_t k : free_) delta[k] = polished[k] - r_.theta[k];
+  double share = 1.0;
+  const StatisticsMoments at = reweighted(m, delta, share);
+  if (share >= kMinEffectiveShare) {
+    r_.theta = polished;
+    r_.expected = at.mean;
+    newton_->standard_errors(newton_->gap(at, r_.theta), m, r_.standard_errors);
+  } else {
+    newton_->standard_errors(g, m, r_.standard_errors);
+  }
+}
+
+void LikelihoodSearch::run() {
+  for (r_.iterations = 1; r_.iterations <= options_.max_iterations; ++r_.iterations) {
+    StatisticsMoments m;
+    double effective = 0.0;
+    if (!simulate(m, effective)) continue;
+    Next next = drop_unreachable(m);
+    if (next == Next::decide) next = decide(m, effective);
+    if (next == Next::stop) break;
+  }
+}
+
+void LikelihoodSearch::finish() {
+  r_.iterations = std::min(r_.iterations, options_.max_iterations);
+  if (!r_.converged) {  // the iterate closest to the exemplar, not the last one
+    r_.theta = best_.theta;
+    r_.expected = best_.expected;
+    r_.expected_error = best_.expected_error;
+    r_.chains = best_.chains;
+  }
+  r_.worst_r_hat = r_.converged ? last_r_hat_ : best_.worst_r_hat;
+  for (std::size_t k : free_) r_.penalised[k] = newton_->pairs_moved(k, r_.theta) >= kNotablyMoved;
+  if (r_.converged) mark_unbounded(free_, r_);
+  r_.seconds = seconds();
+}
+
+}  // namespace
+
 MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geometry::Domain& window,
                               const std::vector<double>& observed, const MleOptions& options) {
-  const auto clock = Clock::now();
   model::validate(start);
   const model::Interaction interaction(start);
   const std::size_t p = static_cast<std::size_t>(interaction.statistic_count());
@@ -420,230 +731,9 @@ MleResult maximise_likelihood(const model::ShapeProcessModel& start, const geome
     poisson_closed_form(start, window, options, r);
     return r;
   }
-  std::optional<Newton> newton;
-  newton.emplace(observed, free, categories, parameters, options);
-  r.tolerance = convergence_tolerance(options.significance, free.size());
-  const std::vector<double> start_theta = r.theta;
-  std::vector<int> unvaried(p, 0);  // consecutive simulations in which t_k never varied
-  model::ShapeProcessModel model = start;
-  bool rough = true;
-  int stalled = 0;              // simulations since the gap last shrank
-  int diverged = 0;             // steps undone by the step control
-  std::vector<double> reached;  // per simulation: the least share of a count reached (unreached)
-  // Final phase: each simulation gives one estimate of the MLE (the maximum of its reweighted
-  // likelihood), whose Monte Carlo error is as large as the gap's; the next simulation runs at
-  // the mean of the last kAveraged estimates, so that the error of θ shrinks below the test's.
-  std::vector<std::vector<double>> estimates;
-  const auto mean_of_estimates = [&] {
-    const std::size_t first = estimates.size() > kAveraged ? estimates.size() - kAveraged : 0;
-    std::vector<double> mean = estimates.back();
-    for (std::size_t k : free) {
-      double sum = 0.0;
-      for (std::size_t e = first; e < estimates.size(); ++e) sum += estimates[e][k];
-      mean[k] = sum / static_cast<double>(estimates.size() - first);
-    }
-    return mean;
-  };
-  struct Iterate {
-    std::vector<double> theta, expected, expected_error;
-    int chains = 0;
-    double worst_z = std::numeric_limits<double>::infinity();
-    double worst_r_hat = std::numeric_limits<double>::infinity();
-    double ranking_z = std::numeric_limits<double>::infinity();
-  } best;  // by the gap: ranking iterates whose chains agree first picked, on crescents-grid, an
-           // early one where every chain had lost the exemplar alike (|z| 538)
-  // The largest |z| with each error no larger than a sample worth kMinEffectiveSize independent
-  // observations would give: a sample of too few has large errors, and every gap looks small in
-  // them; ranked this way it still competes, on the precision it should have had. The spread is
-  // capped at a Poisson count's of the exemplar's size: chains split between a sparse and a
-  // condensed state have a spread as large as their gap (two-kinds on its torus: 34.8 ± 14 red
-  // discs against 17, ranked best and returned), and the gap is measured against the count.
-  const auto ranking_z = [&](const StatisticsMoments& m, const Gap& g) {
-    double worst = 0.0;
-    for (std::size_t i = 0; i < free.size(); ++i) {
-      const std::size_t k = free[i];
-      const double spread =
-          std::sqrt(std::min(std::max(0.0, m.covariance[k * p + k]), std::max(observed[k], 1.0)) /
-                    kMinEffectiveSize);
-      const double se =
-          std::max(std::min(m.standard_error[k], std::max(spread, kNegligibleGap)), 1e-9);
-      worst = std::max(worst, std::abs(g.gap[static_cast<Eigen::Index>(i)]) / se);
-    }
-    return worst;
-  };
-  double last_r_hat = 1.0;
-  const auto worst_r_hat = [&](const StatisticsMoments& m) {
-    double worst = 1.0;
-    for (std::size_t k : free)
-      if (k < m.r_hat.size()) worst = std::max(worst, m.r_hat[k]);
-    return worst;
-  };
-  const auto least_effective = [&](const StatisticsMoments& m) {
-    double least = std::numeric_limits<double>::infinity();
-    for (std::size_t k : free)
-      if (k < m.effective_size.size() && m.standard_error[k] > kNegligibleGap)
-        least = std::min(least, m.effective_size[k]);
-    return least;
-  };
-  // More chains where the sample is worth too few independent observations: the chains of each
-  // simulation from then on, and the sample at the current θ that chains are added to.
-  int chains = options.sampling.chains;
-  const int most_chains = kMostChainFactor * options.sampling.chains;
-  std::optional<StatisticsMoments> added_to;
-  // Every simulation samples the same shapes on the same window: one set of proxies for all.
-  const std::shared_ptr<const sample::ChainGeometry> geometry =
-      options.sampling.geometry
-          ? options.sampling.geometry
-          : std::make_shared<const sample::ChainGeometry>(model, model::Interaction(model), window);
-  int rests = 0;  // simulations that ran the rest of a first round's chains (not iterations)
-  for (r.iterations = 1; r.iterations <= options.max_iterations; ++r.iterations) {
-    set_theta(model, r.theta);
-    ChainsSetting setting = options.sampling;
-    setting.geometry = geometry;
-    const int simulation = r.iterations + rests;
-    setting.seed = options.sampling.seed + static_cast<std::uint64_t>(simulation) * 1000003ULL;
-    setting.chains = added_to ? chains - added_to->chains() : first_round(chains, options);
-    if (rough) setting.steps = std::max(setting.observe_every * 2, setting.steps / kRoughDivisor);
-    StatisticsMoments m =
-        statistics_moments(model, window, setting, added_to ? &*added_to : nullptr);
-    added_to.reset();
-    const double effective = least_effective(m);
-    if (m.chains() < chains && effective < kMinEffectiveSize) {
-      added_to = std::move(m);  // the rest of the chains, at the same θ, before any decision
-      ++rests;
-      --r.iterations;  // one iteration, in two simulations
-      continue;
-    }
-    r.expected = m.mean;
-    r.expected_error = m.standard_error;
-    // Statistics the chains never vary, simulation after simulation, while their parameter is
-    // pushed towards the exemplar's count: unreachable (a jammed exemplar). They leave the free
-    // set at their start value.
-    bool dropped = false;
-    for (std::size_t k : free) {
-      const bool never = m.covariance[k * p + k] <= kNoInformation && observed[k] != m.mean[k];
-      unvaried[k] = never ? unvaried[k] + 1 : 0;
-      if (unvaried[k] >= kUnreachableAfter) {
-        r.status[k] = model::ParameterStatus::unreachable;
-        r.theta[k] = start_theta[k];
-        dropped = true;
-      }
-    }
-    if (dropped) {
-      free.erase(std::remove_if(free.begin(), free.end(),
-                                [&](std::size_t k) {
-                                  return r.status[k] == model::ParameterStatus::unreachable;
-                                }),
-                 free.end());
-      newton.emplace(observed, free, categories, parameters, options);
-      r.tolerance = convergence_tolerance(options.significance, free.size());
-      if (free.empty()) break;
-      continue;  // simulate again without them
-    }
-    const Gap g = newton->gap(m, r.theta);
-    if (options.progress)
-      options.progress({r.iterations, g.worst_z, effective, m.chains(),
-                        std::chrono::duration<double>(Clock::now() - clock).count()});
-    const Iterate here{r.theta,   m.mean,         m.standard_error, m.chains(),
-                       g.worst_z, worst_r_hat(m), ranking_z(m, g)};
-    const bool improved = here.ranking_z < best.ranking_z;
-    last_r_hat = here.worst_r_hat;
-    r.chains = here.chains;
-    if (improved) best = here;
-    if (options.sampling.compress) {
-      double share = std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < categories; ++c)
-        if (observed[c] > 0) share = std::min(share, m.mean[c] / observed[c]);
-      reached.push_back(share);
-      r.abandoned = unreached(reached, m, observed, categories);
-      if (!r.abandoned.empty()) break;
-    }
-    if (r.iterations == 1 && options.abandon_condensed_start > 0) {
-      r.abandoned = condensed_start(m, observed, categories, options.abandon_condensed_start);
-      if (!r.abandoned.empty()) break;
-    }
-    // Step control: a step that made the gap much worse than the best iterate's is undone, and
-    // the steps from there are halved (a jammed exemplar's chains can otherwise be thrown to
-    // parameters where they hold almost nothing and the gaps explode).
-    if (here.ranking_z > kDiverged * best.ranking_z && g.worst_z > r.tolerance) {
-      if (++diverged == options.abandon_after_diverged) {
-        r.abandoned = "its steps diverging";
-        break;
-      }
-      r.theta = best.theta;
-      newton->shorten_steps();
-      continue;
-    }
-    // The rough phase ends at the tolerance, or where the gap stops shrinking near it (its noise
-    // floor); far from it (a sampler that cannot mix), the simulations stay short.
-    stalled = improved ? 0 : stalled + 1;
-    if (rough && g.worst_z > r.tolerance && g.worst_z < kNearTolerance * r.tolerance &&
-        stalled >= kStalledAfter) {
-      rough = false;
-    }
-    if (g.worst_z <= r.tolerance) {
-      if (rough) {
-        rough = false;  // within tolerance at a quarter of the precision: check at full length
-        continue;
-      }
-      if (effective < kMinEffectiveSize && chains < most_chains) {
-        chains = more_chains(m.chains(), effective, most_chains);
-        added_to = std::move(m);  // the same θ again, with a sample whose test means something
-        estimates.clear();        // those of the smaller samples would hold the average back
-        continue;
-      }
-    }
-    // R-hat is asked of the setting's chains only. R-hat² is about 1 + 1 / (what one chain is
-    // worth), so R-hat ≤ 1.1 asks every chain to be worth about 5 observations, which more chains
-    // cannot give; a sample grown to more chains has its disagreement in its errors (the
-    // multi-chain effective size, from 7 or more degrees of freedom) and its test passes on 20
-    // effective observations.
-    const bool chains_agree = here.worst_r_hat <= kMaxRHat || m.chains() > options.sampling.chains;
-    if (g.worst_z <= r.tolerance && chains_agree && effective >= kMinEffectiveSize) {
-      r.converged = true;
-      // The estimate: the maximum of the likelihood as the final sample approximates it
-      // (Geyer & Thompson), averaged with the final phase's earlier estimates, where the
-      // sample's reweighting stays valid; otherwise the converged θ.
-      estimates.push_back(newton->reweighted_steps(m, g, r.theta));
-      const std::vector<double> polished = mean_of_estimates();
-      std::vector<double> delta(p, 0.0);
-      for (std::size_t k : free) delta[k] = polished[k] - r.theta[k];
-      double share = 1.0;
-      const StatisticsMoments at = reweighted(m, delta, share);
-      if (share >= kMinEffectiveShare) {
-        r.theta = polished;
-        r.expected = at.mean;
-        newton->standard_errors(newton->gap(at, r.theta), m, r.standard_errors);
-      } else {
-        newton->standard_errors(g, m, r.standard_errors);
-      }
-      break;
-    }
-    const bool last =
-        r.iterations == options.max_iterations ||
-        std::chrono::duration<double>(Clock::now() - clock).count() > options.max_seconds;
-    if (last) break;  // θ stays where the reported expectations were estimated
-    if (rough || g.worst_z > kNearTolerance * r.tolerance) {
-      // Far from the tolerance the steps are not noise to be averaged away: a larger sample
-      // (more chains) that finds a gap the smaller ones hid moves θ at full steps again.
-      estimates.clear();
-      r.theta = newton->reweighted_steps(m, g, r.theta);
-    } else {
-      estimates.push_back(newton->reweighted_steps(m, g, r.theta));
-      r.theta = mean_of_estimates();
-    }
-  }
-  r.iterations = std::min(r.iterations, options.max_iterations);
-  if (!r.converged) {  // the iterate closest to the exemplar, not the last one
-    r.theta = best.theta;
-    r.expected = best.expected;
-    r.expected_error = best.expected_error;
-    r.chains = best.chains;
-  }
-  r.worst_r_hat = r.converged ? last_r_hat : best.worst_r_hat;
-  for (std::size_t k : free) r.penalised[k] = newton->pairs_moved(k, r.theta) >= kNotablyMoved;
-  if (r.converged) mark_unbounded(free, r);
-  r.seconds = std::chrono::duration<double>(Clock::now() - clock).count();
+  LikelihoodSearch search(start, window, options, categories, parameters, std::move(free), r);
+  search.run();
+  search.finish();
   return r;
 }
 
