@@ -7,13 +7,15 @@
 # under its exemplar's name.
 #   bash scripts/compare-gallery.sh                      # data/svg only, into out/gallery
 #   bash scripts/compare-gallery.sh HERO_FOLDER [OUT]    # and a dozen Hero tiles
-# METHODS=shape-process,davison picks the methods (default: shape-process, ma-em, ijiri, davison).
+# METHODS=shape-process,davison picks the methods (default: `compare`'s own, the tile repeated
+# first). RESULT=docs/results/compare-gallery.md also writes the tables there, under the command,
+# the commit and the date.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 shapeproc=${SHAPEPROC:-./build/tools/shapeproc}
 hero=${1:-}
 out=${2:-out/gallery}
-methods=${METHODS:-shape-process,ma-em,ijiri,davison}
+methods=${METHODS:-tile,shape-process,ma-em,ijiri,davison}
 tiles=(anchors-away bamboo bubbles circles-and-squares fancy-rectangles happy-intersection
   heavy-rain jupiter lines-in-motion polka-dots random-shapes tic-tac-toe)
 mkdir -p "$out"
@@ -62,3 +64,19 @@ fi
   echo "</ul></body></html>"
 } >"$out/index.html"
 echo "wrote $out/index.html and $out/gallery.md" >&2
+if [ -n "${RESULT:-}" ]; then
+  {
+    echo "# Every method on data/ and a dozen Hero tiles"
+    echo
+    echo "Command: \`RESULT=$RESULT bash scripts/compare-gallery.sh${hero:+ HERO}\` at commit" \
+      "$(git rev-parse --short HEAD), $(date -u +%Y-%m-%d)."
+    echo
+    echo "\`shapeproc compare EXEMPLAR --methods $methods --size S --seed 1\`: S is 2W x 2H of the"
+    echo "exemplar, larger for a tile of few elements (at least 64 elements in the output); tiles"
+    echo "are read with \`--tile\`. Each cell is the figure a check reads, with its verdict"
+    echo "(docs/evaluation.md); s is the method's wall time, fit included for the shape process."
+    echo
+    cat "$out/gallery.md"
+  } >"$RESULT"
+  echo "wrote $RESULT" >&2
+fi
