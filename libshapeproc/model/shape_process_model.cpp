@@ -76,29 +76,45 @@ geometry::Scene ShapeProcessModel::shape_space() const {
   return scene;
 }
 
-void validate(const ShapeProcessModel& model) {
-  if (model.dimension != 2 && model.dimension != 3)
-    fail("dimension", "must be 2 or 3, got " + std::to_string(model.dimension));
-  if (model.categories.empty()) fail("categories", "at least one category is needed");
-  for (std::size_t c = 0; c < model.categories.size(); ++c) {
-    const double beta = model.categories[c].beta;
-    if (!(std::isfinite(beta) && beta > 0)) {
-      fail("categories[" + std::to_string(c) + "].beta",
-           "must be finite and > 0, got " + number(beta));
+namespace {
+
+// One axis of a pair, at `at`: its canonical direction `expected`, thresholds and γ.
+void validate_axis(const AxisParameters& axis, const std::string& at,
+                   const geometry::Vec3& expected, int dimension) {
+  if (!axis.direction.allFinite() || axis.direction.norm() == 0 ||
+      (axis.direction.normalized() - expected).norm() > 1e-6 ||
+      (dimension == 2 && axis.direction.z() != 0)) {
+    std::ostringstream text;
+    text << "expected the canonical direction (" << expected.x() << ", " << expected.y();
+    if (dimension == 3) text << ", " << expected.z();
+    text << ")";
+    fail(at + ".direction", text.str());
+  }
+  if (axis.thresholds.empty())
+    fail(at + ".thresholds", "at least the hard-core distance d0 is needed");
+  for (std::size_t k = 0; k < axis.thresholds.size(); ++k) {
+    const double d = axis.thresholds[k];
+    if (!(std::isfinite(d) && d >= 0))
+      fail(at + ".thresholds[" + std::to_string(k) + "]",
+           "must be finite and >= 0, got " + number(d));
+    if (k > 0 && d < axis.thresholds[k - 1]) {
+      fail(at + ".thresholds",
+           "must not decrease, got " + number(d) + " after " + number(axis.thresholds[k - 1]));
     }
   }
-  const geometry::DirectionBins bins = [&] {
-    try {
-      return geometry::DirectionBins(model.dimension, model.measurement.directions);
-    } catch (const std::invalid_argument& e) {
-      fail("measurement.directions", e.what());
-    }
-  }();
-  // The pair tables hold categories² entries: a file of 65,537 categories had wrapped an int.
-  if (model.categories.size() > kMaxCategories) {
-    fail("categories", "at most " + std::to_string(kMaxCategories) + " categories, got " +
-                           std::to_string(model.categories.size()));
+  if (axis.gammas.size() + 1 != axis.thresholds.size()) {
+    fail(at + ".gammas", "expected " + std::to_string(axis.thresholds.size() - 1) +
+                             " values (one per band), got " + std::to_string(axis.gammas.size()));
   }
+  for (std::size_t k = 0; k < axis.gammas.size(); ++k) {
+    const double g = axis.gammas[k];
+    if (!(std::isfinite(g) && g >= 0))
+      fail(at + ".gammas[" + std::to_string(k) + "]", "must be finite and >= 0, got " + number(g));
+  }
+}
+
+// The pairs' interactions: category indices, each pair once, the axes the directions give.
+void validate_interactions(const ShapeProcessModel& model, const geometry::DirectionBins& bins) {
   const int categories = static_cast<int>(model.categories.size());
   std::vector<bool> seen(
       static_cast<std::size_t>(categories) * static_cast<std::size_t>(categories), false);
@@ -123,43 +139,15 @@ void validate(const ShapeProcessModel& model) {
                                 std::to_string(pair.axes.size()));
     }
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
-      const AxisParameters& axis = pair.axes[i];
-      const std::string at = where + ".axes[" + std::to_string(i) + "]";
-      const geometry::Vec3 expected = bins.axis_direction(static_cast<int>(i));
-      if (!axis.direction.allFinite() || axis.direction.norm() == 0 ||
-          (axis.direction.normalized() - expected).norm() > 1e-6 ||
-          (model.dimension == 2 && axis.direction.z() != 0)) {
-        std::ostringstream text;
-        text << "expected the canonical direction (" << expected.x() << ", " << expected.y();
-        if (model.dimension == 3) text << ", " << expected.z();
-        text << ")";
-        fail(at + ".direction", text.str());
-      }
-      if (axis.thresholds.empty())
-        fail(at + ".thresholds", "at least the hard-core distance d0 is needed");
-      for (std::size_t k = 0; k < axis.thresholds.size(); ++k) {
-        const double d = axis.thresholds[k];
-        if (!(std::isfinite(d) && d >= 0))
-          fail(at + ".thresholds[" + std::to_string(k) + "]",
-               "must be finite and >= 0, got " + number(d));
-        if (k > 0 && d < axis.thresholds[k - 1]) {
-          fail(at + ".thresholds",
-               "must not decrease, got " + number(d) + " after " + number(axis.thresholds[k - 1]));
-        }
-      }
-      if (axis.gammas.size() + 1 != axis.thresholds.size()) {
-        fail(at + ".gammas", "expected " + std::to_string(axis.thresholds.size() - 1) +
-                                 " values (one per band), got " +
-                                 std::to_string(axis.gammas.size()));
-      }
-      for (std::size_t k = 0; k < axis.gammas.size(); ++k) {
-        const double g = axis.gammas[k];
-        if (!(std::isfinite(g) && g >= 0))
-          fail(at + ".gammas[" + std::to_string(k) + "]",
-               "must be finite and >= 0, got " + number(g));
-      }
+      validate_axis(pair.axes[i], where + ".axes[" + std::to_string(i) + "]",
+                    bins.axis_direction(static_cast<int>(i)), model.dimension);
     }
   }
+}
+
+// The shapes, their categories and classes, and the shape classes.
+void validate_shapes(const ShapeProcessModel& model) {
+  const int categories = static_cast<int>(model.categories.size());
   for (std::size_t s = 0; s < model.shapes.size(); ++s) {
     const ModelShape& shape = model.shapes[s];
     const std::string where = "shapes[" + std::to_string(s) + "]";
@@ -201,6 +189,35 @@ void validate(const ShapeProcessModel& model) {
              "category " + std::to_string(c) + " (" + model.categories[c].name + ") has no shape");
     }
   }
+}
+
+}  // namespace
+
+void validate(const ShapeProcessModel& model) {
+  if (model.dimension != 2 && model.dimension != 3)
+    fail("dimension", "must be 2 or 3, got " + std::to_string(model.dimension));
+  if (model.categories.empty()) fail("categories", "at least one category is needed");
+  for (std::size_t c = 0; c < model.categories.size(); ++c) {
+    const double beta = model.categories[c].beta;
+    if (!(std::isfinite(beta) && beta > 0)) {
+      fail("categories[" + std::to_string(c) + "].beta",
+           "must be finite and > 0, got " + number(beta));
+    }
+  }
+  const geometry::DirectionBins bins = [&] {
+    try {
+      return geometry::DirectionBins(model.dimension, model.measurement.directions);
+    } catch (const std::invalid_argument& e) {
+      fail("measurement.directions", e.what());
+    }
+  }();
+  // The pair tables hold categories² entries: a file of 65,537 categories had wrapped an int.
+  if (model.categories.size() > kMaxCategories) {
+    fail("categories", "at most " + std::to_string(kMaxCategories) + " categories, got " +
+                           std::to_string(model.categories.size()));
+  }
+  validate_interactions(model, bins);
+  validate_shapes(model);
 }
 
 std::vector<std::string> statistic_names(const ShapeProcessModel& model) {
