@@ -88,11 +88,17 @@ int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& 
   return args.sample.run(method, args.output, std::move(record), out);
 }
 
-// --method tile: the exemplar repeated over the output.
-int run_tile(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
-  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+// The exemplar, with the output's name and the resource budget checked against it.
+geometry::Scene read_checked_exemplar(const SynthesizeArguments& args) {
+  geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
   args.sample.check(args.output, exemplar.dimension);
   args.sample.check_budget(exemplar);
+  return exemplar;
+}
+
+// --method tile: the exemplar repeated over the output.
+int run_tile(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+  const geometry::Scene exemplar = read_checked_exemplar(args);
   const compare::TiledExemplar method(exemplar, args.sample.domain(exemplar.dimension));
   out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
   record_reader(args.reader, record);
@@ -105,9 +111,7 @@ int run_ijiri(SynthesizeArguments& args, synthesis::SynthesisRecord record, std:
     throw core::UsageError(
         "--iterations: --method ijiri grows until no seed is left; it takes no iteration "
         "count");
-  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
-  args.sample.check(args.output, exemplar.dimension);
-  args.sample.check_budget(exemplar);
+  const geometry::Scene exemplar = read_checked_exemplar(args);
   if (exemplar.dimension != 2)
     throw core::UsageError(args.input + ": --method ijiri grows 2D exemplars only");
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
@@ -178,9 +182,7 @@ int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, st
 
 // --method ma-em: the neighbourhood EM.
 int run_em(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
-  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
-  args.sample.check(args.output, exemplar.dimension);
-  args.sample.check_budget(exemplar);
+  const geometry::Scene exemplar = read_checked_exemplar(args);
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
   const compare::EmOptions options = args.em.options(domain, args.sample.iterations);
   args.sample.verbosity.stage("analysing the exemplar");
