@@ -1,6 +1,7 @@
 #include "libshapeproc/io/domain_io.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -11,6 +12,29 @@
 #include "libshapeproc/render/raster.hpp"
 
 namespace shapeproc::io {
+
+std::optional<std::vector<double>> parse_size(std::string_view text, const geometry::Box3* window) {
+  const std::vector<std::string> parts = split(text, ',');
+  if (parts.size() < 2 || parts.size() > 3) return std::nullopt;
+  std::vector<double> sizes;
+  for (std::size_t axis = 0; axis < parts.size(); ++axis) {
+    std::string_view part = trim(parts[axis]);
+    double factor = 1.0;
+    if (!part.empty() && std::toupper(static_cast<unsigned char>(part.back())) == "WHD"[axis]) {
+      if (!window || window->isEmpty()) return std::nullopt;
+      factor = window->sizes()[static_cast<Eigen::Index>(axis)];
+      part.remove_suffix(1);
+      part = trim(part);
+      if (part.empty()) part = "1";
+    }
+    const std::optional<double> value = parse_number(part);
+    if (!value) return std::nullopt;
+    const double size = *value * factor;
+    if (!(size > 0) || !std::isfinite(size)) return std::nullopt;
+    sizes.push_back(size);
+  }
+  return sizes;
+}
 
 geometry::Raster read_domain_mask(const std::string& path) {
   const std::string extension = extension_of(path);

@@ -3,7 +3,9 @@
 // both stretched over the box.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "libshapeproc/geometry/domain.hpp"
@@ -16,6 +18,13 @@ struct DomainFiles {
   std::string mask;          // .svg (filled shapes) or .png (white = inside); may be empty
   std::string intensity;     // .png (white = 1); may be empty
 };
+
+// Parses a size such as --size's: W,H or W,H,D, each a length in the exemplar's units or a
+// multiple of the side of the exemplar's window along that axis: "3W,3H" is three windows by
+// three, "W,2H" one by two, "300,2H" mixes both (the letters are W, H and D in that order,
+// either case). `window` is the exemplar's window; null refuses multiples. nullopt on anything
+// else, a value that is not positive and finite included.
+std::optional<std::vector<double>> parse_size(std::string_view text, const geometry::Box3* window);
 
 // Reads the mask and map and builds the domain. Throws core::UsageError for sizes of the wrong
 // count or sign, a torus with a mask, or maps on a 3D domain; core::InputError naming the file for

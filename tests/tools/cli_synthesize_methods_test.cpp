@@ -43,7 +43,8 @@ TEST(CliSynthesizeMaEm, OutputsCarryTheMethodsRecordAndRepeat) {
   EXPECT_EQ(nlohmann::json::parse(stats.out).at("boundary"), "torus");
 }
 
-// The tile baseline: the bubbles tile repeated over 3 x 3 tiles, whatever the seed; `stats
+// The tile baseline: the bubbles tile repeated over 3 x 3 tiles (--size 3W,3H), whatever the seed;
+// `stats
 // --against` finds it a copy (every novelty measure 1, against chance levels far below) and says it
 // repeats the exemplar. Options of the fitted and grown methods are refused.
 TEST(CliSynthesizeTile, TheExemplarRepeatedIsTheBaselineStatsCallsACopy) {
@@ -51,7 +52,7 @@ TEST(CliSynthesizeTile, TheExemplarRepeatedIsTheBaselineStatsCallsACopy) {
   const std::string tile = data("third-party/hero-patterns/bubbles.svg");
   const std::string out = dir.file("tile.svg").string();
   const Result r = run_cli({"synthesize", tile, "--tile", "--method", "tile", "-o", out, "--size",
-                            "300,300", "--seed", "5", "--quiet"});
+                            "3W,3H", "--seed", "5", "--quiet"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("tile: the exemplar repeated over the output"), std::string::npos) << r.out;
   const Result stats = run_cli({"stats", out, "--against", tile, "--tile", "--json"});
@@ -69,6 +70,9 @@ TEST(CliSynthesizeTile, TheExemplarRepeatedIsTheBaselineStatsCallsACopy) {
   expect_one_line_error(run_cli({"synthesize", tile, "--tile", "--method", "tile", "-o",
                                  dir.file("x.svg").string(), "--size", "300,300", "--ratio", "3"}),
                         2, "--ratio");
+  expect_one_line_error(run_cli({"synthesize", tile, "--tile", "--method", "tile", "-o",
+                                 dir.file("y.svg").string(), "--size", "3H,3W"}),
+                        2, "--size");
 }
 
 TEST(CliSynthesizeMaEm, OptionsOfTheOtherMethodAndNonsenseAreRefused) {

@@ -11,6 +11,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/cli.hpp"
@@ -84,7 +85,11 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
       "side, each with its verdicts, times and metrics");
   command->add_option("EXEMPLAR", args->exemplar, "the exemplar")->required();
   command->add_option("-o,--output", args->directory, "report directory")->required();
-  command->add_option("--size", args->size, "output domain W,H (2D) or W,H,D (3D)")->required();
+  command
+      ->add_option("--size", args->size,
+                   "output domain W,H (2D) or W,H,D (3D), in the exemplar's units or as multiples "
+                   "of its window: 3W,3H")
+      ->required();
   command->add_option("--seed", args->seed, "seed of every method")->capture_default_str();
   command
       ->add_option(
@@ -102,7 +107,13 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
     action = [args, arguments](std::ostream& out) {
       const std::vector<std::string> methods = parse_methods(args->methods);
       // The exemplar read once before anything runs: a bad file is one error, not one per method.
-      io::read_scene(args->exemplar, args->reader.options());
+      const geometry::Scene exemplar = io::read_scene(args->exemplar, args->reader.options());
+      const auto size = io::parse_size(args->size, &exemplar.window);
+      if (!size || static_cast<int>(size->size()) != exemplar.dimension)
+        throw core::UsageError(
+            "--size: expected " + std::string(exemplar.dimension == 3 ? "W,H,D" : "W,H") +
+            " (positive) for a " + std::to_string(exemplar.dimension) +
+            "D exemplar, or multiples of its window such as 3W,3H; got '" + args->size + "'");
       const std::filesystem::path directory(args->directory);
       if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
         throw core::UsageError(args->directory + ": exists and is not a directory");

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -73,10 +74,16 @@ struct SampleFlags {
   double png_scale = 0.0;
   VerbosityFlags verbosity;
   BudgetFlags budget;
+  // --size may give multiples of the exemplar's window ("3W,3H", io::parse_size): set by
+  // add_to; the window is known once the exemplar is read (set_exemplar).
+  bool exemplar_multiples = false;
+  std::optional<geometry::Box3> exemplar_window;
 
   // `sampler_options`: also --intensity, --shift-probability and --shift-radius, which only the
-  // shape process's sampler takes.
-  void add_to(CLI::App& command, bool sampler_options = true);
+  // shape process's sampler takes. `exemplar_multiples`: a command that reads an exemplar.
+  void add_to(CLI::App& command, bool sampler_options = true, bool exemplar_multiples = false);
+  // The exemplar whose window --size's multiples refer to.
+  void set_exemplar(const geometry::Scene& exemplar) { exemplar_window = exemplar.window; }
   // Checks what can be checked before any expensive work: --size's syntax (and its count when
   // `dimension` is known, else 2 or 3), the output, --png and --trace extensions, --boundary with
   // --domain, and that the mask and map files exist. Throws core::UsageError or core::InputError.

@@ -65,8 +65,13 @@ std::vector<std::pair<std::string, std::string>> png_text(
 
 }  // namespace
 
-void SampleFlags::add_to(CLI::App& command, bool sampler_options) {
-  command.add_option("--size", size, "domain W,H (2D) or W,H,D (3D), in the model's units")
+void SampleFlags::add_to(CLI::App& command, bool sampler_options, bool multiples) {
+  exemplar_multiples = multiples;
+  command
+      .add_option("--size", size,
+                  multiples ? "domain W,H (2D) or W,H,D (3D), in the exemplar's units, or as "
+                              "multiples of its window: 3W,3H"
+                            : "domain W,H (2D) or W,H,D (3D), in the model's units")
       ->required();
   command.add_option("--domain", domain_file,
                      "2D domain shape: an SVG (its filled shapes) or a grayscale PNG mask (white = "
@@ -146,7 +151,12 @@ void SampleFlags::check_budget(const geometry::Scene& exemplar) const {
 }
 
 void SampleFlags::check(const std::string& output, int dimension) const {
-  const auto sizes = io::parse_number_list(size);
+  // Before the exemplar is read, multiples are checked for their syntax only.
+  const geometry::Box3 unit(geometry::Vec3::Zero(), geometry::Vec3::Ones());
+  const geometry::Box3* window = exemplar_window      ? &*exemplar_window
+                                 : exemplar_multiples ? &unit
+                                                      : nullptr;
+  const auto sizes = io::parse_size(size, window);
   const bool count_ok = sizes && (dimension > 0 ? static_cast<int>(sizes->size()) == dimension
                                                 : sizes->size() == 2 || sizes->size() == 3);
   if (!count_ok || !std::all_of(sizes->begin(), sizes->end(),
@@ -156,6 +166,8 @@ void SampleFlags::check(const std::string& output, int dimension) const {
                                                   : "W,H (2D) or W,H,D (3D)";
     throw core::UsageError(
         "--size: expected " + expected + " (positive)" +
+        (exemplar_multiples ? std::string(", or multiples of the exemplar's window such as 3W,3H")
+                            : std::string()) +
         (dimension > 0 ? " for a " + std::to_string(dimension) + "D model" : std::string()) +
         ", got '" + size + "'");
   }
@@ -216,7 +228,7 @@ void SampleFlags::check(const std::string& output, int dimension) const {
 
 geometry::Domain SampleFlags::domain(int dimension) const {
   io::DomainFiles files;
-  files.size = *io::parse_number_list(size);
+  files.size = *io::parse_size(size, exemplar_window ? &*exemplar_window : nullptr);
   files.boundary = boundary;
   files.mask = domain_file;
   files.intensity = intensity;

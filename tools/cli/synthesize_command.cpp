@@ -89,8 +89,9 @@ int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& 
 }
 
 // The exemplar, with the output's name and the resource budget checked against it.
-geometry::Scene read_checked_exemplar(const SynthesizeArguments& args) {
+geometry::Scene read_checked_exemplar(SynthesizeArguments& args) {
   geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
+  args.sample.set_exemplar(exemplar);
   args.sample.check(args.output, exemplar.dimension);
   args.sample.check_budget(exemplar);
   return exemplar;
@@ -148,6 +149,7 @@ int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, st
   palette.reserve(2);  // `exemplar` stays valid
   palette.push_back({io::read_scene(args.input, args.reader.options()), boundary});
   const geometry::Scene& exemplar = palette.front().scene;
+  args.sample.set_exemplar(exemplar);
   args.sample.check(args.output, exemplar.dimension);
   args.sample.check_budget(exemplar);
   if (args.growth.palette.empty() &&
@@ -204,8 +206,10 @@ int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>&
   geometry::Scene exemplar;
   const fit::FitResult fitted =
       fit_exemplar(args.input, args.fit, args.reader, arguments, args.sample.verbosity,
-                   args.sample.budget.budget(), &exemplar,
-                   [&](const geometry::Scene& read) { args.sample.check_budget(read); });
+                   args.sample.budget.budget(), &exemplar, [&](const geometry::Scene& read) {
+                     args.sample.set_exemplar(read);
+                     args.sample.check_budget(read);
+                   });
   if (!args.model.empty()) io::write_model(fitted.model, args.model);
   print_model_brief(fitted.model, out);
   if (!args.model.empty()) record.inputs.emplace_back("model", args.model);
@@ -288,7 +292,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
   args->growth.add_overlap_to(*command);
   args->growth_overlap = options_since(*command, before);
   args->reader.add_to(*command);
-  args->sample.add_to(*command, /*sampler_options=*/false);
+  args->sample.add_to(*command, /*sampler_options=*/false, /*exemplar_multiples=*/true);
   command->callback([&action, args, arguments, command, start_from, start] {
     action = [args, arguments, command, start_from, start](std::ostream& out) {
       const bool em = args->method == "ma-em", growth = args->method == "davison";
