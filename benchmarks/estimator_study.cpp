@@ -8,7 +8,6 @@
 // with no pair in a band (γ̂ = 0) are counted apart.
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -94,8 +93,8 @@ void study(const Case& c, int replicates) {
     mle_options.sampling.seed = 7 + static_cast<std::uint64_t>(r);
     const fit::FitResult likelihood =
         fit::refine_to_maximum_likelihood(z, options, pseudo, mle_options);
-    converged +=
-        nlohmann::json::parse(likelihood.model.fit_json)["estimator"].value("converged", false);
+    converged += likelihood.model.fit && likelihood.model.fit->likelihood &&
+                 likelihood.model.fit->likelihood->converged;
     const auto record = [&](const model::ShapeProcessModel& m, std::vector<Moments>& out) {
       const model::CategoryParameters& b = m.categories[0];
       out[0].add(std::log(b.beta), b.beta_standard_error / b.beta, theta[0]);

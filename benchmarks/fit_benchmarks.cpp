@@ -3,7 +3,6 @@
 // on the machine's cores). The target: under 5 s per 2D exemplar on 2 cores.
 #include <benchmark/benchmark.h>
 
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -28,9 +27,9 @@ void BM_MaximumLikelihoodFit(benchmark::State& state, const char* file, const ch
     const auto result =
         shapeproc::fit::refine_to_maximum_likelihood(exemplar, options, std::move(mple), {});
     benchmark::DoNotOptimize(result.model.categories[0].beta);
-    const nlohmann::json estimator = nlohmann::json::parse(result.model.fit_json)["estimator"];
-    converged = estimator.value("converged", false);
-    iterations = estimator.value("iterations", 0);
+    const auto& estimator = result.model.fit->likelihood;
+    converged = estimator && estimator->converged;
+    iterations = estimator ? estimator->iterations : 0;
   }
   state.counters["elements"] = static_cast<double>(exemplar.elements.size());
   state.counters["mle_iterations"] = iterations;

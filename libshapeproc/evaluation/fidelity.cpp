@@ -4,7 +4,6 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -35,14 +34,11 @@ struct FitPrecision {
 
 FitPrecision fit_precision(const model::ShapeProcessModel& model, std::size_t statistics) {
   FitPrecision f{std::vector<double>(statistics, 0.0), std::vector<double>(statistics, 0.0)};
-  if (model.fit_json.empty()) return f;
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
-  if (!fit.contains("estimator")) return f;
-  const nlohmann::json& e = fit["estimator"];
-  if (e.contains("expected_standard_error") && e["expected_standard_error"].size() == statistics)
-    f.expected_error = e["expected_standard_error"].get<std::vector<double>>();
-  const double sd = e.value("attraction_prior_sd", 0.0);
-  if (sd > 0 && e.value("method", std::string()) == "mcmc-mle") {
+  if (!model.fit || !model.fit->likelihood) return f;
+  const model::LikelihoodRecord& e = *model.fit->likelihood;
+  if (e.expected_standard_error.size() == statistics) f.expected_error = e.expected_standard_error;
+  const double sd = e.attraction_prior_sd;
+  if (sd > 0) {
     const model::Interaction interaction(model);
     for (int p = static_cast<int>(model.categories.size()); p < interaction.parameter_count();
          ++p) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -72,19 +71,16 @@ bool packed_exemplar(const model::ShapeProcessModel& mple) {
 
 namespace {
 
-// Whether the model's fit record holds `key` with `value` in its maximum-likelihood estimator.
-bool estimator_says(const model::ShapeProcessModel& model, const char* key, const char* value) {
-  if (model.fit_json.empty()) return false;
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
-  if (fit.is_discarded() || !fit.contains("estimator")) return false;
-  const nlohmann::json& e = fit["estimator"];
-  return e.contains(key) && e[key] == value;
+// The maximum-likelihood part of the model's fit record, or null.
+const model::LikelihoodRecord* likelihood_of(const model::ShapeProcessModel& model) {
+  return model.fit && model.fit->likelihood ? &*model.fit->likelihood : nullptr;
 }
 
 }  // namespace
 
 bool compressing_burn_in(const model::ShapeProcessModel& model) {
-  return estimator_says(model, "burn_in_kind", "compressing");
+  const model::LikelihoodRecord* e = likelihood_of(model);
+  return e && e->compressing_burn_in;
 }
 
 sample::CompressionOptions output_compression(const model::ShapeProcessModel& model) {
@@ -98,7 +94,8 @@ geometry::Domain stationary_domain(const geometry::Scene& exemplar) {
 }
 
 bool fitted_on_stationary_window(const model::ShapeProcessModel& model) {
-  return estimator_says(model, "window", "stationary");
+  const model::LikelihoodRecord* e = likelihood_of(model);
+  return e && e->stationary_window;
 }
 
 namespace {
@@ -106,9 +103,7 @@ namespace {
 // A note in the fit's record and its notes, first.
 void add_first_note(FitResult& fit, const std::string& note) {
   fit.notes.insert(fit.notes.begin(), note);
-  nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
-  record["notes"] = fit.notes;
-  fit.model.fit_json = record.dump();
+  if (fit.model.fit) fit.model.fit->notes = fit.notes;
 }
 
 // "N iteration(s), S s": what a maximum-likelihood attempt took.
@@ -136,27 +131,24 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
   FitResult start = drawn;
   start.notes = pseudo_likelihood_notes;  // the window as drawn's own notes are not the torus's
   FitResult again = refine_to_maximum_likelihood(exemplar, fit_options, std::move(start), torus);
-  nlohmann::json record = nlohmann::json::parse(again.model.fit_json);
-  const nlohmann::json& estimator = record["estimator"];
+  model::LikelihoodRecord& estimator = *again.model.fit->likelihood;
   const std::string first =
       "the fit of the window as a piece of a larger drawing (its own torus) " +
       (failed.abandoned.empty() ? std::string("did not converge ")
                                 : "was abandoned, " + failed.abandoned + ", ") +
       "from the pseudo-likelihood's estimate (" + attempt(failed.iterations, failed.seconds) + ")";
-  if (estimator.value("converged", false)) {
-    record["estimator"]["start"] = "mle of the window as drawn";
-    again.model.fit_json = record.dump();
+  if (estimator.converged) {
+    estimator.start = "mle of the window as drawn";
     add_first_note(again, first +
                               "; started again from the estimate of the window as drawn, it "
                               "converged (" +
-                              std::to_string(estimator.value("iterations", 0)) + " iteration(s))");
+                              std::to_string(estimator.iterations) + " iteration(s))");
     return again;
   }
-  add_first_note(drawn,
-                 first + ", nor from the estimate of the window as drawn (" +
-                     attempt(estimator.value("iterations", 0), estimator.value("seconds", 0.0)) +
-                     "), so the window was fitted as drawn (--edge none); its outputs "
-                     "may be denser or sparser than the exemplar near its edges");
+  add_first_note(drawn, first + ", nor from the estimate of the window as drawn (" +
+                            attempt(estimator.iterations, estimator.seconds) +
+                            "), so the window was fitted as drawn (--edge none); its outputs "
+                            "may be denser or sparser than the exemplar near its edges");
   return drawn;
 }
 
@@ -204,7 +196,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   if (stationary && !mle.converged && options.window == WindowModel::automatic)
     return refit_after_torus_failure(exemplar, fit_options, std::move(mple), options, mle);
   FitResult result = std::move(mple);
-  const std::string fit_json = result.model.fit_json;
+  model::FitRecord record = result.model.fit.value_or(model::FitRecord{});
   result.model = with_estimates(start, mle);
   if (!mle.converged && !mle.abandoned.empty()) {
     result.notes.push_back("the maximum-likelihood fit gave up after " +
@@ -219,7 +211,6 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
         " s): some expected counts still differ from the exemplar's by more than " +
         core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
   }
-  nlohmann::json record = nlohmann::json::parse(fit_json);
   std::vector<int> unreachable;  // θ indices the chains never varied (a jammed exemplar)
   for (std::size_t k = 0; k < mle.status.size(); ++k) {
     if (mle.status[k] != model::ParameterStatus::unreachable) continue;
@@ -262,33 +253,31 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     const double se = mle.expected_error.size() > k ? mle.expected_error[k] : 0.0;
     z.push_back(se > 0 ? (observed[k] - mle.expected[k]) / se : 0.0);
   }
-  record["estimator"] = {{"method", "mcmc-mle"},
-                         {"start", "mple"},
-                         {"window", stationary ? "stationary" : "own"},
-                         {"chains_start", "empty"},
-                         {"burn_in_kind", compress ? "compressing" : "plain"},
-                         {"unbounded", held},
-                         {"iterations", mle.iterations},
-                         {"converged", mle.converged},
-                         {"chains", options.sampling.chains},
-                         {"final_chains", mle.chains},
-                         {"burn_in", chains.sampling.burn_in},
-                         {"steps", chains.sampling.steps},
-                         {"observe_every", options.sampling.observe_every},
-                         {"seed", options.sampling.seed},
-                         {"attraction_prior_sd", options.attraction_prior_sd},
-                         {"penalised", penalised},
-                         {"unreachable", unreachable},
-                         {"observed", observed},
-                         {"expected", mle.expected},
-                         {"expected_standard_error", mle.expected_error},
-                         {"z", z},
-                         {"tolerance", mle.tolerance},
-                         {"worst_r_hat", std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0},
-                         {"significance", options.significance},
-                         {"seconds", mle.seconds}};
-  record["notes"] = result.notes;
-  result.model.fit_json = record.dump();
+  model::LikelihoodRecord& e = record.likelihood.emplace();
+  e.stationary_window = stationary;
+  e.compressing_burn_in = compress;
+  e.unbounded = held;
+  e.iterations = mle.iterations;
+  e.converged = mle.converged;
+  e.chains = options.sampling.chains;
+  e.final_chains = mle.chains;
+  e.burn_in = chains.sampling.burn_in;
+  e.steps = chains.sampling.steps;
+  e.observe_every = options.sampling.observe_every;
+  e.seed = options.sampling.seed;
+  e.attraction_prior_sd = options.attraction_prior_sd;
+  e.penalised = penalised;
+  e.unreachable = unreachable;
+  e.observed = observed;
+  e.expected = mle.expected;
+  e.expected_standard_error = mle.expected_error;
+  e.z = z;
+  e.tolerance = mle.tolerance;
+  e.worst_r_hat = std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0;
+  e.significance = options.significance;
+  e.seconds = mle.seconds;
+  record.notes = result.notes;
+  result.model.fit = std::move(record);
   return result;
 }
 

@@ -82,7 +82,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
 
   assign_estimates(model, interaction, mple);
   add_existence_notes(mple, follows_share, result.notes);
-  model.fit_json = fit_record_json(exemplar, options, result, quadrature.cells_along, mple);
+  model.fit = pseudo_likelihood_record(exemplar, options, result, quadrature.cells_along, mple);
   return result;
 }
 

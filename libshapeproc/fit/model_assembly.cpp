@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 
 namespace shapeproc::fit {
 
@@ -34,42 +33,32 @@ void assign_estimates(model::ShapeProcessModel& model, const Interaction& intera
   }
 }
 
-std::string fit_record_json(const geometry::Scene& exemplar, const FitOptions& options,
-                            const FitResult& result, int cells_along, const MpleResult& mple) {
-  const int dimension = exemplar.dimension;
-  const bool fixed_thresholds = !options.thresholds.empty();
-  const nlohmann::json fit = {
-      {"window",
-       {{"min", std::vector<double>(exemplar.window.min().data(),
-                                    exemplar.window.min().data() + dimension)},
-        {"max", std::vector<double>(exemplar.window.max().data(),
-                                    exemplar.window.max().data() + dimension)}}},
-      {"elements", exemplar.elements.size()},
-      {"edge", edge_name(options)},
-      {"quantiles", fixed_thresholds ? nlohmann::json() : nlohmann::json(options.quantiles)},
-      {"thresholds", fixed_thresholds ? nlohmann::json(options.thresholds) : nlohmann::json()},
-      {"quadrature",
-       {{"method", result.quadrature_lines ? "lines" : "cells"},
-        {"cells", result.quadrature_cells},
-        {"cells_along_longest_side", cells_along},
-        {"shapes_per_location", options.shapes_per_location},
-        {"refinement", options.refinement},
-        {"points", result.quadrature_points},
-        {"data_weight", options.data_weight}}},
-      {"data_points", result.data_points},
-      {"log_pseudo_likelihood", result.log_pseudo_likelihood},
-      {"optimiser",
-       {{"method", "NLopt LD_LBFGS, then Newton"},
-        {"evaluations", mple.evaluations},
-        {"newton_steps", mple.newton_steps}}},
-      {"notes", result.notes},
-      {"seconds",
-       {{"proxies", result.seconds.proxies},
-        {"measurements", result.seconds.measurements},
-        {"quadrature", result.seconds.quadrature},
-        {"optimisation", result.seconds.optimisation}}},
-      {"version", SHAPEPROC_VERSION}};
-  return fit.dump();
+model::FitRecord pseudo_likelihood_record(const geometry::Scene& exemplar,
+                                          const FitOptions& options, const FitResult& result,
+                                          int cells_along, const MpleResult& mple) {
+  const auto dimension = static_cast<std::ptrdiff_t>(exemplar.dimension);
+  model::FitRecord r;
+  r.window_min.assign(exemplar.window.min().data(), exemplar.window.min().data() + dimension);
+  r.window_max.assign(exemplar.window.max().data(), exemplar.window.max().data() + dimension);
+  r.elements = static_cast<long long>(exemplar.elements.size());
+  r.edge = edge_name(options);
+  if (options.thresholds.empty())
+    r.quantiles = options.quantiles;
+  else
+    r.thresholds = options.thresholds;
+  r.quadrature = {result.quadrature_lines,     result.quadrature_cells, cells_along,
+                  options.shapes_per_location, options.refinement,      result.quadrature_points,
+                  options.data_weight};
+  r.data_points = result.data_points;
+  r.log_pseudo_likelihood = result.log_pseudo_likelihood;
+  r.optimiser = "NLopt LD_LBFGS, then Newton";
+  r.evaluations = mple.evaluations;
+  r.newton_steps = mple.newton_steps;
+  r.notes = result.notes;
+  r.seconds = {result.seconds.proxies, result.seconds.measurements, result.seconds.quadrature,
+               result.seconds.optimisation};
+  r.version = SHAPEPROC_VERSION;
+  return r;
 }
 
 }  // namespace shapeproc::fit

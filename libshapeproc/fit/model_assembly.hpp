@@ -11,8 +11,9 @@ namespace shapeproc::fit {
 void assign_estimates(model::ShapeProcessModel& model, const model::Interaction& interaction,
                       const MpleResult& mple);
 
-// The `fit` record of the model file: window, options, quadrature, optimiser, notes and times.
-std::string fit_record_json(const geometry::Scene& exemplar, const FitOptions& options,
-                            const FitResult& result, int cells_along, const MpleResult& mple);
+// The pseudo-likelihood fit's record: window, options, quadrature, optimiser, notes and times.
+model::FitRecord pseudo_likelihood_record(const geometry::Scene& exemplar,
+                                          const FitOptions& options, const FitResult& result,
+                                          int cells_along, const MpleResult& mple);
 
 }  // namespace shapeproc::fit

@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/fit_record_io.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/svg_path_data.hpp"
@@ -274,27 +275,12 @@ std::string model_to_json(const ShapeProcessModel& model) {
       classes.push_back({{"category", c.category}, {"weight", c.weight}, {"label", c.label}});
     document["shape_classes"] = classes;
   }
-  if (!model.fit_json.empty()) document["fit"] = json::parse(model.fit_json);
+  if (model.fit) document["fit"] = fit_record_json(*model.fit);
   return document.dump(2) + "\n";
 }
 
 std::optional<double> recorded_exemplar_density(const ShapeProcessModel& model) {
-  if (model.fit_json.empty()) return std::nullopt;
-  const json fit = json::parse(model.fit_json, nullptr, false);
-  if (!fit.is_object() || fit.contains("edits") || !fit.contains("elements") ||
-      !fit.contains("window") || !fit["elements"].is_number())
-    return std::nullopt;
-  const json& window = fit["window"];
-  if (!window.is_object() || !window.contains("min") || !window.contains("max") ||
-      !window["min"].is_array() || window["min"].size() != window["max"].size())
-    return std::nullopt;
-  double measure = 1.0;
-  for (std::size_t k = 0; k < window["min"].size(); ++k) {
-    if (!window["min"][k].is_number() || !window["max"][k].is_number()) return std::nullopt;
-    measure *= window["max"][k].get<double>() - window["min"][k].get<double>();
-  }
-  if (!(measure > 0.0) || !std::isfinite(measure)) return std::nullopt;
-  return fit["elements"].get<double>() / measure;
+  return model.fit ? model.fit->exemplar_density() : std::nullopt;
 }
 
 void write_model(const ShapeProcessModel& model, const std::filesystem::path& file) {
@@ -501,7 +487,10 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
   model.interactions = parse_interactions(document, model.dimension, r, axes_seen);
   parse_measurement(document, axes_seen, r, model);
   parse_shapes(document, r, model);
-  if (document.contains("fit")) model.fit_json = document["fit"].dump();
+  if (document.contains("fit")) {
+    if (!document["fit"].is_object()) r.fail("fit", "must be an object");
+    model.fit = parse_fit_record(document["fit"]);
+  }
   try {
     validate(model);
   } catch (const std::invalid_argument& e) {

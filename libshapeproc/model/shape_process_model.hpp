@@ -13,6 +13,7 @@
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/shape.hpp"
+#include "libshapeproc/model/fit_record.hpp"
 
 namespace shapeproc::model {
 
@@ -89,7 +90,7 @@ struct ShapeProcessModel {
   // Empty: every shape of a category is equally likely (one class per category). Otherwise every
   // shape names its class.
   std::vector<ShapeClass> shape_classes;
-  std::string fit_json;  // provenance of the fit, a JSON object (may be empty)
+  std::optional<FitRecord> fit;  // how the model was fitted; none for a model written by hand
 
   // Largest δ_K over every pair and axis: beyond it no pair interacts.
   double interaction_range() const;

@@ -77,7 +77,7 @@ TEST(Fidelity, ABandTheAttractionPriorHoldsDownIsCheckedAgainstTheFitsTarget) {
     model::ShapeProcessModel model =
         testing::point_model(20.0 / 2500.0, {2.0, 5.0}, {std::exp(log_gamma)});
     model.interactions[0].axes[0].observed_pairs = {7};
-    model.fit_json = R"({"estimator": {"method": "mcmc-mle", "attraction_prior_sd": 1.5}})";
+    model.fit.emplace().likelihood.emplace().attraction_prior_sd = 1.5;
     const FidelityReport r = check_fidelity(exemplar, model, geometry::Boundary::open,
                                             geometry::EdgeTreatment::none, options);
     ASSERT_EQ(r.own_window.size(), 2u);

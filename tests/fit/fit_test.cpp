@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
@@ -427,8 +426,9 @@ TEST(Fit, AnAutomaticWindowTriesItsTorusAgainFromTheWindowAsDrawnThenFallsBackTo
   mle.sampling.steps = 2000;
   const FitResult fit =
       refine_to_maximum_likelihood(dots, options, fit_shape_process(dots, options), mle);
-  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
-  EXPECT_EQ(record["estimator"]["window"], "own");
+  ASSERT_TRUE(fit.model.fit && fit.model.fit->likelihood);
+  const model::FitRecord& record = *fit.model.fit;
+  EXPECT_FALSE(record.likelihood->stationary_window);
   ASSERT_FALSE(fit.notes.empty());
   EXPECT_NE(fit.notes[0].find("its own torus) did not converge from the pseudo-likelihood's "
                               "estimate (1 iteration(s)"),
@@ -437,7 +437,7 @@ TEST(Fit, AnAutomaticWindowTriesItsTorusAgainFromTheWindowAsDrawnThenFallsBackTo
   EXPECT_NE(fit.notes[0].find("nor from the estimate of the window as drawn (1 iteration(s)"),
             std::string::npos)
       << fit.notes[0];
-  EXPECT_EQ(record["notes"][0], fit.notes[0]);
+  EXPECT_EQ(record.notes.at(0), fit.notes[0]);
 }
 
 // rings.svg with each subpath an element, as its fits read it.
@@ -463,9 +463,9 @@ FitResult automatic_fit(const Scene& exemplar,
 // as drawn, from which it converges, and the note says so.
 TEST(Fit, AnAutomaticWindowAbandonsATorusFitFromACondensedStart) {
   const FitResult fit = automatic_fit(split_rings());
-  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
-  EXPECT_EQ(record["estimator"]["window"], "stationary");
-  EXPECT_TRUE(record["estimator"]["converged"].get<bool>());
+  ASSERT_TRUE(fit.model.fit && fit.model.fit->likelihood);
+  EXPECT_TRUE(fit.model.fit->likelihood->stationary_window);
+  EXPECT_TRUE(fit.model.fit->likelihood->converged);
   ASSERT_FALSE(fit.notes.empty());
   EXPECT_NE(fit.notes[0].find("its own torus) was abandoned, its start condensed ("),
             std::string::npos)
@@ -499,8 +499,8 @@ TEST(Fit, AtANewThetaHalfOfAGrownSampleRunsFirst) {
     grown = std::max(grown, reports[i].chains);
   }
   EXPECT_GT(halves, 0);
-  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
-  EXPECT_TRUE(record["estimator"]["converged"].get<bool>());
+  ASSERT_TRUE(fit.model.fit && fit.model.fit->likelihood);
+  EXPECT_TRUE(fit.model.fit->likelihood->converged);
 }
 
 // Without the condensed-start rule, rings' torus fit from the pseudo-likelihood's estimate swings
@@ -532,13 +532,13 @@ TEST(Fit, ASampleGrownToMoreChainsConvergesOnItsEffectiveSizeWhateverItsRHat) {
   by_fill.category_by = io::CategoryRule::parse("fill");
   const FitResult fit =
       automatic_fit(io::read_scene(testing::data_path("svg/two-kinds.svg"), by_fill));
-  const nlohmann::json record = nlohmann::json::parse(fit.model.fit_json);
-  const nlohmann::json& estimator = record["estimator"];
-  EXPECT_TRUE(estimator["converged"].get<bool>());
-  EXPECT_EQ(estimator["window"], "stationary");
-  EXPECT_EQ(estimator["chains"], 4);
-  EXPECT_GT(estimator["final_chains"].get<int>(), 4);
-  EXPECT_GT(estimator["worst_r_hat"].get<double>(), 1.1);
+  ASSERT_TRUE(fit.model.fit && fit.model.fit->likelihood);
+  const model::LikelihoodRecord& estimator = *fit.model.fit->likelihood;
+  EXPECT_TRUE(estimator.converged);
+  EXPECT_TRUE(estimator.stationary_window);
+  EXPECT_EQ(estimator.chains, 4);
+  EXPECT_GT(estimator.final_chains, 4);
+  EXPECT_GT(estimator.worst_r_hat, 1.1);
 }
 
 // A packed exemplar's chains start empty and compress in their burn-in, and the fit records it
@@ -555,8 +555,8 @@ TEST(Fit, APackedExemplarsChainsCompressFromEmpty) {
       refine_to_maximum_likelihood(dashes, options, fit_shape_process(dashes, options), mle);
   EXPECT_TRUE(compressing_burn_in(packed.model));
   EXPECT_TRUE(output_compression(packed.model).enabled);
-  const nlohmann::json record = nlohmann::json::parse(packed.model.fit_json);
-  EXPECT_EQ(record["estimator"]["chains_start"], "empty");
+  ASSERT_TRUE(packed.model.fit && packed.model.fit->likelihood);
+  EXPECT_TRUE(packed.model.fit->likelihood->compressing_burn_in);
 
   const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
   const FitResult loose =

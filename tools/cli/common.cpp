@@ -114,12 +114,7 @@ FittingExemplar read_fitting_exemplar(const std::string& input, const ReaderFlag
 }
 
 int model_tile_repeats(const model::ShapeProcessModel& model) {
-  if (model.fit_json.empty()) return 0;
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
-  if (fit.is_discarded() || !fit.contains("tile_repeats") ||
-      !fit["tile_repeats"].is_number_integer())
-    return 0;
-  return std::clamp(fit["tile_repeats"].get<int>(), 0, 64);
+  return model.fit ? std::clamp(model.fit->tile_repeats, 0, 64) : 0;
 }
 
 void add_measurement_kind_options(CLI::App& command, std::string& distance,

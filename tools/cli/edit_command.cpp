@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
@@ -84,7 +83,7 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
     throw core::UsageError("--scale-beta must be positive");
   if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds)))
     throw core::UsageError("--scale-thresholds must be positive");
-  nlohmann::json edits = nlohmann::json::array();
+  std::vector<std::string> edits;
   if (args.isotropic) {
     // One axis per pair: thresholds and γ averaged over the axes (γ arithmetically, so that a
     // hard band stays a strong inhibition), directions set to 1.
@@ -161,12 +160,8 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
   } catch (const std::exception& e) {
     throw core::UsageError(std::string("the edited model is invalid: ") + e.what());
   }
-  nlohmann::json fit =
-      m.fit_json.empty() ? nlohmann::json::object() : nlohmann::json::parse(m.fit_json);
-  nlohmann::json history = fit.value("edits", nlohmann::json::array());
-  history.push_back({{"from", args.model}, {"arguments", arguments}, {"edits", edits}});
-  fit["edits"] = history;
-  m.fit_json = fit.dump();
+  if (!m.fit) m.fit.emplace();
+  m.fit->edits.push_back({args.model, arguments, edits});
   io::write_model(m, args.output);
   print_model_summary(m, out);
   out << "wrote " << args.output << '\n';

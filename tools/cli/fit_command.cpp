@@ -158,19 +158,21 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
     result = maximum_likelihood(exemplar, 1, pseudo_likelihood(exemplar, 1));
   }
   for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
-  nlohmann::json provenance = nlohmann::json::parse(result.model.fit_json);
-  provenance["exemplar"] = input;
-  provenance["arguments"] = arguments;
-  provenance["reader"] = reader.to_json();
-  provenance["options"] = flags.to_json();
-  provenance["options"]["edge"] = flags.edge_for(reader);
-  if (repeats > 1) provenance["tile_repeats"] = repeats;
-  provenance["options"]["directions"] = result.model.measurement.directions;
+  if (!result.model.fit) result.model.fit.emplace();
+  model::FitRecord& record = *result.model.fit;
+  record.exemplar = input;
+  record.arguments = arguments;
+  record.options = flatten_options("reader", reader.to_json());
+  nlohmann::json flag_values = flags.to_json();
+  flag_values["edge"] = flags.edge_for(reader);
+  flag_values["directions"] = result.model.measurement.directions;
+  for (auto& option : flatten_options("fit", flag_values))
+    record.options.push_back(std::move(option));
+  if (repeats > 1) record.tile_repeats = repeats;
   for (const std::string& note : tile_notes) {
-    provenance["notes"].push_back(note);
+    record.notes.push_back(note);
     result.notes.push_back(note);
   }
-  result.model.fit_json = provenance.dump();
   if (fitted) *fitted = exemplar;
   return result;
 }

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,27 +46,26 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
 
 // The maximum-likelihood fit's goodness of fit, as spatstat prints a fit: per statistic the
 // exemplar's value, the model's expectation ± its Monte Carlo standard error, and z.
-void print_goodness_of_fit(const model::ShapeProcessModel& model, const nlohmann::json& e,
+void print_goodness_of_fit(const model::ShapeProcessModel& model, const model::LikelihoodRecord& e,
                            std::ostream& out) {
   const std::vector<std::string> names = model::statistic_names(model);
-  const auto observed = e["observed"].get<std::vector<double>>();
-  const auto expected = e["expected"].get<std::vector<double>>();
-  const auto error = e["expected_standard_error"].get<std::vector<double>>();
-  const auto z = e["z"].get<std::vector<double>>();
-  std::vector<int> penalised;
-  if (e.contains("penalised")) penalised = e["penalised"].get<std::vector<int>>();
-  std::vector<int> unreached;
-  if (e.contains("unreachable")) unreached = e["unreachable"].get<std::vector<int>>();
-  out << "\nmaximum likelihood (MCMC): "
-      << (e.value("converged", false) ? "converged" : "did not converge") << " in "
-      << e.value("iterations", 0) << " iteration(s), " << g(e.value("seconds", 0.0), 3)
-      << " s; largest |z| accepted " << g(e.value("tolerance", 0.0), 3) << "\n";
-  if (e.value("window", "own") == "stationary")
+  const std::vector<double>& observed = e.observed;
+  const std::vector<double>& expected = e.expected;
+  const std::vector<double>& error = e.expected_standard_error;
+  const std::vector<double>& z = e.z;
+  const std::vector<int>& penalised = e.penalised;
+  const std::vector<int>& unreached = e.unreachable;
+  out << "\nmaximum likelihood (MCMC): " << (e.converged ? "converged" : "did not converge")
+      << " in " << e.iterations << " iteration(s), " << g(e.seconds, 3)
+      << " s; largest |z| accepted " << g(e.tolerance, 3) << "\n";
+  if (e.stationary_window)
     out << "  window: stationary (the exemplar as a piece of a larger drawing: its own torus, "
            "its pairs across the seam left out; --edge none fits it as drawn)\n";
   out << "  " << std::left << std::setw(34) << "statistic" << std::right << std::setw(10)
       << "exemplar" << std::setw(22) << "model (mean ± se)" << std::setw(8) << "z" << '\n';
-  for (std::size_t k = 0; k < observed.size() && k < names.size() && k < expected.size(); ++k) {
+  const std::size_t rows =
+      std::min({observed.size(), names.size(), expected.size(), error.size(), z.size()});
+  for (std::size_t k = 0; k < rows; ++k) {
     if (observed[k] == 0 && expected[k] == 0) continue;  // bands held at γ = 0
     const bool moved =
         std::find(penalised.begin(), penalised.end(), static_cast<int>(k)) != penalised.end();
@@ -140,24 +138,19 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
       out << '\n';
     }
   }
-  if (!model.fit_json.empty()) {
-    const nlohmann::json fit = nlohmann::json::parse(model.fit_json);
-    if (fit.contains("log_pseudo_likelihood") && fit["log_pseudo_likelihood"].is_number()) {
-      out << "\nlog pseudo-likelihood"
-          << (fit.contains("estimator") ? " (of the MPL fit the maximum likelihood started from)"
-                                        : "")
-          << ": " << g(fit["log_pseudo_likelihood"].get<double>(), 8) << '\n';
-    }
-    if (fit.contains("estimator")) print_goodness_of_fit(model, fit["estimator"], out);
-    if (fit.contains("quadrature")) {
-      out << "quadrature: " << fit["quadrature"].value("cells", 0) << " cells, "
-          << fit["quadrature"].value("points", 0) << " points; edge " << fit.value("edge", "none")
-          << '\n';
-    }
-    if (fit.contains("notes")) {
-      for (const auto& note : fit["notes"]) out << "note: " << note.get<std::string>() << '\n';
-    }
+  if (!model.fit) return;
+  const model::FitRecord& fit = *model.fit;
+  if (fit.data_points > 0) {
+    out << "\nlog pseudo-likelihood"
+        << (fit.likelihood ? " (of the MPL fit the maximum likelihood started from)" : "") << ": "
+        << g(fit.log_pseudo_likelihood, 8) << '\n';
   }
+  if (fit.likelihood) print_goodness_of_fit(model, *fit.likelihood, out);
+  if (fit.quadrature.cells > 0 || fit.quadrature.lines) {
+    out << "quadrature: " << fit.quadrature.cells << " cells, " << fit.quadrature.points
+        << " points; edge " << (fit.edge.empty() ? "none" : fit.edge) << '\n';
+  }
+  for (const std::string& note : fit.notes) out << "note: " << note << '\n';
 }
 
 void print_model_brief(const model::ShapeProcessModel& model, std::ostream& out) {

@@ -2,6 +2,7 @@
 // metrics.json comparing outputs with their exemplar.
 #include "tools/cli/report_command.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <sstream>
 
@@ -21,50 +22,29 @@ namespace shapeproc::cli {
 
 namespace {
 
-void fill_goodness(const nlohmann::json& e, const std::vector<std::string>& names,
-                   const std::vector<int>& penalised, report::Report& r);
-
-// The goodness-of-fit table a maximum-likelihood fit stored in the model (nothing for others).
+// The goodness-of-fit table a maximum-likelihood fit stored in the model (nothing for others, or
+// for a table the file does not hold whole: hand-edited, or of another version).
 void read_goodness(const model::ShapeProcessModel& model, report::Report& r) {
-  const nlohmann::json fit = nlohmann::json::parse(model.fit_json, nullptr, false);
-  if (!fit.is_object() || !fit.contains("estimator") || !fit["estimator"].is_object()) return;
-  const nlohmann::json& e = fit["estimator"];
-  if (!e.contains("observed") || !e.contains("expected") || !e.contains("z")) return;
+  if (!model.fit || !model.fit->likelihood) return;
+  const model::LikelihoodRecord& e = *model.fit->likelihood;
   const std::vector<std::string> names = model::statistic_names(model);
-  const auto& observed = e["observed"];
-  if (!observed.is_array() || observed.size() != names.size()) return;
-  std::vector<int> penalised;
-  if (e.contains("penalised") && e["penalised"].is_array())
-    for (const auto& p : e["penalised"])
-      if (p.is_number_integer()) penalised.push_back(p.get<int>());
-  // A table the file does not hold whole (hand-edited, or of another version) is left out.
-  try {
-    fill_goodness(e, names, penalised, r);
-  } catch (const nlohmann::json::exception&) {
-    r.goodness.clear();
-    return;
-  }
-  const bool converged = e.value("converged", false);
-  r.goodness_note = std::string("Maximum likelihood (MCMC): ") +
-                    (converged ? "converged" : "did not converge") + " in " +
-                    std::to_string(e.value("iterations", 0)) + " iterations";
-}
-
-void fill_goodness(const nlohmann::json& e, const std::vector<std::string>& names,
-                   const std::vector<int>& penalised, report::Report& r) {
-  const auto& observed = e["observed"];
-  for (std::size_t i = 0; i < names.size(); ++i) {
+  const std::size_t n = names.size();
+  if (e.observed.size() != n || e.expected.size() != n || e.z.size() != n) return;
+  const bool errors = e.expected_standard_error.size() == n;
+  for (std::size_t i = 0; i < n; ++i) {
     report::GoodnessRow row;
     row.statistic = names[i];
-    row.exemplar = observed[i].get<double>();
-    row.model = e["expected"].at(i).get<double>();
-    row.z = e["z"].at(i).get<double>();
-    if (e.contains("expected_standard_error"))
-      row.standard_error = e["expected_standard_error"].at(i).get<double>();
+    row.exemplar = e.observed[i];
+    row.model = e.expected[i];
+    row.z = e.z[i];
+    if (errors) row.standard_error = e.expected_standard_error[i];
     row.penalised =
-        std::find(penalised.begin(), penalised.end(), static_cast<int>(i)) != penalised.end();
+        std::find(e.penalised.begin(), e.penalised.end(), static_cast<int>(i)) != e.penalised.end();
     r.goodness.push_back(row);
   }
+  r.goodness_note = std::string("Maximum likelihood (MCMC): ") +
+                    (e.converged ? "converged" : "did not converge") + " in " +
+                    std::to_string(e.iterations) + " iterations";
 }
 
 }  // namespace
@@ -141,13 +121,13 @@ int write_report(const ReportRequest& request, std::ostream& out) {
   }
   r.model_label = request.model;
   r.command = request.command;
-  if (model && !model->fit_json.empty()) {
-    const nlohmann::json fit = nlohmann::json::parse(model->fit_json, nullptr, false);
-    if (fit.is_object() && fit.contains("seconds") && fit["seconds"].is_object()) {
-      for (const auto& [stage, seconds] : fit["seconds"].items()) {
-        if (seconds.is_number()) r.timings.emplace_back("fit: " + stage, seconds.get<double>());
-      }
-    }
+  if (model && model->fit) {
+    const model::FitSeconds& seconds = model->fit->seconds;
+    for (const auto& [stage, value] : {std::pair{"measurements", seconds.measurements},
+                                       {"optimisation", seconds.optimisation},
+                                       {"proxies", seconds.proxies},
+                                       {"quadrature", seconds.quadrature}})
+      r.timings.emplace_back(std::string("fit: ") + stage, value);
   }
   for (const auto& timing : request.timings) r.timings.push_back(timing);
   r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);

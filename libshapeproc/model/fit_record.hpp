@@ -1,0 +1,94 @@
+// How a model was fitted: the exemplar it came from, the estimator's settings and outcome, the
+// maximum likelihood's goodness-of-fit table, the notes the fit made and the edits made since.
+// The fit writes it (fit/fit_shape_process.hpp, fit/fit_maximum_likelihood.hpp), io/model_io
+// reads and writes it as the model file's "fit" object, and the sampler, `fidelity`, `report` and
+// `show` read it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shapeproc::model {
+
+// The pseudo-likelihood's quadrature (fit/quadrature_design.hpp).
+struct QuadratureRecord {
+  bool lines = false;  // line quadrature; otherwise cells
+  long long cells = 0;
+  int cells_along_longest_side = 0;
+  int shapes_per_location = 0;
+  int refinement = 0;
+  long long points = 0;  // dummy and data points with λ > 0
+  double data_weight = 0.0;
+};
+
+// Seconds of the pseudo-likelihood fit's stages.
+struct FitSeconds {
+  double proxies = 0.0, measurements = 0.0, quadrature = 0.0, optimisation = 0.0;
+};
+
+// The maximum-likelihood fit by MCMC (fit/mcmc_mle.hpp): its chains and its outcome. Statistics
+// are by θ index (sample/configuration.hpp, Configuration::statistics).
+struct LikelihoodRecord {
+  // Where the search started: "mple", or "mle of the window as drawn" (a second torus fit).
+  std::string start = "mple";
+  // The window fitted as a piece of a larger drawing (its own torus, fit::WindowModel), rather
+  // than as drawn.
+  bool stationary_window = false;
+  // The chains start empty and compress in their burn-in (sample/compression.hpp); outputs of the
+  // model do the same.
+  bool compressing_burn_in = false;
+  int iterations = 0;
+  bool converged = false;
+  int chains = 0;        // of each simulation
+  int final_chains = 0;  // of the returned estimate's (more where its sample was too small)
+  long long burn_in = 0, steps = 0, observe_every = 0;
+  std::uint64_t seed = 0;
+  double attraction_prior_sd = 0.0;
+  double significance = 0.0;
+  double tolerance = 0.0;    // the largest |z| accepted
+  double worst_r_hat = 1.0;  // −1 when not finite
+  double seconds = 0.0;
+  std::vector<int> unbounded, penalised, unreachable;  // θ indices
+  // The goodness-of-fit table: t(z), E_θ̂[t], its Monte Carlo standard error, and z.
+  std::vector<double> observed, expected, expected_standard_error, z;
+};
+
+// An `edit` of the model: the file it was read from, the command line, the edits made.
+struct ModelEdit {
+  std::string from;
+  std::vector<std::string> arguments, edits;
+};
+
+struct FitRecord {
+  // The exemplar's window (its dimension's coordinates) and its elements.
+  std::vector<double> window_min, window_max;
+  long long elements = 0;
+  std::string edge;                           // the edge treatment's name
+  std::vector<double> quantiles, thresholds;  // the thresholds' rule: one of them is empty
+  QuadratureRecord quadrature;
+  long long data_points = 0;
+  double log_pseudo_likelihood = 0.0;
+  std::string optimiser;  // the pseudo-likelihood's optimiser
+  int evaluations = 0, newton_steps = 0;
+  FitSeconds seconds;
+  std::string version;  // of the library that fitted
+  std::vector<std::string> notes;
+  // The maximum likelihood, when the fit refined to it.
+  std::optional<LikelihoodRecord> likelihood;
+  // The command that fitted: the exemplar's file, its arguments and its options as name and
+  // value ("reader.tile", "true"), and the times a tile was repeated for the fit (0: none).
+  std::string exemplar;
+  std::vector<std::string> arguments;
+  std::vector<std::pair<std::string, std::string>> options;
+  int tile_repeats = 0;
+  std::vector<ModelEdit> edits;
+
+  // Elements per unit area (volume) of the exemplar as fitted, when the record has its window
+  // and the model has not been edited since.
+  std::optional<double> exemplar_density() const;
+};
+
+}  // namespace shapeproc::model
