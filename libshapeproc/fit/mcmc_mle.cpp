@@ -1,6 +1,5 @@
 #include "libshapeproc/fit/mcmc_mle.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,6 +9,7 @@
 
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/fit/detail/newton_steps.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
 
@@ -56,12 +56,14 @@ void set_theta(model::ShapeProcessModel& model, const std::vector<double>& theta
 
 namespace {
 
-constexpr int kReweightedSteps = 10;        // Newton steps on one sample at most
-constexpr double kMinEffectiveShare = 0.5;  // reweighting stops below this effective size
-constexpr long long kRoughDivisor = 4;      // first simulations: a quarter of the steps
-constexpr double kNotablyMoved = 0.5;       // the prior moved a band by half a pair or more
-constexpr double kNoInformation = 1e-9;     // variance of a statistic the sample never varies
-constexpr int kUnreachableAfter = 4;        // simulations without variance: unreachable
+using detail::Gap;
+using detail::kMinEffectiveShare;
+using detail::kNoInformation;
+using detail::Newton;
+
+constexpr long long kRoughDivisor = 4;  // first simulations: a quarter of the steps
+constexpr double kNotablyMoved = 0.5;   // the prior moved a band by half a pair or more
+constexpr int kUnreachableAfter = 4;    // simulations without variance: unreachable
 // Compressed chains short of the exemplar's count (unreached below).
 constexpr std::size_t kUnreachedAfter = 8, kStallWindow = 4;
 constexpr double kReachedShare = 0.9, kStalledGain = 0.02;
@@ -69,7 +71,6 @@ constexpr std::size_t kAveraged = 8;  // estimates averaged in the final phase
 constexpr int kStalledAfter = 2;      // rough simulations without progress end that phase…
 constexpr double kNearTolerance = 2;  // …when the gap is within this many tolerances
 constexpr double kDiverged = 10;      // a gap this many times the best one undoes the step
-constexpr double kMaxOvershoot = 10;  // stationary window: the largest step division
 // Chains that disagree more than this (R-hat) are not at one stationary state: a model that
 // holds a packed exemplar in some chains and loses it in others, or chains still drifting. Their
 // errors are then inflated by the disagreement, and small z would be no evidence.
@@ -146,175 +147,6 @@ std::string unreached(const std::vector<double>& reached, const StatisticsMoment
          "count (" +
          counts + ") however large β grows";
 }
-
-// What one Newton step needs at a point: the penalised gap and information over the free θ.
-struct Gap {
-  Eigen::VectorXd gap;
-  Eigen::MatrixXd information;
-  double worst_z = 0.0;
-  double overshoot = 1.0;  // steps are divided by this (stationary window: see Newton::gap)
-};
-
-class Newton {
- public:
-  Newton(const std::vector<double>& observed, std::vector<std::size_t> free, std::size_t categories,
-         std::size_t parameters, const MleOptions& options)
-      : observed_(observed),
-        free_(std::move(free)),
-        categories_(categories),
-        parameters_(parameters),
-        options_(options) {}
-
-  std::size_t size() const { return free_.size(); }
-
-  // The gap t(z) − E_θ[t] − ∇ penalty and the information Cov_θ[t] + ∇² penalty at θ. On a
-  // stationary window the steps take Cov_θ[t_W] for the derivative Cov_θ(t_W, t) of E_θ[t_W]
-  // (a quasi-Newton step: symmetric, and far less noisy than the cross-covariance, which on
-  // dots-random took 25 simulations to converge against 12).
-  Gap gap(const StatisticsMoments& m, const std::vector<double>& theta) const {
-    const std::size_t p = observed_.size();
-    const Eigen::Index n = static_cast<Eigen::Index>(free_.size());
-    Gap g{Eigen::VectorXd(n), Eigen::MatrixXd(n, n), 0.0};
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const std::size_t k = free_[static_cast<std::size_t>(i)];
-      g.gap[i] = observed_[k] - m.mean[k];
-      for (Eigen::Index j = 0; j < n; ++j)
-        g.information(i, j) = m.covariance[k * p + free_[static_cast<std::size_t>(j)]];
-      if (penalised(k, theta)) {
-        const double precision =
-            1.0 / (options_.attraction_prior_sd * options_.attraction_prior_sd);
-        g.gap[i] -= theta[k] * precision;
-        g.information(i, i) += precision;
-      }
-      const double se = std::max(m.standard_error[k], 1e-9);
-      if (std::abs(g.gap[i]) > kNegligibleGap)
-        g.worst_z = std::max(g.worst_z, std::abs(g.gap[i]) / se);
-    }
-    if (windowed_) g.overshoot = overshoot(m);
-    return g;
-  }
-
-  // On a stationary window Cov(t_W) understates the derivative J = Cov(t_W, t) of E_θ[t_W] where
-  // the window's statistics rise with those around it (attraction), and full steps overshoot:
-  // two-kinds' gaps jumped from |z| 11 to 35, 57 and 10⁹ between simulations. J itself is too
-  // noisy for the steps (above), but the ratio of its trace to Cov(t_W)'s over the free
-  // statistics is an average of many and stable; steps are divided by it (at least 1, so that
-  // inhibition's smaller derivative never lengthens them; at most kMaxOvershoot). A trust region
-  // on the reweighting's effective size was tried instead: the torus's statistics vary so much
-  // that, far from the estimate, it allowed steps of 0.004 in θ.
-  double overshoot(const StatisticsMoments& m) const {
-    const std::size_t p = observed_.size();
-    double derivative = 0.0, covariance = 0.0;
-    for (std::size_t k : free_) {
-      derivative += m.information[k * p + k];
-      covariance += m.covariance[k * p + k];
-    }
-    if (!(covariance > 0.0) || !std::isfinite(derivative)) return 1.0;
-    return std::clamp(derivative / covariance, 1.0, kMaxOvershoot);
-  }
-
-  bool penalised(std::size_t k, const std::vector<double>& theta) const {
-    return k >= categories_ && k < parameters_ && options_.attraction_prior_sd > 0 && theta[k] > 0;
-  }
-  // The expected pairs the prior takes from the band: log γ / σ² at the optimum.
-  double pairs_moved(std::size_t k, const std::vector<double>& theta) const {
-    if (!penalised(k, theta)) return 0.0;
-    return theta[k] / (options_.attraction_prior_sd * options_.attraction_prior_sd);
-  }
-
-  // One damped Newton step from θ. A statistic the sample never varies (a shape class or band
-  // the chains did not reach) carries no information: it moves by `max_step` towards its
-  // observed value, and the Newton system is solved over the others.
-  std::vector<double> step(const Gap& g, std::vector<double> theta) const {
-    const Eigen::Index n = g.gap.size();
-    std::vector<Eigen::Index> informed;
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (g.information(i, i) > kNoInformation) informed.push_back(i);
-    const Eigen::Index m = static_cast<Eigen::Index>(informed.size());
-    Eigen::MatrixXd information(m, m);
-    Eigen::VectorXd gap(m);
-    for (Eigen::Index a = 0; a < m; ++a) {
-      gap[a] = g.gap[informed[static_cast<std::size_t>(a)]];
-      for (Eigen::Index b = 0; b < m; ++b)
-        information(a, b) = g.information(informed[static_cast<std::size_t>(a)],
-                                          informed[static_cast<std::size_t>(b)]);
-    }
-    Eigen::VectorXd solved =
-        Eigen::LDLT<Eigen::MatrixXd>(information + 1e-9 * Eigen::MatrixXd::Identity(m, m))
-            .solve(gap);
-    if (!solved.allFinite()) solved.setZero();
-    solved /= g.overshoot;
-    Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
-    for (Eigen::Index a = 0; a < m; ++a) step[informed[static_cast<std::size_t>(a)]] = solved[a];
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (g.information(i, i) <= kNoInformation && g.gap[i] != 0)
-        step[i] = std::copysign(max_step(), g.gap[i]);
-    const double largest = step.cwiseAbs().maxCoeff();
-    if (largest > max_step()) step *= max_step() / largest;
-    for (Eigen::Index i = 0; i < n; ++i) theta[free_[static_cast<std::size_t>(i)]] += step[i];
-    return theta;
-  }
-
-  // Newton steps on the sample drawn at θ₀, reweighted to each new θ, until the steps become
-  // small or the reweighted sample's effective size falls below kMinEffectiveShare.
-  std::vector<double> reweighted_steps(const StatisticsMoments& sample, const Gap& at_start,
-                                       const std::vector<double>& theta0) const {
-    std::vector<double> theta = step(at_start, theta0);
-    for (int inner = 1; inner < kReweightedSteps; ++inner) {
-      std::vector<double> delta(theta.size(), 0.0);
-      for (std::size_t k : free_) delta[k] = theta[k] - theta0[k];
-      double share = 1.0;
-      const StatisticsMoments here = reweighted(sample, delta, share);
-      if (share < kMinEffectiveShare) break;
-      const std::vector<double> next = step(gap(here, theta), theta);
-      double moved = 0.0;
-      for (std::size_t k : free_) moved = std::max(moved, std::abs(next[k] - theta[k]));
-      theta = next;
-      if (moved < 1e-3) break;
-    }
-    return theta;
-  }
-
-  // Halves the largest step (after a step that made the gap much worse).
-  void shorten_steps() { step_scale_ *= 0.5; }
-  double max_step() const { return options_.max_step * step_scale_; }
-
-  // Standard errors of θ̂ from the inverse of the (penalised) information; for a stationary
-  // window's estimating equation E_θ[t_W] = t_W(z), the sandwich J⁻¹ Cov(t_W) J⁻ᵀ with the
-  // derivative J = Cov(t_W, t) (+ the penalty's) of the sample `m`.
-  void standard_errors(const Gap& g, const StatisticsMoments& m, std::vector<double>& out) const {
-    const Eigen::Index n = g.gap.size();
-    const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
-    Eigen::MatrixXd inverse =
-        Eigen::LDLT<Eigen::MatrixXd>(g.information + 1e-9 * identity).solve(identity);
-    if (windowed_) {
-      const std::size_t p = observed_.size();
-      Eigen::MatrixXd derivative = g.information;  // the penalty's part on the diagonal
-      Eigen::MatrixXd spread(n, n);
-      for (Eigen::Index i = 0; i < n; ++i)
-        for (Eigen::Index j = 0; j < n; ++j) {
-          const std::size_t at =
-              free_[static_cast<std::size_t>(i)] * p + free_[static_cast<std::size_t>(j)];
-          derivative(i, j) += m.information[at] - m.covariance[at];
-          spread(i, j) = m.covariance[at];
-        }
-      const Eigen::MatrixXd inverse_derivative =
-          Eigen::PartialPivLU<Eigen::MatrixXd>(derivative + 1e-9 * identity).solve(identity);
-      inverse = inverse_derivative * spread * inverse_derivative.transpose();
-    }
-    for (Eigen::Index i = 0; i < n; ++i)
-      out[free_[static_cast<std::size_t>(i)]] = std::sqrt(std::max(0.0, inverse(i, i)));
-  }
-
- private:
-  const std::vector<double>& observed_;
-  std::vector<std::size_t> free_;
-  std::size_t categories_;
-  std::size_t parameters_;  // θ indices from here on are shape classes
-  const MleOptions& options_;
-  bool windowed_ = !options_.sampling.observe_region.isEmpty();
-  double step_scale_ = 1.0;
-};
 
 }  // namespace
 
