@@ -85,13 +85,14 @@ def row(path, seed, args, pictures):
         except subprocess.TimeoutExpired:
             return f"| {name} | {seed} | timed out after {args.timeout} s |"
         if p.returncode != 0:
-            last = (p.stderr.strip().splitlines() or ["?"])[-1]
+            last = (p.stderr.strip().splitlines() or ["?"])[-1].replace(work + os.sep, "")
             return f"| {name} | {seed} | failed: {last} |"
         if os.path.exists(png):
             strip_text_chunks(png)
         q, _ = run(["report", path, out, *reader, "-o", os.path.join(work, "report")], 600)
         if q.returncode != 0:
-            return f"| {name} | {seed} | report failed: {(q.stderr.strip().splitlines() or ['?'])[-1]} |"
+            last = (q.stderr.strip().splitlines() or ["?"])[-1].replace(work + os.sep, "")
+            return f"| {name} | {seed} | report failed: {last} |"
         with open(os.path.join(work, "report", "metrics.json")) as f:
             entry = json.load(f)["outputs"][0]
     n = entry.get("novelty", {})
