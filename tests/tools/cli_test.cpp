@@ -29,6 +29,28 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_NE(info_help.out.find("--category-by"), std::string::npos);
 }
 
+// docs/commands.md holds every command's --help as the command prints it (written by
+// scripts/command-docs.sh): a changed option without a rewritten page fails here.
+TEST(CliHelp, DocsCommandsHoldsEveryCommandsHelp) {
+  const std::string page =
+      testing::read_file(testing::data_path("../docs/commands.md").lexically_normal());
+  const Result top = run_cli({"--help"});
+  ASSERT_EQ(top.code, 0);
+  EXPECT_NE(page.find("```text\n" + top.out + "```"), std::string::npos) << "shapeproc --help";
+  int commands = 0;
+  for (const char* command : {"info", "convert", "measure", "fidelity", "fit", "show", "sample",
+                              "synthesize", "edit", "stats", "report", "compare"}) {
+    const Result help = run_cli({command, "--help"});
+    ASSERT_EQ(help.code, 0) << command;
+    EXPECT_NE(page.find("## " + std::string(command) + "\n\n```text\n" + help.out + "```"),
+              std::string::npos)
+        << command << ": rerun bash scripts/command-docs.sh";
+    EXPECT_NE(top.out.find(std::string("  ") + command + " "), std::string::npos) << command;
+    ++commands;
+  }
+  EXPECT_EQ(commands, 12);
+}
+
 TEST(Cli, NonsenseFlags) {
   expect_one_line_error(run_cli({}), 2, "subcommand");
   expect_one_line_error(run_cli({"frobnicate"}), 2, "frobnicate");

@@ -1,4 +1,5 @@
-// shapeproc fit EXEMPLAR -o model.json: thresholds from quantiles, then maximum pseudo-likelihood.
+// shapeproc fit EXEMPLAR -o model.json: the thresholds, the maximum pseudo-likelihood and, by
+// default, the maximum likelihood (fit::fit_exemplar).
 #include <iomanip>
 #include <memory>
 
@@ -6,9 +7,9 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/fit/fit_estimate.hpp"
+#include "libshapeproc/fit/fit_exemplar.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/fit/tile_fit.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -60,121 +61,65 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 }  // namespace
 
-namespace {
-
-// The fit options for an exemplar scene, the tile repeated `repeats` times along each axis.
-fit::FitOptions scene_options(const geometry::Scene& exemplar, int repeats, const FitFlags& flags,
-                              const ReaderFlags& reader) {
-  fit::FitOptions options = flags.options(reader);
-  // The repeated tile keeps the cells' size: as many cells per tile as the default gives one.
-  if (repeats > 1 && options.quadrature == 0 && exemplar.dimension == 2)
-    options.quadrature = fit::default_quadrature_cells(2) * repeats;
-  return options;
-}
-
-// The MPL fit of one exemplar scene, with progress.
-fit::FitResult pseudo_likelihood_fit(const geometry::Scene& exemplar, int repeats,
-                                     const std::string& input, const FitFlags& flags,
-                                     const ReaderFlags& reader, const VerbosityFlags& verbosity) {
-  fit::FitOptions options = scene_options(exemplar, repeats, flags, reader);
-  // Stages on standard error with --verbose; a bar over the quadrature (the long stage) on a
-  // terminal.
-  ProgressBar bar("fitting: quadrature", verbosity.show_progress());
-  std::string last_stage;
-  options.progress = [&](const char* stage, long long done, long long total) {
-    if (stage != last_stage && total == 0) {
-      last_stage = stage;
-      verbosity.stage(std::string("fit: ") + stage);
-      return;
-    }
-    bar.update(done, total);
-  };
-  try {
-    fit::FitResult result = fit::fit_shape_process(exemplar, options);
-    bar.finish();
-    return result;
-  } catch (const std::invalid_argument& e) {
-    throw core::InputError(input, 0, e.what());
-  }
-}
-
-// The MLE from that fit unless --estimator mpl, with progress.
-fit::FitResult maximum_likelihood_fit(const geometry::Scene& exemplar, int repeats,
-                                      fit::FitResult result, const std::string& input,
-                                      const FitFlags& flags, const ReaderFlags& reader,
-                                      const VerbosityFlags& verbosity) {
-  if (flags.estimator != "mle") return result;
-  fit::MleOptions mle = flags.mle_options();
-  ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
-  mle.progress = [&](const fit::MleProgress& at) {
-    verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
-                    core::format_general(at.worst_z, 3) + ", effective sample " +
-                    core::format_general(at.effective_size, 3) + " (" + std::to_string(at.chains) +
-                    " chains), " + core::format_general(at.seconds, 3) + " s");
-    iterations.update(at.iteration, mle.max_iterations);
-  };
-  try {
-    result = fit::refine_to_maximum_likelihood(
-        exemplar, scene_options(exemplar, repeats, flags, reader), std::move(result), mle);
-    iterations.finish();
-    return result;
-  } catch (const std::invalid_argument& e) {
-    throw core::InputError(input, 0, e.what());
-  }
-}
-
-}  // namespace
-
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
                             const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
                             geometry::Scene* fitted,
                             const std::function<void(const geometry::Scene&)>& check_read) {
-  const fit::FitOptions options = flags.options(reader);  // its own checks, before reading
+  fit::ExemplarFitOptions options;
+  options.fit = flags.options(reader);  // its own checks, before reading
   verbosity.stage("reading " + input);
-  geometry::Scene read = io::read_scene(input, reader.options());
-  core::check_budget(fit::estimate_fit(read, options).resources, budget, "the fit of " + input,
+  const geometry::Scene read = io::read_scene(input, reader.options());
+  core::check_budget(fit::estimate_fit(read, options.fit).resources, budget, "the fit of " + input,
                      "--quadrature, --directions or the thresholds");
   if (check_read) check_read(read);
-  const auto pseudo_likelihood = [&](const geometry::Scene& scene, int times) {
-    return pseudo_likelihood_fit(scene, times, input, flags, reader, verbosity);
+  options.tile = reader.tile;
+  // Stages on standard error with --verbose; a bar over the quadrature (the long stage) and one
+  // over the maximum likelihood's iterations on a terminal.
+  ProgressBar quadrature("fitting: quadrature", verbosity.show_progress());
+  std::string last_stage;
+  options.fit.progress = [&](const char* stage, long long done, long long total) {
+    if (stage != last_stage && total == 0) {
+      last_stage = stage;
+      verbosity.stage(std::string("fit: ") + stage);
+      return;
+    }
+    quadrature.update(done, total);
   };
-  const auto maximum_likelihood = [&](const geometry::Scene& scene, int times, fit::FitResult mpl) {
-    return maximum_likelihood_fit(scene, times, std::move(mpl), input, flags, reader, verbosity);
-  };
-  // A tile: fitted repeated, and refitted on a larger repeat where its interactions need one.
-  fit::FitResult result;
-  geometry::Scene exemplar;
-  int repeats = 1;
-  std::vector<std::string> tile_notes;
-  if (reader.tile && read.dimension == 2) {
-    fit::TileFit tile = fit::fit_tile(read, pseudo_likelihood, maximum_likelihood);
-    result = std::move(tile.result);
-    exemplar = std::move(tile.exemplar);
-    repeats = tile.repeats;
-    tile_notes = std::move(tile.notes);
+  ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
+  if (flags.estimator == "mle") {
+    fit::MleOptions& mle = options.likelihood.emplace(flags.mle_options());
+    mle.progress = [&](const fit::MleProgress& at) {
+      quadrature.finish();
+      verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
+                      core::format_general(at.worst_z, 3) + ", effective sample " +
+                      core::format_general(at.effective_size, 3) + " (" +
+                      std::to_string(at.chains) + " chains), " +
+                      core::format_general(at.seconds, 3) + " s");
+      iterations.update(at.iteration, mle.max_iterations);
+    };
   } else {
-    exemplar = std::move(read);
-    result = maximum_likelihood(exemplar, 1, pseudo_likelihood(exemplar, 1));
+    options.likelihood.reset();
   }
-  for (const std::string& note : exemplar.notes) result.notes.push_back("reading: " + note);
-  if (!result.model.fit) result.model.fit.emplace();
-  model::FitRecord& record = *result.model.fit;
+  fit::ExemplarFit fit;
+  try {
+    fit = fit::fit_exemplar(read, options);
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError(input, 0, e.what());
+  }
+  quadrature.finish();
+  iterations.finish();
+  model::FitRecord& record = *fit.result.model.fit;
   record.exemplar = input;
   record.arguments = arguments;
   record.options = flatten_options("reader", reader.to_json());
   nlohmann::json flag_values = flags.to_json();
   flag_values["edge"] = flags.edge_for(reader);
-  flag_values["directions"] = result.model.measurement.directions;
+  flag_values["directions"] = fit.result.model.measurement.directions;
   for (auto& option : flatten_options("fit", flag_values))
     record.options.push_back(std::move(option));
-  if (repeats > 1) record.tile_repeats = repeats;
-  for (const std::string& note : tile_notes) {
-    record.notes.push_back(note);
-    result.notes.push_back(note);
-  }
-  if (fitted) *fitted = exemplar;
-  return result;
+  if (fitted) *fitted = std::move(fit.exemplar);
+  return std::move(fit.result);
 }
 
 void FitFlags::add_to(CLI::App& command) {
