@@ -154,21 +154,103 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
 
 }  // namespace
 
-FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
-                                       const FitOptions& fit_options, FitResult mple,
-                                       const MleOptions& options) {
-  model::ShapeProcessModel start = mple.model;
-  const bool open_window = fit_options.boundary == geometry::Boundary::open &&
-                           fit_options.edge == geometry::EdgeTreatment::none;
-  const bool compress = packed_exemplar(start);  // its chains compress first (below)
-  const bool stationary = open_window && (options.window == WindowModel::stationary ||
-                                          (options.window == WindowModel::automatic && !compress));
-  const geometry::Domain window =
-      stationary ? stationary_domain(exemplar)
-                 : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
-  const std::vector<double> observed = observed_statistics(exemplar, start);
+namespace {
+
+// θ indices whose status is `status`.
+std::vector<int> indices_with(const MleResult& mle, model::ParameterStatus status) {
+  std::vector<int> out;
+  for (std::size_t k = 0; k < mle.status.size(); ++k)
+    if (mle.status[k] == status) out.push_back(static_cast<int>(k));
+  return out;
+}
+
+// The notes of the search's outcome: gave up, not converged, statistics unreachable (never
+// varied: a jammed exemplar) or held (never moved off the exemplar's: unbounded).
+void add_outcome_notes(const MleResult& mle, const MleOptions& options,
+                       const model::ShapeProcessModel& start, const std::vector<double>& observed,
+                       std::vector<std::string>& notes) {
+  if (!mle.converged && !mle.abandoned.empty()) {
+    notes.push_back("the maximum-likelihood fit gave up after " + std::to_string(mle.iterations) +
+                    " iterations: " + mle.abandoned +
+                    "; the model is the iterate closest to the exemplar, and its outputs "
+                    "hold fewer elements than the exemplar's density");
+  } else if (!mle.converged) {
+    notes.push_back(
+        "the maximum-likelihood fit did not converge in " + std::to_string(mle.iterations) +
+        " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +
+        core::format_number(options.max_seconds) +
+        " s): some expected counts still differ from the exemplar's by more than " +
+        core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
+  }
+  const std::vector<std::string> names = model::statistic_names(start);
+  std::string unreachable;
+  for (int k : indices_with(mle, model::ParameterStatus::unreachable)) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    unreachable += (unreachable.empty() ? "" : "; ") + names[i] + ": " +
+                   core::format_general(mle.expected[i], 3) + " against " +
+                   core::format_general(observed[i], 3);
+  }
+  if (!unreachable.empty())
+    notes.push_back(
+        "the chains did not vary these statistics in 4 successive simulations while their "
+        "parameters were pushed towards the exemplar's counts (a jammed exemplar), so their "
+        "parameters stay at the pseudo-likelihood's start, marked unreachable (the chains' mean "
+        "at the returned estimate against the exemplar's count): " +
+        unreachable);
+  std::string held;
+  for (int k : indices_with(mle, model::ParameterStatus::unbounded))
+    held += (held.empty() ? "" : ", ") + names[static_cast<std::size_t>(k)];
+  if (!held.empty())
+    notes.push_back(
+        "the chains held these statistics at the exemplar's values in every observation (the "
+        "likelihood keeps growing with their parameters, which are marked unbounded and kept "
+        "where the chains first held them): " +
+        held);
+}
+
+// The record of the search: its window, its chains (`chains`, as run), its outcome and its
+// goodness of fit.
+model::LikelihoodRecord likelihood_record(const MleResult& mle, const MleOptions& options,
+                                          const MleOptions& chains, bool stationary,
+                                          const std::vector<double>& observed) {
+  model::LikelihoodRecord e;
+  e.stationary_window = stationary;
+  e.compressing_burn_in = chains.sampling.compress;
+  e.unbounded = indices_with(mle, model::ParameterStatus::unbounded);
+  e.iterations = mle.iterations;
+  e.converged = mle.converged;
+  e.chains = options.sampling.chains;
+  e.final_chains = mle.chains;
+  e.burn_in = chains.sampling.burn_in;
+  e.steps = chains.sampling.steps;
+  e.observe_every = options.sampling.observe_every;
+  e.seed = options.sampling.seed;
+  e.attraction_prior_sd = options.attraction_prior_sd;
+  for (std::size_t k = 0; k < mle.penalised.size(); ++k)
+    if (mle.penalised[k]) e.penalised.push_back(static_cast<int>(k));
+  e.unreachable = indices_with(mle, model::ParameterStatus::unreachable);
+  e.observed = observed;
+  e.expected = mle.expected;
+  e.expected_standard_error = mle.expected_error;
+  for (std::size_t k = 0; k < observed.size(); ++k) {
+    const double se = mle.expected_error.size() > k ? mle.expected_error[k] : 0.0;
+    e.z.push_back(se > 0 ? (observed[k] - mle.expected[k]) / se : 0.0);
+  }
+  e.tolerance = mle.tolerance;
+  e.worst_r_hat = std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0;
+  e.significance = options.significance;
+  e.seconds = mle.seconds;
+  return e;
+}
+
+// The search's chains for the window the fit chose: the stationary window's observed region and
+// its abandon rules, the border condition, the compressing burn-in of a packed exemplar. `measure`
+// receives the measure of the region the chains sample.
+MleOptions chain_options(const geometry::Scene& exemplar, const FitOptions& fit_options,
+                         const model::ShapeProcessModel& start, const MleOptions& options,
+                         bool stationary, bool compress, double& measure) {
   MleOptions chains = options;
-  double measure = geometry::measure(exemplar.window, exemplar.dimension);
+  measure = geometry::measure(exemplar.window, exemplar.dimension);
   if (stationary) chains.sampling.observe_region = exemplar.window;
   if (stationary && options.window == WindowModel::automatic) {
     chains.abandon_after_diverged = kAbandonTorusAfter;
@@ -180,8 +262,28 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
-  // A packed exemplar's chains start empty and compress in their burn-in.
-  chains.sampling.compress = compress;
+  chains.sampling.compress = compress;  // a packed exemplar's chains compress from empty
+  return chains;
+}
+
+}  // namespace
+
+FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
+                                       const FitOptions& fit_options, FitResult mple,
+                                       const MleOptions& options) {
+  model::ShapeProcessModel start = mple.model;
+  const bool open_window = fit_options.boundary == geometry::Boundary::open &&
+                           fit_options.edge == geometry::EdgeTreatment::none;
+  const bool compress = packed_exemplar(start);
+  const bool stationary = open_window && (options.window == WindowModel::stationary ||
+                                          (options.window == WindowModel::automatic && !compress));
+  const geometry::Domain window =
+      stationary ? stationary_domain(exemplar)
+                 : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
+  const std::vector<double> observed = observed_statistics(exemplar, start);
+  double measure = 0.0;
+  const MleOptions chains =
+      chain_options(exemplar, fit_options, start, options, stationary, compress, measure);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
@@ -198,84 +300,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   FitResult result = std::move(mple);
   model::FitRecord record = result.model.fit.value_or(model::FitRecord{});
   result.model = with_estimates(start, mle);
-  if (!mle.converged && !mle.abandoned.empty()) {
-    result.notes.push_back("the maximum-likelihood fit gave up after " +
-                           std::to_string(mle.iterations) + " iterations: " + mle.abandoned +
-                           "; the model is the iterate closest to the exemplar, and its outputs "
-                           "hold fewer elements than the exemplar's density");
-  } else if (!mle.converged) {
-    result.notes.push_back(
-        "the maximum-likelihood fit did not converge in " + std::to_string(mle.iterations) +
-        " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +
-        core::format_number(options.max_seconds) +
-        " s): some expected counts still differ from the exemplar's by more than " +
-        core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
-  }
-  std::vector<int> unreachable;  // θ indices the chains never varied (a jammed exemplar)
-  for (std::size_t k = 0; k < mle.status.size(); ++k) {
-    if (mle.status[k] != model::ParameterStatus::unreachable) continue;
-    unreachable.push_back(static_cast<int>(k));
-  }
-  if (!unreachable.empty()) {
-    const std::vector<std::string> names = model::statistic_names(start);
-    std::string list;
-    for (int k : unreachable) {
-      const std::size_t i = static_cast<std::size_t>(k);
-      list += (list.empty() ? "" : "; ") + names[i] + ": " +
-              core::format_general(mle.expected[i], 3) + " against " +
-              core::format_general(observed[i], 3);
-    }
-    result.notes.push_back(
-        "the chains did not vary these statistics in 4 successive simulations while their "
-        "parameters were pushed towards the exemplar's counts (a jammed exemplar), so their "
-        "parameters stay at the pseudo-likelihood's start, marked unreachable (the chains' mean "
-        "at the returned estimate against the exemplar's count): " +
-        list);
-  }
-  std::vector<int> held;  // θ indices whose statistic the chains never moved off the exemplar's
-  for (std::size_t k = 0; k < mle.status.size(); ++k)
-    if (mle.status[k] == model::ParameterStatus::unbounded) held.push_back(static_cast<int>(k));
-  if (!held.empty()) {
-    const std::vector<std::string> names = model::statistic_names(start);
-    std::string list;
-    for (int k : held) list += (list.empty() ? "" : ", ") + names[static_cast<std::size_t>(k)];
-    result.notes.push_back(
-        "the chains held these statistics at the exemplar's values in every observation (the "
-        "likelihood keeps growing with their parameters, which are marked unbounded and kept "
-        "where the chains first held them): " +
-        list);
-  }
-  std::vector<int> penalised;  // θ indices where the attraction prior holds log γ down
-  for (std::size_t k = 0; k < mle.penalised.size(); ++k)
-    if (mle.penalised[k]) penalised.push_back(static_cast<int>(k));
-  std::vector<double> z;
-  for (std::size_t k = 0; k < observed.size(); ++k) {
-    const double se = mle.expected_error.size() > k ? mle.expected_error[k] : 0.0;
-    z.push_back(se > 0 ? (observed[k] - mle.expected[k]) / se : 0.0);
-  }
-  model::LikelihoodRecord& e = record.likelihood.emplace();
-  e.stationary_window = stationary;
-  e.compressing_burn_in = compress;
-  e.unbounded = held;
-  e.iterations = mle.iterations;
-  e.converged = mle.converged;
-  e.chains = options.sampling.chains;
-  e.final_chains = mle.chains;
-  e.burn_in = chains.sampling.burn_in;
-  e.steps = chains.sampling.steps;
-  e.observe_every = options.sampling.observe_every;
-  e.seed = options.sampling.seed;
-  e.attraction_prior_sd = options.attraction_prior_sd;
-  e.penalised = penalised;
-  e.unreachable = unreachable;
-  e.observed = observed;
-  e.expected = mle.expected;
-  e.expected_standard_error = mle.expected_error;
-  e.z = z;
-  e.tolerance = mle.tolerance;
-  e.worst_r_hat = std::isfinite(mle.worst_r_hat) ? mle.worst_r_hat : -1.0;
-  e.significance = options.significance;
-  e.seconds = mle.seconds;
+  add_outcome_notes(mle, options, start, observed, result.notes);
+  record.likelihood = likelihood_record(mle, options, chains, stationary, observed);
   record.notes = result.notes;
   result.model.fit = std::move(record);
   return result;
