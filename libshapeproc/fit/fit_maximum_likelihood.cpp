@@ -175,12 +175,12 @@ void add_outcome_notes(const MleResult& mle, const MleOptions& options,
                     "; the model is the iterate closest to the exemplar, and its outputs "
                     "hold fewer elements than the exemplar's density");
   } else if (!mle.converged) {
-    notes.push_back(
-        "the maximum-likelihood fit did not converge in " + std::to_string(mle.iterations) +
-        " iterations (caps: " + std::to_string(options.max_iterations) + " iterations, " +
-        core::format_number(options.max_seconds) +
-        " s): some expected counts still differ from the exemplar's by more than " +
-        core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
+    notes.push_back("the maximum-likelihood fit did not converge in " +
+                    std::to_string(mle.iterations) +
+                    " iterations (caps: " + std::to_string(options.max_iterations) +
+                    " iterations, " + core::format_number(options.max_seconds) +
+                    " s): some expected counts still differ from the exemplar's by more than " +
+                    core::format_general(mle.tolerance, 3) + " Monte Carlo standard errors");
   }
   const std::vector<std::string> names = model::statistic_names(start);
   std::string unreachable;

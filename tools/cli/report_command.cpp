@@ -49,99 +49,98 @@ void read_goodness(const model::ShapeProcessModel& model, report::Report& r) {
 
 }  // namespace
 
-int write_report(const ReportRequest& request, std::ostream& out) {
-  const core::Stopwatch watch;
-  std::unique_ptr<model::ShapeProcessModel> model;
-  MetricFlags flags = request.metrics;
-  if (!request.model.empty()) {
-    model = std::make_unique<model::ShapeProcessModel>(io::read_model(request.model));
-    if (flags.directions == 0) flags.directions = model->measurement.directions;
-    if (flags.direction == "gravitation" &&
-        model->measurement.direction == geometry::DirectionKind::centroid) {
-      flags.direction = "centroid";
-    }
+namespace {
+
+// The model of --model, if any, and the metric flags it completes (its directions and direction
+// kind where the flags leave them to it).
+std::unique_ptr<model::ShapeProcessModel> read_report_model(const ReportRequest& request,
+                                                            MetricFlags& flags) {
+  if (request.model.empty()) return nullptr;
+  auto model = std::make_unique<model::ShapeProcessModel>(io::read_model(request.model));
+  if (flags.directions == 0) flags.directions = model->measurement.directions;
+  if (flags.direction == "gravitation" &&
+      model->measurement.direction == geometry::DirectionKind::centroid) {
+    flags.direction = "centroid";
   }
-  if (std::filesystem::exists(request.directory) &&
-      !std::filesystem::is_directory(request.directory)) {
-    throw core::UsageError(request.directory + ": exists and is not a directory");
-  }
-  EvaluatedScene exemplar = read_exemplar(request.exemplar, request.reader, flags);
-  // A seamless tile of few elements is measured as a repeat of itself: on its own small torus an
-  // element's images one period away are the element itself, and the contacts and nearest
-  // distances they make would go uncounted.
+  return model;
+}
+
+// Everything the report measures: the exemplar (a seamless tile of few elements measured as a
+// repeat of itself: on its own small torus an element's images one period away are the element
+// itself, and the contacts and nearest distances they make would go uncounted), the outputs
+// against it, and their verdicts.
+struct Measured {
+  EvaluatedScene exemplar;
   std::string exemplar_note;
-  const geometry::Scene tile = exemplar.scene;  // novelty is judged against the drawing itself
-  if (exemplar.boundary == geometry::Boundary::torus) {
-    const int times = geometry::tile_repeats(exemplar.scene.elements.size());
-    if (times > 1) {
-      exemplar.scene = geometry::repeat_tile(exemplar.scene, times);
-      exemplar_note = "measured and drawn as a " + std::to_string(times) + " × " +
-                      std::to_string(times) + " repeat of the tile";
-    }
-  }
-  const Evaluation exemplar_eval = evaluate(exemplar, flags);
+  Evaluation exemplar_eval;
   std::vector<EvaluatedScene> outputs;
   std::vector<Evaluation> evals;
-  for (const std::string& file : request.outputs) {
-    outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
-    // Novelty against the drawing itself, not its repeat (whose period may be the output's).
-    evals.push_back(evaluate(outputs.back(), flags, &exemplar, &exemplar_eval.statistics, &tile));
-  }
-
-  evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
-      exemplar.scene, exemplar.boundary, exemplar_eval.statistics, model.get());
-  measured.scene = nullptr;  // novelty is measured above
   std::vector<std::vector<evaluation::Verdict>> verdicts;
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
+};
+
+void measure_report(const ReportRequest& request, const MetricFlags& flags,
+                    const model::ShapeProcessModel* model, Measured& m) {
+  m.exemplar = read_exemplar(request.exemplar, request.reader, flags);
+  const geometry::Scene tile = m.exemplar.scene;  // novelty is judged against the drawing itself
+  if (m.exemplar.boundary == geometry::Boundary::torus) {
+    const int times = geometry::tile_repeats(m.exemplar.scene.elements.size());
+    if (times > 1) {
+      m.exemplar.scene = geometry::repeat_tile(m.exemplar.scene, times);
+      m.exemplar_note = "measured and drawn as a " + std::to_string(times) + " × " +
+                        std::to_string(times) + " repeat of the tile";
+    }
+  }
+  m.exemplar_eval = evaluate(m.exemplar, flags);
+  for (const std::string& file : request.outputs) {
+    m.outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
+    // Novelty against the drawing itself, not its repeat (whose period may be the output's).
+    m.evals.push_back(
+        evaluate(m.outputs.back(), flags, &m.exemplar, &m.exemplar_eval.statistics, &tile));
+  }
+  evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
+      m.exemplar.scene, m.exemplar.boundary, m.exemplar_eval.statistics, model);
+  measured.scene = nullptr;  // novelty is measured above
+  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
     evaluation::Judged judged = evaluation::measure_for_verdicts(
-        measured, outputs[i].scene, outputs[i].boundary, evals[i].statistics, *evals[i].comparison,
-        &*evals[i].neighbourhood);
-    judged.novelty = evals[i].novelty;
-    verdicts.push_back(evaluation::judge(judged));
+        measured, m.outputs[i].scene, m.outputs[i].boundary, m.evals[i].statistics,
+        *m.evals[i].comparison, &*m.evals[i].neighbourhood);
+    judged.novelty = m.evals[i].novelty;
+    m.verdicts.push_back(evaluation::judge(judged));
   }
+}
 
-  report::Report r;
-  r.exemplar = {request.exemplar, &exemplar.scene, &exemplar_eval.statistics,
-                nullptr,          nullptr,         exemplar_note};
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    r.outputs.push_back(
-        {request.labels.empty() ? request.outputs[i] : request.labels[i], &outputs[i].scene,
-         &evals[i].statistics, &*evals[i].comparison, &*evals[i].neighbourhood,
-         outputs[i].record ? outputs[i].record->summary() : std::string(), &verdicts[i]});
-  }
-  r.model = model.get();
-  if (model) {
-    read_goodness(*model, r);
-    const core::Stopwatch envelopes_watch;
-    const evaluation::EnvelopeOptions envelope;
-    r.envelopes =
-        evaluation::nearest_envelopes(exemplar.scene, exemplar.boundary, *model, envelope);
-    r.envelope_samples = envelope.samples;
-    r.timings.emplace_back("simulation envelopes", envelopes_watch.seconds());
-  }
-  r.model_label = request.model;
-  r.command = request.command;
-  if (model && model->fit) {
-    const model::FitSeconds& seconds = model->fit->seconds;
-    for (const auto& [stage, value] : {std::pair{"measurements", seconds.measurements},
-                                       {"optimisation", seconds.optimisation},
-                                       {"proxies", seconds.proxies},
-                                       {"quadrature", seconds.quadrature}})
-      r.timings.emplace_back(std::string("fit: ") + stage, value);
-  }
-  for (const auto& timing : request.timings) r.timings.push_back(timing);
-  r.timings.emplace_back("metrics: exemplar", exemplar_eval.statistics.seconds);
-  for (std::size_t i = 0; i < evals.size(); ++i) {
-    r.timings.emplace_back("metrics: output " + std::to_string(i + 1), evals[i].statistics.seconds);
-  }
+// The model's part of the report: its goodness-of-fit table, the simulation envelopes of the
+// nearest distances, and the fit's times.
+void add_model(const model::ShapeProcessModel& model, const Measured& m, report::Report& r) {
+  read_goodness(model, r);
+  const core::Stopwatch envelopes_watch;
+  const evaluation::EnvelopeOptions envelope;
+  r.envelopes =
+      evaluation::nearest_envelopes(m.exemplar.scene, m.exemplar.boundary, model, envelope);
+  r.envelope_samples = envelope.samples;
+  r.timings.emplace_back("simulation envelopes", envelopes_watch.seconds());
+  if (!model.fit) return;
+  const model::FitSeconds& seconds = model.fit->seconds;
+  for (const auto& [stage, value] : {std::pair{"measurements", seconds.measurements},
+                                     {"optimisation", seconds.optimisation},
+                                     {"proxies", seconds.proxies},
+                                     {"quadrature", seconds.quadrature}})
+    r.timings.emplace_back(std::string("fit: ") + stage, value);
+}
 
-  nlohmann::json metrics = {{"exemplar", evaluation_json(exemplar, exemplar_eval)},
+std::string label_of(const ReportRequest& request, std::size_t i) {
+  return request.labels.empty() ? request.outputs[i] : request.labels[i];
+}
+
+// metrics.json: every measure of the exemplar and the outputs, and the outputs' verdicts.
+void write_metrics_json(const ReportRequest& request, const MetricFlags& flags, const Measured& m) {
+  nlohmann::json metrics = {{"exemplar", evaluation_json(m.exemplar, m.exemplar_eval)},
                             {"outputs", nlohmann::json::array()},
                             {"options", flags.to_json()}};
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    nlohmann::json entry = evaluation_json(outputs[i], evals[i]);
-    entry["summary"] = evaluation::summary(verdicts[i]);
-    for (const evaluation::Verdict& v : verdicts[i])
+  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
+    nlohmann::json entry = evaluation_json(m.outputs[i], m.evals[i]);
+    entry["summary"] = evaluation::summary(m.verdicts[i]);
+    for (const evaluation::Verdict& v : m.verdicts[i])
       entry["verdicts"].push_back({{"check", v.metric},
                                    {"value", v.value},
                                    {"shown", v.shown},
@@ -152,20 +151,54 @@ int write_report(const ReportRequest& request, std::ostream& out) {
                                    {"problem", v.problem}});
     metrics["outputs"].push_back(std::move(entry));
   }
-  std::filesystem::create_directories(request.directory);
   core::write_file_atomically(std::filesystem::path(request.directory) / "metrics.json",
                               [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
+}
+
+}  // namespace
+
+int write_report(const ReportRequest& request, std::ostream& out) {
+  const core::Stopwatch watch;
+  MetricFlags flags = request.metrics;
+  const std::unique_ptr<model::ShapeProcessModel> model = read_report_model(request, flags);
+  if (std::filesystem::exists(request.directory) &&
+      !std::filesystem::is_directory(request.directory)) {
+    throw core::UsageError(request.directory + ": exists and is not a directory");
+  }
+  Measured m;
+  measure_report(request, flags, model.get(), m);
+
+  report::Report r;
+  r.exemplar = {request.exemplar, &m.exemplar.scene, &m.exemplar_eval.statistics,
+                nullptr,          nullptr,           m.exemplar_note};
+  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
+    r.outputs.push_back({label_of(request, i), &m.outputs[i].scene, &m.evals[i].statistics,
+                         &*m.evals[i].comparison, &*m.evals[i].neighbourhood,
+                         m.outputs[i].record ? m.outputs[i].record->summary() : std::string(),
+                         &m.verdicts[i]});
+  }
+  r.model = model.get();
+  if (model) add_model(*model, m, r);
+  r.model_label = request.model;
+  r.command = request.command;
+  for (const auto& timing : request.timings) r.timings.push_back(timing);
+  r.timings.emplace_back("metrics: exemplar", m.exemplar_eval.statistics.seconds);
+  for (std::size_t i = 0; i < m.evals.size(); ++i) {
+    r.timings.emplace_back("metrics: output " + std::to_string(i + 1),
+                           m.evals[i].statistics.seconds);
+  }
+  std::filesystem::create_directories(request.directory);
+  write_metrics_json(request, flags, m);
   r.timings.emplace_back("reading and metrics, in total", watch.seconds());
   report::write_report(r, request.directory);
   report::write_verdict_markdown(r, std::filesystem::path(request.directory) / "verdicts.md");
   // The verdicts first: what a person would notice, one line per output.
-  for (std::size_t i = 0; i < outputs.size(); ++i)
-    out << (request.labels.empty() ? request.outputs[i] : request.labels[i]) << ": "
-        << evaluation::summary(verdicts[i]) << '\n';
+  for (std::size_t i = 0; i < m.outputs.size(); ++i)
+    out << label_of(request, i) << ": " << evaluation::summary(m.verdicts[i]) << '\n';
   out << "wrote " << (std::filesystem::path(request.directory) / "index.html").string() << " ("
-      << outputs.size() + 1 << " pictures, metrics.json, verdicts.md)\n";
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const Evaluation& e = evals[i];
+      << m.outputs.size() + 1 << " pictures, metrics.json, verdicts.md)\n";
+  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
+    const Evaluation& e = m.evals[i];
     out << "  " << request.outputs[i] << ": " << e.statistics.elements() << " elements, "
         << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest "
         << e.comparison->all.nearest << ", W1 pairs " << e.comparison->all.pairs
