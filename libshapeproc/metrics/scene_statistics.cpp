@@ -161,6 +161,115 @@ Distribution censored_distribution(const std::vector<double>& values,
 
 int SceneStatistics::elements() const { return std::accumulate(counts.begin(), counts.end(), 0); }
 
+namespace {
+
+// The statistics that need no measurement: counts, intensities, the mean spacing and the range.
+SceneStatistics counted(const geometry::Scene& scene, const StatisticsOptions& options) {
+  const std::size_t n = scene.elements.size();
+  SceneStatistics stats;
+  stats.dimension = scene.dimension;
+  stats.boundary =
+      options.measurement.periodic ? geometry::Boundary::torus : geometry::Boundary::open;
+  stats.window_measure = scene.window_measure();
+  core::check_positive("statistics", "the window's measure", stats.window_measure);
+  stats.mean_spacing =
+      std::pow(stats.window_measure / static_cast<double>(n), 1.0 / scene.dimension);
+  stats.range = options.range > 0 ? options.range : stats.mean_spacing;
+  for (const geometry::Category& c : scene.categories) stats.categories.push_back(c.name);
+  stats.counts.assign(stats.categories.size(), 0);
+  for (const geometry::Element& e : scene.elements)
+    ++stats.counts.at(static_cast<std::size_t>(e.category));
+  for (int c : stats.counts) stats.intensity.push_back(c / stats.window_measure);
+  return stats;
+}
+
+// Each element's distance to the window's edge, infinite on a torus or without border
+// correction; decides stats.edge where it is automatic (border when at least half the elements
+// see their nearest neighbour, within the range, before the edge).
+std::vector<double> edge_distances(const geometry::Scene& scene,
+                                   const geometry::PairMeasurer& measurer,
+                                   const std::vector<double>& nearest,
+                                   const StatisticsOptions& options, SceneStatistics& stats) {
+  const std::size_t n = scene.elements.size();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> borders(n, inf);
+  if (stats.periodic()) return borders;
+  for (std::size_t i = 0; i < n; ++i) {
+    const geometry::Element& e = scene.elements[i];
+    geometry::Box3 box = proxy_box(measurer, e.shape);
+    box.translate(e.position);
+    borders[i] = border_distance(scene.window, box, scene.dimension);
+  }
+  stats.edge = options.edge;
+  if (options.edge == EdgeTreatment::automatic) {
+    std::size_t observed = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      observed += std::min(nearest[i], stats.range) <= borders[i] ? 1 : 0;
+    stats.edge = 2 * observed >= n ? EdgeTreatment::border : EdgeTreatment::none;
+  }
+  if (stats.edge == EdgeTreatment::none) borders.assign(n, inf);
+  return borders;
+}
+
+// The pairs' contributions: nearest distances per axis, weighted distance samples (all and per
+// axis) and neighbour counts per correlation bin, each end of a pair counted where it sees all
+// its neighbours at that distance; collisions and contacts go to `collisions`.
+struct PairTally {
+  std::vector<std::vector<double>> nearest_axis;
+  std::vector<std::pair<double, double>> all;
+  std::vector<std::vector<std::pair<double, double>>> by_axis;
+  std::vector<double> correlation_counts;
+};
+
+PairTally tally_pairs(const std::vector<geometry::PairRecord>& pairs,
+                      const std::vector<double>& borders, int axes, double range, int bins,
+                      Collisions& collisions) {
+  const std::size_t n = borders.size();
+  const AtRisk at_risk(borders);
+  PairTally t;
+  t.nearest_axis.assign(static_cast<std::size_t>(axes),
+                        std::vector<double>(n, std::numeric_limits<double>::infinity()));
+  t.by_axis.resize(static_cast<std::size_t>(axes));
+  t.correlation_counts.assign(static_cast<std::size_t>(bins), 0.0);
+  collisions.colliding.assign(n, false);
+  const double width = range / bins;
+  for (const geometry::PairRecord& p : pairs) {
+    // Signed shape distance: below 0 the shapes overlap, at 0 they touch; the distributions
+    // take the gap, 0 for both.
+    const double signed_distance = p.measurement.distance;
+    const double d = std::max(0.0, signed_distance);
+    const int axis = p.measurement.axis;
+    if (signed_distance < 0.0) {
+      collisions.pairs.emplace_back(p.i, p.j);
+      collisions.colliding[p.i] = collisions.colliding[p.j] = true;
+    } else if (signed_distance == 0.0) {
+      collisions.touching.emplace_back(p.i, p.j);
+    }
+    for (const int e : {p.i, p.j}) {
+      t.nearest_axis[axis][e] = std::min(t.nearest_axis[axis][e], d);
+      if (d > borders[e]) continue;  // this end is too close to the edge to see all neighbours at d
+      const double w = 1.0 / at_risk(d);
+      t.all.emplace_back(d, w);
+      t.by_axis[axis].emplace_back(d, w);
+      t.correlation_counts[std::min(bins - 1, static_cast<int>(d / width))] += w;
+    }
+  }
+  collisions.elements =
+      static_cast<int>(std::count(collisions.colliding.begin(), collisions.colliding.end(), true));
+  return t;
+}
+
+// The weighted pair distances' distribution and their total weight (the mean neighbour count).
+void pair_statistics(DirectionalStatistics& out, std::vector<std::pair<double, double>> samples) {
+  double total = 0.0;
+  for (const auto& s : samples) total += s.second;
+  out.neighbours = total;
+  const int count = static_cast<int>(samples.size());
+  out.pairs = make_distribution(std::move(samples), count);
+}
+
+}  // namespace
+
 SceneStatistics compute_statistics(const geometry::Scene& scene, const StatisticsOptions& options,
                                    core::Random random) {
   const core::Stopwatch watch;
@@ -169,22 +278,8 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   core::check(options.correlation_bins >= 1, "statistics",
               "at least one correlation bin is needed");
   const std::size_t n = scene.elements.size();
-  const int dim = scene.dimension;
-
-  SceneStatistics stats;
-  stats.dimension = dim;
-  stats.boundary =
-      options.measurement.periodic ? geometry::Boundary::torus : geometry::Boundary::open;
-  stats.window_measure = scene.window_measure();
-  core::check_positive("statistics", "the window's measure", stats.window_measure);
-  stats.mean_spacing = std::pow(stats.window_measure / static_cast<double>(n), 1.0 / dim);
-  const double range = options.range > 0 ? options.range : stats.mean_spacing;
-  stats.range = range;
-  for (const geometry::Category& c : scene.categories) stats.categories.push_back(c.name);
-  stats.counts.assign(stats.categories.size(), 0);
-  for (const geometry::Element& e : scene.elements)
-    ++stats.counts.at(static_cast<std::size_t>(e.category));
-  for (int c : stats.counts) stats.intensity.push_back(c / stats.window_measure);
+  SceneStatistics stats = counted(scene, options);
+  const double range = stats.range;
 
   geometry::MeasurementOptions measurement = options.measurement;
   measurement.distance = geometry::DistanceKind::shape;
@@ -192,82 +287,23 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   const std::vector<geometry::PairRecord> pairs = measurer.all_pairs(scene.elements, range);
   const int axes = measurer.bins().axis_count();
 
-  // Distance of each element to the window's edge (infinite on a torus).
-  std::vector<double> borders(n, std::numeric_limits<double>::infinity());
-  if (!stats.periodic()) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const geometry::Element& e = scene.elements[i];
-      geometry::Box3 box = proxy_box(measurer, e.shape);
-      box.translate(e.position);
-      borders[i] = border_distance(scene.window, box, dim);
-    }
-  }
-
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> nearest(n, inf);
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
   for (const geometry::PairRecord& p : pairs) {
     const double gap = std::max(0.0, p.measurement.distance);
     nearest[p.i] = std::min(nearest[p.i], gap);
     nearest[p.j] = std::min(nearest[p.j], gap);
   }
-  if (!stats.periodic()) {
-    stats.edge = options.edge;
-    if (options.edge == EdgeTreatment::automatic) {
-      std::size_t observed = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        observed += std::min(nearest[i], range) <= borders[i] ? 1 : 0;
-      stats.edge = 2 * observed >= n ? EdgeTreatment::border : EdgeTreatment::none;
-    }
-    if (stats.edge == EdgeTreatment::none) borders.assign(n, inf);
-  }
-  const AtRisk at_risk(borders);
+  const std::vector<double> borders = edge_distances(scene, measurer, nearest, options, stats);
+  PairTally tally =
+      tally_pairs(pairs, borders, axes, range, options.correlation_bins, stats.collisions);
 
-  stats.collisions.colliding.assign(n, false);
-  std::vector<std::vector<double>> nearest_axis(static_cast<std::size_t>(axes),
-                                                std::vector<double>(n, inf));
-  std::vector<std::pair<double, double>> all_pairs;
-  std::vector<std::vector<std::pair<double, double>>> axis_pairs(static_cast<std::size_t>(axes));
-  std::vector<double> correlation_counts(static_cast<std::size_t>(options.correlation_bins), 0.0);
-  const double width = range / options.correlation_bins;
-  for (const geometry::PairRecord& p : pairs) {
-    // Signed shape distance: below 0 the shapes overlap, at 0 they touch; the distributions
-    // take the gap, 0 for both.
-    const double signed_distance = p.measurement.distance;
-    const double d = std::max(0.0, signed_distance);
-    const int axis = p.measurement.axis;
-    if (signed_distance < 0.0) {
-      stats.collisions.pairs.emplace_back(p.i, p.j);
-      stats.collisions.colliding[p.i] = stats.collisions.colliding[p.j] = true;
-    } else if (signed_distance == 0.0) {
-      stats.collisions.touching.emplace_back(p.i, p.j);
-    }
-    for (const int e : {p.i, p.j}) {
-      nearest_axis[axis][e] = std::min(nearest_axis[axis][e], d);
-      if (d > borders[e]) continue;  // this end is too close to the edge to see all neighbours at d
-      const double w = 1.0 / at_risk(d);
-      all_pairs.emplace_back(d, w);
-      axis_pairs[axis].emplace_back(d, w);
-      correlation_counts[std::min(options.correlation_bins - 1, static_cast<int>(d / width))] += w;
-    }
-  }
-  stats.collisions.elements = static_cast<int>(
-      std::count(stats.collisions.colliding.begin(), stats.collisions.colliding.end(), true));
-
-  auto pair_statistics = [&](DirectionalStatistics& out,
-                             std::vector<std::pair<double, double>> samples) {
-    double total = 0.0;
-    for (const auto& s : samples) total += s.second;
-    out.neighbours = total;
-    const int count = static_cast<int>(samples.size());
-    out.pairs = make_distribution(std::move(samples), count);
-  };
   stats.all.nearest = censored_distribution(nearest, borders, range);
-  pair_statistics(stats.all, std::move(all_pairs));
+  pair_statistics(stats.all, std::move(tally.all));
   for (int k = 0; k < axes; ++k) {
     DirectionalStatistics a;
     a.direction = measurer.bins().axis_direction(k);
-    a.nearest = censored_distribution(nearest_axis[k], borders, range);
-    pair_statistics(a, std::move(axis_pairs[k]));
+    a.nearest = censored_distribution(tally.nearest_axis[k], borders, range);
+    pair_statistics(a, std::move(tally.by_axis[k]));
     stats.axes.push_back(std::move(a));
   }
 
@@ -277,10 +313,11 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
       n > 1 ? offset_measure(scene, measurer, range, options.correlation_bins, options, random)
             : std::vector<double>(static_cast<std::size_t>(options.correlation_bins), 0.0);
   const double density = static_cast<double>(n - 1) / stats.window_measure;
+  const double width = range / options.correlation_bins;
   for (int k = 0; k < options.correlation_bins; ++k) {
     stats.correlation_r.push_back((k + 0.5) * width);
     const double expected = density * reference[k];
-    stats.correlation.push_back(expected > 0 ? correlation_counts[k] / expected
+    stats.correlation.push_back(expected > 0 ? tally.correlation_counts[k] / expected
                                              : std::numeric_limits<double>::quiet_NaN());
   }
   stats.seconds = watch.seconds();
