@@ -158,51 +158,49 @@ void integrate_cells(const std::vector<Dummy>& dummies, const std::vector<std::s
 
 }  // namespace
 
-QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
-                                   const FitRegion& region, const geometry::PairMeasurer& measurer,
-                                   const model::Interaction& interaction,
-                                   const ExemplarStatistics& statistics,
-                                   const std::vector<std::vector<int>>& shapes_of,
-                                   const geometry::Domain& window) {
-  const int dimension = region.dimension;
-  const int categories = static_cast<int>(shapes_of.size());
-  const std::size_t n = exemplar.elements.size();
-  const CellGrid grid(
-      region, options.quadrature > 0 ? options.quadrature : default_quadrature_cells(dimension));
-  QuadratureDesign out;
-  out.cells = grid.cells;
-  out.cells_along = grid.cells_along;
-  PseudoLikelihoodDesign& design = out.design;
-  design.parameter_count = interaction.parameter_count();
-  design.data_sum = statistics.data_sum;
+namespace {
 
-  // Data points by category and cell.
+// The exemplar's elements in the region, by category and cell.
+std::vector<std::vector<std::vector<int>>> data_by_cell(const geometry::Scene& exemplar,
+                                                        const FitRegion& region,
+                                                        const CellGrid& grid, int categories) {
   std::vector<std::vector<std::vector<int>>> data_in_cell(
       static_cast<std::size_t>(categories),
       std::vector<std::vector<int>>(static_cast<std::size_t>(grid.cells)));
-  std::vector<int> data_of_category(static_cast<std::size_t>(categories), 0);
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = 0; k < exemplar.elements.size(); ++k) {
     const Element& e = exemplar.elements[k];
     if (!region.contains(e.position)) continue;
     data_in_cell[static_cast<std::size_t>(e.category)]
                 [static_cast<std::size_t>(grid.index_of(region, e.position))]
                     .push_back(static_cast<int>(k));
-    ++data_of_category[static_cast<std::size_t>(e.category)];
   }
-  const double region_measure = grid.cell_measure * grid.cells;
+  return data_in_cell;
+}
 
-  // The dummies of every category and cell, and the data points in cell order.
+// The dummies of every category and cell (at the cell's centre, one per distinct shape or per
+// shape of the category), in blocks of 4 rows of cells (`block_start`: each block's first dummy,
+// then the end); the data points join `design` in the same category and cell order.
+std::vector<Dummy> place_dummies(const CellGrid& grid, const FitRegion& region,
+                                 const FitOptions& options, const geometry::PairMeasurer& measurer,
+                                 const ExemplarStatistics& statistics,
+                                 const std::vector<std::vector<int>>& shapes_of,
+                                 const std::vector<std::vector<std::vector<int>>>& data_in_cell,
+                                 std::vector<std::size_t>& block_start,
+                                 PseudoLikelihoodDesign& design) {
+  const double region_measure = grid.cell_measure * grid.cells;
   std::vector<Dummy> dummies;
-  std::vector<std::size_t> block_start;  // first dummy of each block of 4 rows of cells
-  for (int c = 0; c < categories; ++c) {
+  for (int c = 0; c < static_cast<int>(shapes_of.size()); ++c) {
     const std::vector<int>& shapes = shapes_of[static_cast<std::size_t>(c)];
     const int m_c = static_cast<int>(shapes.size());
     const int m =
         options.shapes_per_location > 0 ? std::min(m_c, options.shapes_per_location) : m_c;
     const std::vector<std::pair<int, int>> distinct = distinct_shapes(shapes, m, measurer);
-    const int data_count = data_of_category[static_cast<std::size_t>(c)];
+    std::size_t data_count = 0;
+    for (const std::vector<int>& in_cell : data_in_cell[static_cast<std::size_t>(c)])
+      data_count += in_cell.size();
     const double data_share = data_count > 0 ? options.data_weight : 0.0;
-    const double data_weight = data_count > 0 ? data_share * region_measure / data_count : 0.0;
+    const double data_weight =
+        data_count > 0 ? data_share * region_measure / static_cast<double>(data_count) : 0.0;
     const double weight = (1 - data_share) * grid.cell_measure / static_cast<double>(m);
     for (int cell = 0; cell < grid.cells; ++cell) {
       if (cell % (4 * grid.count[0]) == 0) block_start.push_back(dummies.size());
@@ -232,17 +230,23 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     }
   }
   block_start.push_back(dummies.size());
-  out.data_points = design.points.size();
+  return dummies;
+}
 
-  // Each dummy integrated against the data.
+// Each dummy integrated against the data, by lines or by cells: its parts.
+std::vector<std::vector<CellPart>> integrate_dummies(
+    const std::vector<Dummy>& dummies, const std::vector<std::size_t>& block_start,
+    const CellGrid& grid, const FitRegion& region, const geometry::Scene& exemplar,
+    const FitOptions& options, const geometry::PairMeasurer& measurer,
+    const model::Interaction& interaction, const geometry::Domain& window, bool lines) {
+  const int dimension = region.dimension;
   const double range = interaction.range();
   double max_radius = 0.0;
   for (std::size_t s = 0; s < exemplar.shapes.size(); ++s)
     max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
-  out.lines = options.lines && range > 0;
   std::vector<std::vector<CellPart>> parts(dummies.size());
   const Vec3& period = window.period();
-  if (out.lines) {
+  if (lines) {
     LineContext context;
     context.interaction = &interaction;
     context.measurer = &measurer;
@@ -251,19 +255,50 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     context.period = period;
     context.tolerance = 1e-6 * grid.longest;
     integrate_lines(dummies, grid, region, context, options.threads, parts);
-  } else {
-    geometry::NeighbourGrid neighbours(
-        exemplar.window, dimension,
-        range + 2 * max_radius +
-            std::sqrt(static_cast<double>(dimension)) * grid.longest / grid.cells_along,
-        window.periodic());
-    for (std::size_t k = 0; k < n; ++k)
-      neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
-    const CellContext context{&interaction, &measurer, &exemplar.elements,
-                              &neighbours,  dimension, period};
-    integrate_cells(dummies, block_start, grid, region, context, range, options.refinement,
-                    options.threads, options.progress, parts);
+    return parts;
   }
+  geometry::NeighbourGrid neighbours(
+      exemplar.window, dimension,
+      range + 2 * max_radius +
+          std::sqrt(static_cast<double>(dimension)) * grid.longest / grid.cells_along,
+      window.periodic());
+  for (std::size_t k = 0; k < exemplar.elements.size(); ++k)
+    neighbours.insert(static_cast<int>(k), exemplar.elements[k].position);
+  const CellContext context{&interaction, &measurer, &exemplar.elements,
+                            &neighbours,  dimension, period};
+  integrate_cells(dummies, block_start, grid, region, context, range, options.refinement,
+                  options.threads, options.progress, parts);
+  return parts;
+}
+
+}  // namespace
+
+QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
+                                   const FitRegion& region, const geometry::PairMeasurer& measurer,
+                                   const model::Interaction& interaction,
+                                   const ExemplarStatistics& statistics,
+                                   const std::vector<std::vector<int>>& shapes_of,
+                                   const geometry::Domain& window) {
+  const int dimension = region.dimension;
+  const int categories = static_cast<int>(shapes_of.size());
+  const CellGrid grid(
+      region, options.quadrature > 0 ? options.quadrature : default_quadrature_cells(dimension));
+  QuadratureDesign out;
+  out.cells = grid.cells;
+  out.cells_along = grid.cells_along;
+  PseudoLikelihoodDesign& design = out.design;
+  design.parameter_count = interaction.parameter_count();
+  design.data_sum = statistics.data_sum;
+
+  std::vector<std::size_t> block_start;
+  const std::vector<Dummy> dummies =
+      place_dummies(grid, region, options, measurer, statistics, shapes_of,
+                    data_by_cell(exemplar, region, grid, categories), block_start, design);
+  out.data_points = design.points.size();
+  out.lines = options.lines && interaction.range() > 0;
+  std::vector<std::vector<CellPart>> parts =
+      integrate_dummies(dummies, block_start, grid, region, exemplar, options, measurer,
+                        interaction, window, out.lines);
 
   // Lines: the data points' share comes off every line of their category alike, so that the
   // weights still sum to |W|.
