@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "libshapeproc/compare/attribute_vote.hpp"
-#include "libshapeproc/compare/neighbourhood_em.hpp"
-#include "libshapeproc/compare/position_assignment.hpp"
-#include "libshapeproc/compare/region_growing.hpp"
-#include "libshapeproc/compare/seed_and_grow.hpp"
 #include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/methods/common/position_assignment.hpp"
+#include "libshapeproc/methods/davison2018/region_growing.hpp"
+#include "libshapeproc/methods/ijiri2008/seed_and_grow.hpp"
+#include "libshapeproc/methods/ma2011/attribute_vote.hpp"
+#include "libshapeproc/methods/ma2011/neighbourhood_em.hpp"
 
 namespace {
 
@@ -27,31 +27,31 @@ void BM_EmIteration(benchmark::State& state, const char* file, const char* categ
   const double side =
       std::sqrt(1000.0 * exemplar.window_measure() / static_cast<double>(exemplar.elements.size()));
   const auto domain = geometry::Domain::from_sizes({side, side}, geometry::Boundary::torus);
-  const compare::NeighbourhoodEm em(exemplar, geometry::Boundary::open, domain, {});
-  const compare::EmExemplar& ex = em.exemplar();
-  const compare::SimilaritySets sets =
-      compare::build_similarity_sets(ex, 5, ex.spacing * ex.spacing);
-  compare::SearchSettings settings;
+  const methods::NeighbourhoodEm em(exemplar, geometry::Boundary::open, domain, {});
+  const methods::EmExemplar& ex = em.exemplar();
+  const methods::SimilaritySets sets =
+      methods::build_similarity_sets(ex, 5, ex.spacing * ex.spacing);
+  methods::SearchSettings settings;
   settings.alpha = settings.lambda = ex.spacing * ex.spacing;
   settings.sets = &sets;
-  compare::SearchSettings fixed = settings;
-  fixed.rule = compare::SearchRule::fixed;
+  methods::SearchSettings fixed = settings;
+  fixed.rule = methods::SearchRule::fixed;
   core::Random random(1);
-  compare::InitialOutput start = compare::initialise(
-      ex, domain, {}, compare::Initialisation::patch_copy, settings.alpha, random);
-  compare::SearchResult seed;
+  methods::InitialOutput start = methods::initialise(
+      ex, domain, {}, methods::Initialisation::patch_copy, settings.alpha, random);
+  methods::SearchResult seed;
   seed.match = start.copied_from;
-  const compare::SearchResult first = compare::search(ex, start.output, domain, settings, seed);
+  const methods::SearchResult first = methods::search(ex, start.output, domain, settings, seed);
   for (auto _ : state) {
-    const compare::SearchResult found = compare::search(ex, start.output, domain, settings, first);
+    const methods::SearchResult found = methods::search(ex, start.output, domain, settings, first);
     const auto d =
-        compare::solve_positions(start.output.samples.positions, found.predictions, domain);
-    compare::OutputSamples moved = start.output;
+        methods::solve_positions(start.output.samples.positions, found.predictions, domain);
+    methods::OutputSamples moved = start.output;
     for (std::size_t s = 0; s < moved.samples.size(); ++s)
       moved.samples.positions[s] = domain.wrap(moved.samples.positions[s] + d[s]);
-    const auto sources = compare::vote_attributes(ex, start.output, found);
+    const auto sources = methods::vote_attributes(ex, start.output, found);
     benchmark::DoNotOptimize(sources);
-    const compare::SearchResult energy = compare::search(ex, moved, domain, fixed, found);
+    const methods::SearchResult energy = methods::search(ex, moved, domain, fixed, found);
     benchmark::DoNotOptimize(energy.energy);
   }
   const double elements = static_cast<double>(start.output.elements());
@@ -89,15 +89,15 @@ void grow_torus(benchmark::State& state, const char* file, bool tile, const Opti
 }
 
 void BM_RegionGrowing(benchmark::State& state, const char* file, bool tile, bool optimise) {
-  compare::GrowthOptions options;
+  methods::GrowthOptions options;
   options.optimise = optimise;
-  grow_torus<compare::RegionGrowing>(state, file, tile, options);
+  grow_torus<methods::RegionGrowing>(state, file, tile, options);
 }
 
 void BM_SeedAndGrow(benchmark::State& state, const char* file, bool tile, bool relax) {
-  compare::SeedGrowthOptions options;
+  methods::SeedGrowthOptions options;
   options.relax = relax;
-  grow_torus<compare::SeedAndGrow>(state, file, tile, options);
+  grow_torus<methods::SeedAndGrow>(state, file, tile, options);
 }
 
 }  // namespace

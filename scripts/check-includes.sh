@@ -17,7 +17,7 @@ declare -A allowed=(
   [metrics]="core geometry"
   [report]="core geometry model synthesis render io metrics evaluation"
   [evaluation]="core geometry model synthesis sample fit metrics"
-  [compare]="core geometry model synthesis sample fit"
+  [methods]="core geometry model synthesis sample fit"
 )
 status=0
 for dir in libshapeproc/*/; do
@@ -36,6 +36,32 @@ for dir in libshapeproc/*/; do
       status=1
     fi
   done < <(grep -rHE '^#include "libshapeproc/[a-z_]+/' "$dir" || true)
+done
+# The synthesis methods by paper (libshapeproc/methods/): a folder may include, within methods/,
+# only itself and the folders listed; the files at the top (the hybrid, the tile baseline) any.
+declare -A method_allowed=(
+  [common]=""
+  [physics]="common"
+  [ma2011]="common physics"
+  [davison2018]="common"
+  [ijiri2008]="common"
+)
+for dir in libshapeproc/methods/*/; do
+  part=$(basename "$dir")
+  if [ -z "${method_allowed[$part]+set}" ]; then
+    echo "check-includes: methods/$part has no place in the methods' layering (add it to scripts/check-includes.sh)"
+    status=1
+    continue
+  fi
+  while IFS= read -r line; do
+    file=${line%%:*}
+    used=$(sed -E 's#.*"libshapeproc/methods/([a-z0-9_]+)/.*#\1#' <<< "$line")
+    [ "$used" = "$part" ] && continue
+    if ! grep -qw -- "$used" <<< "${method_allowed[$part]}"; then
+      echo "check-includes: $file includes libshapeproc/methods/$used/ but methods/$part may include only: ${method_allowed[$part]:-nothing}"
+      status=1
+    fi
+  done < <(grep -rHE '^#include "libshapeproc/methods/[a-z0-9_]+/' "$dir" || true)
 done
 # A module's detail/ headers are its own: no other module, and not the command line, includes
 # them (tests may).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A gallery of `shapeproc compare` pages (docs/compare.md): every method on each exemplar of
+# A gallery of `shapeproc compare` pages (docs/methods.md): every method on each exemplar of
 # data/svg, and, given the folder of the Hero Patterns tiles, on a dozen of them (as seamless
 # tiles). Each output domain is 2W x 2H of its exemplar (larger for tiles of few elements: at
 # least 64 in the output), seed 1. Writes OUT/NAME/index.html for

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The shape process beside the neighbourhood EM of Ma et al. 2011 and the region growing of
-# Davison et al. 2018 on a set of exemplars (docs/compare.md): for each exemplar, `synthesize`
+# Davison et al. 2018 on a set of exemplars (docs/methods.md): for each exemplar, `synthesize`
 # with each method (2W x 2H, torus, seed 1; the EM also with its interleaved physics solver,
 # growth also with `--overlap shapes`; VARIANTS="davison ..." picks some), then
 # `stats OUTPUT --against EXEMPLAR` with the same metrics for all. Pictures go to

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "libshapeproc/core/random.hpp"
-#include "tests/compare/compare_scenes.hpp"
+#include "tests/methods/method_scenes.hpp"
 
 namespace shapeproc::evaluation {
 namespace {

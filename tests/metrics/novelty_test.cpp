@@ -8,7 +8,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
-#include "tests/compare/compare_scenes.hpp"
+#include "tests/methods/method_scenes.hpp"
 #include "tests/metrics/metric_scenes.hpp"
 
 namespace shapeproc::metrics {

@@ -16,18 +16,18 @@ namespace shapeproc::cli {
 namespace {
 
 // An orientation (flow) field from --orientation-field: none, a constant angle or a PNG.
-compare::OrientationField orientation_field(const std::string& orientation,
+methods::OrientationField orientation_field(const std::string& orientation,
                                             const geometry::Domain& domain) {
   if (orientation.empty()) return {};
   if (io::extension_of(orientation) == "png")
-    return compare::OrientationField::map(
+    return methods::OrientationField::map(
         std::make_shared<const geometry::Raster>(io::read_grayscale_png(orientation)),
         domain.box());
   const auto angle = io::parse_number_list(orientation);
   if (!angle || angle->size() != 1)
     throw core::UsageError("--orientation-field: expected an angle in degrees or a .png, got '" +
                            orientation + "'");
-  return compare::OrientationField::constant((*angle)[0]);
+  return methods::OrientationField::constant((*angle)[0]);
 }
 
 }  // namespace
@@ -91,8 +91,8 @@ void EmFlags::add_orientation_to(CLI::App& command) {
                      "degrees); ijiri takes it with --rotation flow-field");
 }
 
-compare::EmOptions EmFlags::options(const geometry::Domain& domain, long long iterations) const {
-  compare::EmOptions o;
+methods::EmOptions EmFlags::options(const geometry::Domain& domain, long long iterations) const {
+  methods::EmOptions o;
   o.rings = rings;
   o.k = k;
   o.alpha = alpha;
@@ -100,16 +100,16 @@ compare::EmOptions EmFlags::options(const geometry::Domain& domain, long long it
   if (samples != "auto") {
     const auto n = io::parse_number_list(samples);
     if (!n || n->size() != 1 || (*n)[0] != std::floor((*n)[0]) || (*n)[0] < 1 ||
-        (*n)[0] > compare::kMaxSamplesPerElement)
+        (*n)[0] > methods::kMaxSamplesPerElement)
       throw core::UsageError("--samples-per-element: expected 1 to 16 or auto, got '" + samples +
                              "'");
     o.samples.per_element = static_cast<int>((*n)[0]);
   }
-  o.initialisation = compare::parse_initialisation(initialisation);
+  o.initialisation = methods::parse_initialisation(initialisation);
   o.diverse_patches = !copy_patches;
   o.search =
-      search == "brute-force" ? compare::SearchRule::brute_force : compare::SearchRule::k_coherence;
-  o.reconstruction = compare::parse_reconstruction(reconstruction);
+      search == "brute-force" ? methods::SearchRule::brute_force : methods::SearchRule::k_coherence;
+  o.reconstruction = methods::parse_reconstruction(reconstruction);
   o.physics_steps = physics ? physics_steps : 0;
   if (iterations > 10000) throw core::UsageError("--iterations: ma-em takes at most 10000");
   if (iterations > 0) o.iterations = static_cast<int>(iterations);
@@ -162,8 +162,8 @@ void GrowthFlags::add_to(CLI::App& command) {
       ->check(non_negative_number());
 }
 
-compare::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
-  compare::GrowthOptions o;
+methods::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
+  methods::GrowthOptions o;
   o.rings = shared.rings;
   o.k = shared.k;
   o.alpha = shared.alpha;
@@ -201,18 +201,18 @@ void IjiriFlags::add_to(CLI::App& command) {
                      ".svg, elements labelled by index, border elements hollow");
 }
 
-compare::SeedGrowthOptions IjiriFlags::options(const geometry::Scene& exemplar,
+methods::SeedGrowthOptions IjiriFlags::options(const geometry::Scene& exemplar,
                                                const std::string& orientation,
                                                const std::string& overlap,
                                                const geometry::Domain& domain) const {
-  compare::SeedGrowthOptions o;
+  methods::SeedGrowthOptions o;
   o.exact_overlap = overlap == "shapes";
   o.circle_overlap = overlap == "circles";
-  o.rotation = compare::parse_rotation_mode(rotation);
+  o.rotation = methods::parse_rotation_mode(rotation);
   o.field = orientation_field(orientation, domain);
-  if (o.rotation == compare::RotationMode::flow_field && o.field.empty())
+  if (o.rotation == methods::RotationMode::flow_field && o.field.empty())
     throw core::UsageError("--rotation flow-field needs --orientation-field");
-  if (o.rotation != compare::RotationMode::flow_field && !o.field.empty())
+  if (o.rotation != methods::RotationMode::flow_field && !o.field.empty())
     throw core::UsageError(
         "--orientation-field: --method ijiri takes it with --rotation "
         "flow-field");
@@ -256,7 +256,7 @@ compare::SeedGrowthOptions IjiriFlags::options(const geometry::Scene& exemplar,
 }
 
 // The exemplar's connectivity as a picture (--show-connectivity).
-void show_connectivity(const compare::SeedGrowthExemplar& exemplar, const std::string& file) {
+void show_connectivity(const methods::SeedGrowthExemplar& exemplar, const std::string& file) {
   std::vector<geometry::Vec3> nodes;
   std::vector<bool> open;
   for (std::size_t e = 0; e < exemplar.scene.elements.size(); ++e) {
@@ -264,7 +264,7 @@ void show_connectivity(const compare::SeedGrowthExemplar& exemplar, const std::s
     open.push_back(!exemplar.connectivity.rings[e].closed);
   }
   std::vector<io::GraphEdge> edges;
-  for (const auto& [first, offset] : compare::ring_edges(exemplar.connectivity))
+  for (const auto& [first, offset] : methods::ring_edges(exemplar.connectivity))
     edges.push_back({first, offset});
   io::write_graph_svg(file, exemplar.scene.window, nodes, edges, open);
 }

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "libshapeproc/compare/neighbourhood_em.hpp"
-#include "libshapeproc/compare/region_growing.hpp"
-#include "libshapeproc/compare/seed_and_grow.hpp"
+#include "libshapeproc/methods/davison2018/region_growing.hpp"
+#include "libshapeproc/methods/ijiri2008/seed_and_grow.hpp"
+#include "libshapeproc/methods/ma2011/neighbourhood_em.hpp"
 
 namespace CLI {
 class App;
@@ -17,10 +17,10 @@ namespace shapeproc::cli {
 // The neighbourhood EM's options (--method ma-em), and the shared --neighbourhood, --k, --alpha
 // and --orientation-field.
 struct EmFlags {
-  double rings = compare::EmOptions{}.rings;
-  int k = compare::EmOptions{}.k;
-  double alpha = compare::EmOptions{}.alpha;
-  double lambda = compare::EmOptions{}.lambda;
+  double rings = methods::EmOptions{}.rings;
+  int k = methods::EmOptions{}.k;
+  double alpha = methods::EmOptions{}.alpha;
+  double lambda = methods::EmOptions{}.lambda;
   std::string samples = "auto";
   std::string initialisation = "patch-copy";
   std::string search = "k-coherence";
@@ -28,7 +28,7 @@ struct EmFlags {
   std::string orientation;
   bool physics = false;
   bool copy_patches = false;  // --copy-patches: patch copy without its diversity
-  int physics_steps = compare::kPhysicsSubSteps;
+  int physics_steps = methods::kPhysicsSubSteps;
 
   // The options both neighbourhood methods (ma-em, davison) take.
   void add_shared_to(CLI::App& command);
@@ -37,13 +37,13 @@ struct EmFlags {
 
   void add_orientation_to(CLI::App& command);
 
-  compare::EmOptions options(const geometry::Domain& domain, long long iterations) const;
+  methods::EmOptions options(const geometry::Domain& domain, long long iterations) const;
 };
 
 // Region growing's options (--method davison), and --overlap, which ijiri takes too.
 struct GrowthFlags {
-  double ratio = compare::GrowthOptions{}.ratio;
-  double patch_radius = compare::GrowthOptions{}.patch_radius;
+  double ratio = methods::GrowthOptions{}.ratio;
+  double patch_radius = methods::GrowthOptions{}.patch_radius;
   double bounding_radius = 0.0;
   bool no_optimise = false;
   std::string overlap;
@@ -56,7 +56,7 @@ struct GrowthFlags {
 
   void add_to(CLI::App& command);
 
-  compare::GrowthOptions options(const EmFlags& shared) const;
+  methods::GrowthOptions options(const EmFlags& shared) const;
 };
 
 // Seed-and-grow's options (--method ijiri).
@@ -66,12 +66,12 @@ struct IjiriFlags {
 
   void add_to(CLI::App& command);
 
-  compare::SeedGrowthOptions options(const geometry::Scene& exemplar,
+  methods::SeedGrowthOptions options(const geometry::Scene& exemplar,
                                      const std::string& orientation, const std::string& overlap,
                                      const geometry::Domain& domain) const;
 };
 
 // Draws the exemplar's connectivity to an .svg (--show-connectivity).
-void show_connectivity(const compare::SeedGrowthExemplar& exemplar, const std::string& file);
+void show_connectivity(const methods::SeedGrowthExemplar& exemplar, const std::string& file);
 
 }  // namespace shapeproc::cli

@@ -7,17 +7,17 @@
 #include <system_error>
 #include <vector>
 
-#include "libshapeproc/compare/hybrid_synthesis.hpp"
-#include "libshapeproc/compare/neighbourhood_em.hpp"
-#include "libshapeproc/compare/region_growing.hpp"
-#include "libshapeproc/compare/seed_and_grow.hpp"
-#include "libshapeproc/compare/tiled_exemplar.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/methods/davison2018/region_growing.hpp"
+#include "libshapeproc/methods/hybrid_synthesis.hpp"
+#include "libshapeproc/methods/ijiri2008/seed_and_grow.hpp"
+#include "libshapeproc/methods/ma2011/neighbourhood_em.hpp"
+#include "libshapeproc/methods/tiled_exemplar.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/flags.hpp"
@@ -70,18 +70,18 @@ int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& 
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
   std::unique_ptr<synthesis::Synthesizer> start;
   if (args.start_from == "ma-em") {
-    start = std::make_unique<compare::NeighbourhoodEm>(exemplar, boundary, domain,
+    start = std::make_unique<methods::NeighbourhoodEm>(exemplar, boundary, domain,
                                                        args.em.options(domain, 0));
   } else if (args.start_from == "davison") {
-    start = std::make_unique<compare::RegionGrowing>(exemplar, boundary, domain,
+    start = std::make_unique<methods::RegionGrowing>(exemplar, boundary, domain,
                                                      args.growth.options(args.em));
   } else {
     if (exemplar.dimension != 2)
       throw core::UsageError(args.input + ": --start-from ijiri grows 2D exemplars only");
-    start = std::make_unique<compare::SeedAndGrow>(exemplar, boundary, domain,
+    start = std::make_unique<methods::SeedAndGrow>(exemplar, boundary, domain,
                                                    args.ijiri.options(exemplar, "", "", domain));
   }
-  const compare::HybridSynthesis method(std::move(start), model, domain,
+  const methods::HybridSynthesis method(std::move(start), model, domain,
                                         args.sample.sampler_options());
   out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
   args.sample.verbosity.stage("synthesising");
@@ -100,7 +100,7 @@ geometry::Scene read_checked_exemplar(SynthesizeArguments& args) {
 // --method tile: the exemplar repeated over the output.
 int run_tile(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
   const geometry::Scene exemplar = read_checked_exemplar(args);
-  const compare::TiledExemplar method(exemplar, args.sample.domain(exemplar.dimension));
+  const methods::TiledExemplar method(exemplar, args.sample.domain(exemplar.dimension));
   out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
   record_reader(args.reader, record);
   return args.sample.run(method, args.output, std::move(record), out);
@@ -116,10 +116,10 @@ int run_ijiri(SynthesizeArguments& args, synthesis::SynthesisRecord record, std:
   if (exemplar.dimension != 2)
     throw core::UsageError(args.input + ": --method ijiri grows 2D exemplars only");
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  compare::SeedGrowthOptions options =
+  methods::SeedGrowthOptions options =
       args.ijiri.options(exemplar, args.em.orientation, args.growth.overlap, domain);
   args.sample.verbosity.stage("analysing the exemplar");
-  const compare::SeedAndGrow method(exemplar, args.reader.boundary(), domain, std::move(options));
+  const methods::SeedAndGrow method(exemplar, args.reader.boundary(), domain, std::move(options));
   if (!args.ijiri.show.empty()) {
     if (io::extension_of(args.ijiri.show) != "svg")
       throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
@@ -145,7 +145,7 @@ int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, st
         "--iterations: --method davison grows until the domain is full; it takes no "
         "iteration count");
   const geometry::Boundary boundary = args.reader.boundary();
-  std::vector<compare::GrowthSource> palette;
+  std::vector<methods::GrowthSource> palette;
   palette.reserve(2);  // `exemplar` stays valid
   palette.push_back({io::read_scene(args.input, args.reader.options()), boundary});
   const geometry::Scene& exemplar = palette.front().scene;
@@ -167,8 +167,8 @@ int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, st
   }
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
   args.sample.verbosity.stage("analysing the exemplar");
-  const compare::RegionGrowing method(palette, domain, args.growth.options(args.em));
-  const compare::GrowthExemplar& grown = method.exemplar();
+  const methods::RegionGrowing method(palette, domain, args.growth.options(args.em));
+  const methods::GrowthExemplar& grown = method.exemplar();
   for (std::size_t s = 0, part = 0; s < grown.part.size(); ++s) {
     if (static_cast<std::size_t>(grown.part[s]) != part) continue;
     const std::size_t count = palette[part].scene.elements.size();
@@ -186,9 +186,9 @@ int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, st
 int run_em(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
   const geometry::Scene exemplar = read_checked_exemplar(args);
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  const compare::EmOptions options = args.em.options(domain, args.sample.iterations);
+  const methods::EmOptions options = args.em.options(domain, args.sample.iterations);
   args.sample.verbosity.stage("analysing the exemplar");
-  const compare::NeighbourhoodEm method(exemplar, args.reader.boundary(), domain, options);
+  const methods::NeighbourhoodEm method(exemplar, args.reader.boundary(), domain, options);
   out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
       << method.exemplar().samples.size() << " samples, radius "
       << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';

@@ -1,0 +1,182 @@
+#include "libshapeproc/methods/davison2018/growth_state.hpp"
+
+#include <algorithm>
+
+#include "libshapeproc/geometry/overlap_depth.hpp"
+#include "libshapeproc/methods/common/neighbourhood_search.hpp"
+
+namespace shapeproc::methods {
+
+namespace {
+
+constexpr double kTouching = 1e-9;  // relative slack of "circles touch"
+
+double largest(const std::vector<double>& values) {
+  double m = 0.0;
+  for (const double v : values) m = std::max(m, v);
+  return m;
+}
+
+}  // namespace
+
+GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain& domain)
+    : exemplar_(exemplar),
+      domain_(domain),
+      largest_radius_(largest(exemplar.radius)),
+      reach_(std::max(
+          {largest(exemplar.reach), 2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius)})),
+      contact_(std::max(2.0 * largest_radius_, 2.0 * largest(exemplar.shape_radius))),
+      elements_(domain.box(), domain.dimension(), reach_, domain.periodic()),
+      // No finer than a quarter neighbourhood radius: tiny bounding radii must not make a 3D grid
+      // of 256³ cells.
+      contacts_(domain.box(), domain.dimension(), std::max(contact_, 0.25 * reach_),
+                domain.periodic()),
+      free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
+
+bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
+
+bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
+  bool hit = false;
+  contacts_.for_each_candidate(p, [&](int o) {
+    if (hit || o == skip) return;
+    // Circles that touch do not overlap: bounding radii are half the nearest distance, so that
+    // an exemplar's nearest pairs touch exactly, and rounding must not part them.
+    const double reach =
+        (radius + exemplar_.radius[static_cast<std::size_t>(source(o))]) * (1.0 - kTouching);
+    hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
+  });
+  return hit;
+}
+
+bool GrowthState::collides(int source, const Vec3& p, int skip) const {
+  if (!exemplar_.exact)
+    return overlaps(p, exemplar_.radius[static_cast<std::size_t>(source)], skip);
+  const auto& elements = exemplar_.em.scene.elements;
+  const auto shape_of = [&](int sample) {
+    const int element = exemplar_.em.samples.element[static_cast<std::size_t>(sample)];
+    return static_cast<std::size_t>(elements[static_cast<std::size_t>(element)].shape);
+  };
+  const std::size_t shape = shape_of(source);
+  bool hit = false;
+  contacts_.for_each_candidate(p, [&](int o) {
+    if (hit || o == skip) return;
+    const auto other =
+        static_cast<std::size_t>(elements[static_cast<std::size_t>(this->source(o))].shape);
+    const Vec3 offset = domain_.minimum_image(position(o) - p);
+    const double reach = exemplar_.shape_radius[shape] + exemplar_.shape_radius[other];
+    if (offset.squaredNorm() >= reach * reach) return;
+    hit =
+        domain_.dimension() == 3
+            ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset) > 0
+            : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
+                                      geometry::Vec2(offset.x(), offset.y())) > 0;
+  });
+  return hit;
+}
+
+bool GrowthState::on_free_point(const Vec3& p, double radius) const {
+  bool hit = false;
+  free_.for_each_candidate(p, [&](int i) {
+    const FreePoint& v = points_[static_cast<std::size_t>(i)];
+    hit = hit || (v.alive && domain_.minimum_image(v.position - p).squaredNorm() <
+                                 (v.radius + radius) * (v.radius + radius));
+  });
+  return hit;
+}
+
+bool GrowthState::free_point_within(const Vec3& p, double distance) const {
+  bool hit = false;
+  free_.for_each_candidate(p, [&](int i) {
+    const FreePoint& v = points_[static_cast<std::size_t>(i)];
+    hit = hit ||
+          (v.alive && domain_.minimum_image(v.position - p).squaredNorm() < distance * distance);
+  });
+  return hit;
+}
+
+int GrowthState::add(int source, const Vec3& p) {
+  const int e = static_cast<int>(position_.size());
+  position_.push_back(domain_.wrap(p));
+  source_.push_back(source);
+  match_.push_back(source);
+  owned_.emplace_back();
+  elements_.insert(e, position_.back());
+  contacts_.insert(e, position_.back());
+  consume_free_points(e);
+  add_free_points(e);
+  return e;
+}
+
+void GrowthState::move(int e, const Vec3& p) {
+  const auto i = static_cast<std::size_t>(e);
+  elements_.remove(e, position_[i]);
+  contacts_.remove(e, position_[i]);
+  position_[i] = domain_.wrap(p);
+  elements_.insert(e, position_[i]);
+  contacts_.insert(e, position_[i]);
+  for (const int v : owned_[i]) kill(static_cast<std::size_t>(v));
+  owned_[i].clear();
+  consume_free_points(e);
+  add_free_points(e);
+}
+
+void GrowthState::kill(std::size_t point) {
+  if (!points_[point].alive) return;
+  points_[point].alive = false;
+  --alive_;
+  free_.remove(static_cast<int>(point), points_[point].position);  // queries skip the dead
+}
+
+void GrowthState::add_free_points(int e) {
+  const auto i = static_cast<std::size_t>(e);
+  for (const FreeSpaceVector& v : exemplar_.free[static_cast<std::size_t>(source(e))]) {
+    const Vec3 q = domain_.wrap(position_[i] + v.offset);
+    if (!in_domain(q) || overlaps(q, v.radius)) continue;
+    const int id = static_cast<int>(points_.size());
+    points_.push_back({q, v.radius, e, true});
+    ++alive_;
+    free_.insert(id, q);
+    owned_[i].push_back(id);
+  }
+}
+
+void GrowthState::consume_free_points(int e) {
+  const Vec3& p = position(e);
+  const double r = exemplar_.radius[static_cast<std::size_t>(source(e))];
+  std::vector<int> covered;  // killed after the walk, which removes them from the grid
+  free_.for_each_candidate(p, [&](int id) {
+    const FreePoint& v = points_[static_cast<std::size_t>(id)];
+    if (v.alive &&
+        domain_.minimum_image(v.position - p).squaredNorm() < (v.radius + r) * (v.radius + r))
+      covered.push_back(id);
+  });
+  for (const int id : covered) kill(static_cast<std::size_t>(id));
+}
+
+geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
+  geometry::Neighbourhood out;
+  const double r2 = exemplar_.reach_of(source(e)) * exemplar_.reach_of(source(e));
+  elements_.for_each_candidate(position(e), [&](int o) {
+    if (o == e) return;
+    const Vec3 offset = domain_.minimum_image(position(o) - position(e));
+    if (offset.squaredNorm() >= r2) return;
+    const auto s = static_cast<std::size_t>(source(o));
+    out.push_back({offset, exemplar_.em.samples.key[s], o, exemplar_.em.sample_attribute[s]});
+  });
+  std::sort(out.begin(), out.end(), [](const geometry::Neighbour& a, const geometry::Neighbour& b) {
+    return a.element < b.element;
+  });
+  return out;
+}
+
+std::vector<int> GrowthState::elements_within(const Vec3& p, double distance) const {
+  std::vector<int> out;
+  elements_.for_each_candidate(p, [&](int o) {
+    if (domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance)
+      out.push_back(o);
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace shapeproc::methods

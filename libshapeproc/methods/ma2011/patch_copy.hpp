@@ -1,0 +1,35 @@
+// Initialisation by patch copy (Ma et al. 2011, §4.1): the output is cut into square (cubic)
+// cells of the neighbourhood's size 2r, and each cell, in scanline order, receives the whole
+// elements of a patch of that size taken from the exemplar (anywhere on a torus, inside the
+// window otherwise), turned by the orientation field at the cell's centre.
+//
+// Ma et al. copy patches at random, which on regular exemplars leaves seams out of phase that the
+// EM cannot close. Here, as image quilting picks its blocks, the patch copied is the best of
+// kPatchCandidates patches at random places, each also tried moved by the mean offset its seam's
+// pairs ask for. A patch's seam cost is eq. 1 on both sides of the seam: its samples'
+// neighbourhoods among the elements already placed, and the placed samples' neighbourhoods among
+// its own, with r² for every exemplar neighbour that would fall on the other side without a
+// partner (eq. 1 alone would let a seam open a gap, or a sparse patch win, for free). Elements
+// nearer than half the exemplar's smallest gap to one already placed are left out.
+#pragma once
+
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/methods/common/em_exemplar.hpp"
+#include "libshapeproc/methods/common/orientation_field.hpp"
+#include "libshapeproc/methods/ma2011/em_initialisation.hpp"
+
+namespace shapeproc::methods {
+
+inline constexpr int kPatchCandidates = 16;
+
+// Fills `out` (empty on entry) by patch copy; `alpha` is eq. 1's attribute weight. With
+// `diverse`, a cell never takes the exemplar patch that continues a neighbouring cell's (the
+// same translation from the exemplar, modulo a seamless tile's period, within a quarter of its
+// mean nearest distance): without it the seam-closing move picks exactly that continuation and
+// a seamless tile comes out repeated.
+void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
+                const OrientationField& orientation, double alpha, core::Random& random,
+                InitialOutput& out, bool diverse = true);
+
+}  // namespace shapeproc::methods
