@@ -1,5 +1,5 @@
-// The data side of the log pseudo-likelihood (math note "Log pseudo-likelihood", "Edge
-// treatment"): the region whose points contribute, each exemplar element's statistic
+// The data side of the log pseudo-likelihood (docs/mathematics.md, "Maximum pseudo-likelihood"
+// and "Edge treatment"): the region whose points contribute, each exemplar element's statistic
 // t(z_n | z \ z_n), their sum over the elements inside the region, and the pairs observed in each
 // band.
 #pragma once

@@ -1,5 +1,5 @@
-// The log pseudo-likelihood of a pairwise-interaction process with quadrature (math note "Log
-// pseudo-likelihood"; Baddeley & Turner 2000):
+// The log pseudo-likelihood of a pairwise-interaction process with quadrature
+// (docs/mathematics.md, "Maximum pseudo-likelihood"; Baddeley & Turner 2000):
 //   LPL(θ) = Σ_n θ·t(z_n) − Σ_j w_j exp(θ·t(q_j)),
 // concave in θ, with gradient Σ_n t(z_n) − Σ_j w_j λ_j t_j and Hessian −Σ_j w_j λ_j t_j t_jᵀ.
 #pragma once

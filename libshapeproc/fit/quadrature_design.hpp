@@ -1,11 +1,11 @@
-// The quadrature side of the log pseudo-likelihood (math note "Quadrature"; Baddeley & Turner
-// 2000): a grid of cells tiling the fit region, each cell crossed with m shapes of S_c (all, or m
-// in rotation), each dummy integrated over its cell (quadrature_cell.hpp) or, with lines, along
-// its row (line_quadrature.hpp), with weight (1 − κ)|cell| / m; and the n_c data points of
-// category c with κ|W| / n_c each (κ = options.data_weight). The weights still sum to |W|,
-// every observed statistic has exposure, and the share does not shrink with the cells, so the
-// maximum has a limit as they are refined even on exemplars whose continuum LPL has no finite
-// maximum (docs/fit.md).
+// The quadrature side of the log pseudo-likelihood (docs/mathematics.md, "Maximum
+// pseudo-likelihood"; Baddeley & Turner 2000): a grid of cells tiling the fit region, each cell
+// crossed with m shapes of S_c (all, or m in rotation), each dummy integrated over its cell
+// (quadrature_cell.hpp) or, with lines, along its row (line_quadrature.hpp), with weight (1 −
+// κ)|cell| / m; and the n_c data points of category c with κ|W| / n_c each (κ =
+// options.data_weight). The weights still sum to |W|, every observed statistic has exposure, and
+// the share does not shrink with the cells, so the maximum has a limit as they are refined even on
+// exemplars whose continuum LPL has no finite maximum (docs/fit.md).
 #pragma once
 
 #include <vector>

@@ -1,6 +1,6 @@
-// Canonical directions and axis bins for the direction-dependent interaction (math note, "Pair
-// measurements"). A direction and its opposite share one axis bin, because the interaction is
-// symmetric in its two arguments.
+// Canonical directions and axis bins for the direction-dependent interaction
+// (docs/mathematics.md, "Pair measurements"). A direction and its opposite share one axis bin,
+// because the interaction is symmetric in its two arguments.
 //
 // 2D: D evenly spaced directions e_k at angles 2πk/D (D even; D = 1 means isotropic); a direction
 // goes to the nearest e_k and to axis k mod D/2. Angles are measured in the scene's frame (SVG's

@@ -29,9 +29,9 @@ inline Vec3 minimum_image(Vec3 offset, const Vec3& period) {
   return offset;
 }
 
-// How statistics treat the elements near an open window's edge (math note "Edge treatment"):
-// `none`: every element counts, its neighbourhood cut by the edge; `border`: only elements at
-// least the interaction range inside the window count, their neighbours anywhere in it;
+// How statistics treat the elements near an open window's edge (docs/mathematics.md, "Edge
+// treatment"): `none`: every element counts, its neighbourhood cut by the edge; `border`: only
+// elements at least the interaction range inside the window count, their neighbours anywhere in it;
 // `automatic` (metrics): border when enough elements are that far inside, else none. A torus
 // needs no treatment.
 enum class EdgeTreatment { automatic, none, border };

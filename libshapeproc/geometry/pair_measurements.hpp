@@ -1,7 +1,7 @@
-// Pair measurements between elements (paper §4; math note "Pair measurements"): the shortest
-// distance d(a, b) between proxy geometries and the relative orientation o(a, b), with their
-// comparison variants and periodic (minimum-image) forms. Built once for a scene's shape space,
-// queried many times by fitting, sampling and metrics.
+// Pair measurements between elements (paper §4; docs/mathematics.md, "Pair measurements"): the
+// shortest distance d(a, b) between proxy geometries and the relative orientation o(a, b), with
+// their comparison variants and periodic (minimum-image) forms. Built once for a scene's shape
+// space, queried many times by fitting, sampling and metrics.
 #pragma once
 
 #include <limits>

@@ -1,4 +1,4 @@
-// The shape-process model (paper §5; math note "Interaction function and density"):
+// The shape-process model (paper §5; docs/mathematics.md, "The density"):
 //   f(x) ∝ ∏_n β_{c_n} ∏_{n<m} Γ(x_n, x_m),
 // with, for the categories (c, c') of a pair and the axis bin i of its relative orientation,
 //   Γ = 0 if d < δ_{i,0} (hard core), γ_{i,k} if δ_{i,k−1} ≤ d < δ_{i,k} (k = 1..K), 1 if d ≥

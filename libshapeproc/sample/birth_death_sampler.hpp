@@ -1,6 +1,7 @@
 // Birth-death Metropolis-Hastings sampling of the shape process (Geyer & Møller 1994; paper §6.3;
-// math note "Birth-death Metropolis-Hastings"), with shift moves. From the empty configuration,
-// each step is with probability p_s a shift, otherwise with equal probability a birth or a death:
+// docs/mathematics.md, "Sampling: birth, death and shift"), with shift moves. From the empty
+// configuration, each step is with probability p_s a shift, otherwise with equal probability a
+// birth or a death:
 // - birth: u uniform in the domain D, category c uniform among the C categories, shape uniform in
 //   S_c; accepted with probability min(1, λ(ξ | x) |D| C / (n + 1));
 // - death: an element chosen uniformly; accepted with probability min(1, n / (|D| C λ(x_i | x
@@ -49,8 +50,8 @@ struct SamplerOptions {
   // When set, each observation is t of the elements in this region (and the pairs within it,
   // Configuration::statistics_in) followed by t(x) of the whole configuration: 2 × p values.
   geometry::Box3 observe_region;
-  // Border correction (math note "Edge treatment"): elements present from the start that are
-  // never removed or moved, and the region where births and shifts place elements' reference
+  // Border correction (docs/mathematics.md, "Edge treatment"): elements present from the start that
+  // are never removed or moved, and the region where births and shifts place elements' reference
   // positions (empty: the whole domain). The chain then samples the elements of the region given
   // the fixed ones; its statistics t(x) count both, the fixed part being constant.
   std::vector<geometry::Element> fixed;
