@@ -8,6 +8,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/model/model_edits.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/model_summary.hpp"
 
@@ -50,7 +51,7 @@ std::vector<std::size_t> parse_indices(const std::string& text, std::size_t coun
   return {static_cast<std::size_t>(values->front()) - first};
 }
 
-// PAIR:AXIS:INDEX=VALUE, applied by `apply(axis parameters, index, value)`.
+// PAIR:AXIS:INDEX=VALUE, applied by `apply(pair, axis, index, value)` to every index it names.
 template <class F>
 void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::string& option,
                const char* index_name, bool thresholds, F apply) {
@@ -64,12 +65,12 @@ void edit_axes(model::ShapeProcessModel& m, const std::string& edit, const std::
   }
   const double value = parse_value(edit.substr(equals + 1), option, edit);
   for (std::size_t p : parse_indices(parts[0], m.interactions.size(), 0, "pair", option, edit)) {
-    auto& axes = m.interactions[p].axes;
+    const auto& axes = m.interactions[p].axes;
     for (std::size_t a : parse_indices(parts[1], axes.size(), 0, "axis", option, edit)) {
       const std::size_t count = thresholds ? axes[a].thresholds.size() : axes[a].gammas.size();
       for (std::size_t k :
            parse_indices(parts[2], count, thresholds ? 0 : 1, index_name, option, edit))
-        apply(axes[a], k, value);
+        apply(p, a, k, value);
     }
   }
 }
@@ -83,43 +84,18 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
     throw core::UsageError("--scale-beta must be positive");
   if (!(args.scale_thresholds > 0 && std::isfinite(args.scale_thresholds)))
     throw core::UsageError("--scale-thresholds must be positive");
+  // The edits themselves are the library's (model/model_edits.hpp); this parses their options.
   std::vector<std::string> edits;
   if (args.isotropic) {
-    // One axis per pair: thresholds and γ averaged over the axes (γ arithmetically, so that a
-    // hard band stays a strong inhibition), directions set to 1.
-    for (model::PairInteraction& pair : m.interactions) {
-      model::AxisParameters one = pair.axes.front();
-      for (std::size_t a = 1; a < pair.axes.size(); ++a) {
-        if (pair.axes[a].thresholds.size() != one.thresholds.size()) {
-          throw core::UsageError("--isotropic: the axes of a pair have different numbers of bands");
-        }
-        for (std::size_t k = 0; k < one.thresholds.size(); ++k)
-          one.thresholds[k] += pair.axes[a].thresholds[k];
-        for (std::size_t k = 0; k < one.gammas.size(); ++k) one.gammas[k] += pair.axes[a].gammas[k];
-      }
-      const double axes = static_cast<double>(pair.axes.size());
-      for (double& t : one.thresholds) t /= axes;
-      for (double& g : one.gammas) g /= axes;
-      one.direction = geometry::Vec3::UnitX();
-      one.gamma_standard_errors.assign(one.gammas.size(), std::numeric_limits<double>::quiet_NaN());
-      one.status.assign(one.gammas.size(), model::ParameterStatus::fixed);
-      one.observed_pairs.clear();
-      pair.axes = {one};
-    }
-    m.measurement.directions = 1;
+    model::make_isotropic(m);
     edits.push_back("isotropic");
   }
   if (args.scale_beta != 1.0) {
-    for (auto& c : m.categories) {
-      c.beta *= args.scale_beta;
-      c.beta_standard_error *= args.scale_beta;
-    }
+    model::scale_intensities(m, args.scale_beta);
     edits.push_back("scale-beta " + core::format_number(args.scale_beta));
   }
   if (args.scale_thresholds != 1.0) {
-    for (auto& pair : m.interactions)
-      for (auto& axis : pair.axes)
-        for (double& t : axis.thresholds) t *= args.scale_thresholds;
+    model::scale_thresholds(m, args.scale_thresholds);
     edits.push_back("scale-thresholds " + core::format_number(args.scale_thresholds));
   }
   for (const std::string& edit : args.beta) {
@@ -133,25 +109,20 @@ int run_edit(const EditArguments& args, const std::vector<std::string>& argument
       if (m.categories[c].name == name) index = c;
     if (index == m.categories.size())
       index = parse_indices(name, m.categories.size(), 0, "category", "--beta", edit).front();
-    m.categories[index].beta = value;
-    m.categories[index].beta_standard_error = std::numeric_limits<double>::quiet_NaN();
-    m.categories[index].beta_status = model::ParameterStatus::fixed;
+    model::set_intensity(m, index, value);
     edits.push_back("beta " + edit);
   }
   for (const std::string& edit : args.gamma) {
     edit_axes(m, edit, "--gamma", "BAND", false,
-              [](model::AxisParameters& axis, std::size_t k, double value) {
-                axis.gammas[k] = value;
-                if (k < axis.status.size()) axis.status[k] = model::ParameterStatus::fixed;
-                if (k < axis.gamma_standard_errors.size())
-                  axis.gamma_standard_errors[k] = std::numeric_limits<double>::quiet_NaN();
+              [&](std::size_t pair, std::size_t axis, std::size_t band, double value) {
+                model::set_gamma(m, pair, axis, band, value);
               });
     edits.push_back("gamma " + edit);
   }
   for (const std::string& edit : args.threshold) {
     edit_axes(m, edit, "--threshold", "INDEX", true,
-              [](model::AxisParameters& axis, std::size_t k, double value) {
-                axis.thresholds[k] = value;
+              [&](std::size_t pair, std::size_t axis, std::size_t index, double value) {
+                model::set_threshold(m, pair, axis, index, value);
               });
     edits.push_back("threshold " + edit);
   }
