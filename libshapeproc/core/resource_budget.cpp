@@ -31,10 +31,12 @@ std::string format_bytes(double bytes) {
 void check_budget(const ResourceEstimate& estimate, const ResourceBudget& budget,
                   const std::string& what, const std::string& lower) {
   if (!(estimate.elements <= budget.max_elements)) {
-    throw UsageError(what + " would hold about " + format_general(estimate.elements, 3) +
-                     " elements (" + estimate.basis + "), more than --max-elements " +
-                     format_general(budget.max_elements, 6) + "; lower " + lower +
-                     " or raise --max-elements");
+    const std::string count = std::isfinite(estimate.elements)
+                                  ? "about " + format_general(estimate.elements, 3)
+                                  : std::string("an unbounded number of");
+    throw UsageError(what + " would hold " + count + " elements (" + estimate.basis +
+                     "), more than --max-elements " + format_general(budget.max_elements, 6) +
+                     "; lower " + lower + " or raise --max-elements");
   }
   if (!(estimate.bytes <= budget.max_memory)) {
     throw UsageError(what + " would need about " + format_bytes(estimate.bytes) + " of memory (" +

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 
 namespace shapeproc::model {
 
@@ -67,9 +68,9 @@ void scale_intensities(ShapeProcessModel& model, double factor) {
   check_factor("scale-beta", factor);
   for (const CategoryParameters& c : model.categories)
     if (!std::isfinite(c.beta * factor))
-      throw core::ArgumentError("scale-beta", "category '" + c.name + "': beta " +
-                                                  std::to_string(c.beta) + " times " +
-                                                  std::to_string(factor) + " is not finite");
+      throw core::ArgumentError(
+          "scale-beta", "category '" + c.name + "': beta " + core::format_general(c.beta, 6) +
+                            " times " + core::format_general(factor, 6) + " is not finite");
   for (CategoryParameters& c : model.categories) {
     c.beta *= factor;
     c.beta_standard_error *= factor;
