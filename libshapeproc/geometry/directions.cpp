@@ -45,6 +45,10 @@ DirectionBins::DirectionBins(int dimension, int directions)
     : dimension_(dimension), directions_(directions) {
   if (directions < 1)
     throw core::ArgumentError("directions", "need at least 1, got " + std::to_string(directions));
+  if (directions > kMaxDirections)
+    throw core::ArgumentError("directions", "at most " + std::to_string(kMaxDirections) +
+                                                " (an axis per half degree), got " +
+                                                std::to_string(directions));
   if (directions == 1) {
     axes_.push_back(Vec3::UnitX());
     return;

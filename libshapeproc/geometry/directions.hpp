@@ -24,7 +24,11 @@ inline int directions_or_default(int directions, int dimension) {
 
 class DirectionBins {
  public:
-  // Throws core::ArgumentError for D < 1, odd D > 1 in 2D, or D other than 1 and 12 in 3D.
+  // At most this many directions in 2D: an axis per half degree, far finer than any exemplar's
+  // pairs can fill (each axis needs pairs of its own).
+  static constexpr int kMaxDirections = 720;
+  // Throws core::ArgumentError for D < 1, odd D > 1 or D > kMaxDirections in 2D, or D other than
+  // 1 and 12 in 3D.
   DirectionBins(int dimension, int directions);
 
   int dimension() const { return dimension_; }
