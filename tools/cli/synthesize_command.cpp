@@ -223,6 +223,56 @@ int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>&
                          at_exemplar ? &exemplar : nullptr);
 }
 
+// The options of the other methods, each group remembered so that a method refuses the others'.
+void add_method_options(CLI::App& command, SynthesizeArguments& args) {
+  std::size_t before = command.get_options().size();
+  args.em.add_shared_to(command);
+  args.shared = options_since(command, before);
+  before = command.get_options().size();
+  args.em.add_to(command);
+  args.em_only = options_since(command, before);
+  before = command.get_options().size();
+  args.growth.add_to(command);
+  args.growth_only = options_since(command, before);
+  before = command.get_options().size();
+  args.em.add_orientation_to(command);
+  args.orientation = options_since(command, before);
+  before = command.get_options().size();
+  args.ijiri.add_to(command);
+  args.ijiri_only = options_since(command, before);
+  before = command.get_options().size();
+  args.growth.add_overlap_to(command);
+  args.growth_overlap = options_since(command, before);
+}
+
+// Options given for another method than --method are refused, naming the method they are for;
+// --model must be a new .json file.
+void check_method_options(const CLI::App& command, const SynthesizeArguments& args,
+                          const CLI::Option& start_from, const CLI::Option& start) {
+  const bool em = args.method == "ma-em", growth = args.method == "davison";
+  const bool hybrid = args.method == "hybrid", ijiri = args.method == "ijiri";
+  if (args.method != "shape-process" && !hybrid)
+    reject_options(command, args.fit_only, "shape-process or hybrid");
+  if (!hybrid && start_from.count() > 0)
+    throw core::UsageError("--start-from is for --method hybrid");
+  if (hybrid && start.count() > 0)
+    throw core::UsageError(
+        "--start is for --method shape-process (a hybrid starts from --start-from's output)");
+  if (!em) reject_options(command, args.em_only, "ma-em");
+  if (!growth) reject_options(command, args.growth_only, "davison");
+  if (!ijiri) reject_options(command, args.ijiri_only, "ijiri");
+  if (!em && !ijiri) reject_options(command, args.orientation, "ma-em or ijiri");
+  if (!growth && !ijiri) reject_options(command, args.growth_overlap, "davison or ijiri");
+  if (!em && !growth) reject_options(command, args.shared, "ma-em or davison");
+  if (!args.model.empty() && io::extension_of(args.model) != "json")
+    throw core::UsageError(args.model + ": the model is written as .json");
+  std::error_code missing;  // a name the system refuses (too long) is no existing file
+  if (!args.model.empty() && !args.sample.force && std::filesystem::exists(args.model, missing))
+    throw core::UsageError(args.model +
+                           " exists: give --force to overwrite, or another "
+                           "--model");
+}
+
 }  // namespace
 
 void add_synthesize_command(CLI::App& app, Action& action,
@@ -250,7 +300,7 @@ void add_synthesize_command(CLI::App& app, Action& action,
                        "options)")
           ->check(CLI::IsMember({"ma-em", "davison", "ijiri"}))
           ->capture_default_str();
-  std::size_t before = command->get_options().size();
+  const std::size_t before = command->get_options().size();
   command->add_option("--model", args->model, "also write the fitted model (.json)");
   args->fit.add_to(*command);
   command
@@ -273,52 +323,12 @@ void add_synthesize_command(CLI::App& app, Action& action,
           ->check(CLI::IsMember({"auto", "exemplar", "empty"}))
           ->capture_default_str();
   args->fit_only = options_since(*command, before);
-  before = command->get_options().size();
-  args->em.add_shared_to(*command);
-  args->shared = options_since(*command, before);
-  before = command->get_options().size();
-  args->em.add_to(*command);
-  args->em_only = options_since(*command, before);
-  before = command->get_options().size();
-  args->growth.add_to(*command);
-  args->growth_only = options_since(*command, before);
-  before = command->get_options().size();
-  args->em.add_orientation_to(*command);
-  args->orientation = options_since(*command, before);
-  before = command->get_options().size();
-  args->ijiri.add_to(*command);
-  args->ijiri_only = options_since(*command, before);
-  before = command->get_options().size();
-  args->growth.add_overlap_to(*command);
-  args->growth_overlap = options_since(*command, before);
+  add_method_options(*command, *args);
   args->reader.add_to(*command);
   args->sample.add_to(*command, /*sampler_options=*/false, /*exemplar_multiples=*/true);
   command->callback([&action, args, arguments, command, start_from, start] {
     action = [args, arguments, command, start_from, start](std::ostream& out) {
-      const bool em = args->method == "ma-em", growth = args->method == "davison";
-      const bool hybrid = args->method == "hybrid";
-      if (args->method != "shape-process" && !hybrid)
-        reject_options(*command, args->fit_only, "shape-process or hybrid");
-      if (!hybrid && start_from->count() > 0)
-        throw core::UsageError("--start-from is for --method hybrid");
-      if (hybrid && start->count() > 0)
-        throw core::UsageError(
-            "--start is for --method shape-process (a hybrid starts from --start-from's output)");
-      if (!em) reject_options(*command, args->em_only, "ma-em");
-      if (!growth) reject_options(*command, args->growth_only, "davison");
-      const bool ijiri = args->method == "ijiri";
-      if (!ijiri) reject_options(*command, args->ijiri_only, "ijiri");
-      if (!em && !ijiri) reject_options(*command, args->orientation, "ma-em or ijiri");
-      if (!growth && !ijiri) reject_options(*command, args->growth_overlap, "davison or ijiri");
-      if (!em && !growth) reject_options(*command, args->shared, "ma-em or davison");
-      if (!args->model.empty() && io::extension_of(args->model) != "json")
-        throw core::UsageError(args->model + ": the model is written as .json");
-      std::error_code missing;  // a name the system refuses (too long) is no existing file
-      if (!args->model.empty() && !args->sample.force &&
-          std::filesystem::exists(args->model, missing))
-        throw core::UsageError(args->model +
-                               " exists: give --force to overwrite, or another "
-                               "--model");
+      check_method_options(*command, *args, *start_from, *start);
       args->sample.check(args->output);
       args->reader.options();
       synthesis::SynthesisRecord record;
@@ -326,9 +336,9 @@ void add_synthesize_command(CLI::App& app, Action& action,
       record.arguments = arguments;
       record.inputs = {{"exemplar", args->input}};
       if (args->method == "tile") return run_tile(*args, std::move(record), out);
-      if (ijiri) return run_ijiri(*args, std::move(record), out);
-      if (growth) return run_davison(*args, std::move(record), out);
-      if (em) return run_em(*args, std::move(record), out);
+      if (args->method == "ijiri") return run_ijiri(*args, std::move(record), out);
+      if (args->method == "davison") return run_davison(*args, std::move(record), out);
+      if (args->method == "ma-em") return run_em(*args, std::move(record), out);
       return run_shape_process(*args, arguments, std::move(record), out);
     };
   });
