@@ -18,7 +18,7 @@ exemplar=data/svg/two-kinds.svg
 # The main job: fit the exemplar, then sample an output of four times its area (twice each side);
 # the seed and every parameter are recorded in the SVG.
 ./build/tools/shapeproc synthesize "$exemplar" --category-by fill --model out/two-kinds-model.json \
-  --size 440,440 --seed 1 --force -o out/two-kinds-synthesis.svg --png out/two-kinds-synthesis.png
+  --size 2W,2H --seed 1 --force -o out/two-kinds-synthesis.svg --png out/two-kinds-synthesis.png
 ./build/tools/shapeproc show out/two-kinds-model.json --plot out/two-kinds-interaction.svg
 # Exemplar and output side by side, with the metrics: open out/report/index.html.
 ./build/tools/shapeproc report "$exemplar" out/two-kinds-synthesis.svg --category-by fill \
