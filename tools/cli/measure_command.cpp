@@ -9,6 +9,7 @@
 #include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/geometry/directions.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/io/pair_csv.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "tools/cli/commands.hpp"
@@ -30,18 +31,6 @@ struct MeasureArguments {
   std::string proxy_out;
   ReaderFlags reader;
 };
-
-void write_pairs(std::ostream& out, int dimension, const std::vector<geometry::PairRecord>& pairs) {
-  out << (dimension == 3 ? "i,j,distance,ox,oy,oz,axis\n" : "i,j,distance,ox,oy,axis\n");
-  for (const geometry::PairRecord& p : pairs) {
-    const geometry::Measurement& m = p.measurement;
-    out << p.i << ',' << p.j << ',' << core::format_number(m.distance) << ','
-        << core::format_number(m.direction.x()) << ',' << core::format_number(m.direction.y())
-        << ',';
-    if (dimension == 3) out << core::format_number(m.direction.z()) << ',';
-    out << m.axis << '\n';
-  }
-}
 
 int run_measure(const MeasureArguments& args, const std::vector<std::string>& arguments,
                 std::ostream& out) {
@@ -93,14 +82,11 @@ int run_measure(const MeasureArguments& args, const std::vector<std::string>& ar
 
   std::ostream& report = args.output.empty() ? std::cerr : out;
   if (args.output.empty()) {
-    write_pairs(out, scene.dimension, pairs);
+    io::write_pairs_csv(out, scene.dimension, pairs);
   } else {
     if (io::extension_of(args.output) != "csv")
       throw core::UsageError(args.output + ": pairs are written as .csv");
-    core::write_file_atomically(
-        args.output, [&](std::ostream& file) { write_pairs(file, scene.dimension, pairs); });
-    core::write_file_atomically(args.output + ".json",
-                                [&](std::ostream& file) { file << provenance.json << '\n'; });
+    io::write_pairs_csv(args.output, scene.dimension, pairs, provenance);
   }
   const geometry::ProxyStatistics& stats = measurer->statistics();
   const char* unit = scene.dimension == 2 ? "segments" : "triangles";
