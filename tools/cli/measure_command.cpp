@@ -4,7 +4,6 @@
 #include <memory>
 #include <sstream>
 
-#include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/geometry/directions.hpp"
