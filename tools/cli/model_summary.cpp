@@ -17,7 +17,8 @@ namespace {
 
 std::string g(double v, int digits = 4) { return core::format_general(v, digits); }
 
-std::string direction_text(const geometry::Vec3& d, int dimension) {
+// An axis as `show` names it: its angle in 2D, its components in 3D.
+std::string direction_degrees(const geometry::Vec3& d, int dimension) {
   if (dimension == 2) return g(std::atan2(d.y(), d.x()) * 180 / core::kPi, 3) + " deg";
   return "(" + g(d.x(), 2) + ", " + g(d.y(), 2) + ", " + g(d.z(), 2) + ")";
 }
@@ -129,8 +130,9 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
         << "  (gamma ± se (exemplar pairs in the band); hard core below d0)\n";
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
       const model::AxisParameters& a = pair.axes[i];
-      out << "  axis " << i << "  " << std::setw(9) << direction_text(a.direction, model.dimension)
-          << "  d0 " << std::setw(8) << g(a.thresholds.front());
+      out << "  axis " << i << "  " << std::setw(9)
+          << direction_degrees(a.direction, model.dimension) << "  d0 " << std::setw(8)
+          << g(a.thresholds.front());
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
         out << "  | " << k + 1 << " [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1])
             << "): " << gamma_text(a, k);

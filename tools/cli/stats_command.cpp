@@ -38,7 +38,8 @@ nlohmann::json cdf_json(const metrics::Distribution& d, double range, int points
   return {{"r", r}, {"F", f}, {"samples", d.samples}, {"mean", number(d.mean())}};
 }
 
-std::string direction_text(const geometry::Vec3& v, int dimension) {
+// An axis as `stats` tables it: its components to two decimals.
+std::string direction_components(const geometry::Vec3& v, int dimension) {
   std::ostringstream s;
   s << '(' << format_fixed(v.x(), 2) << ", " << format_fixed(v.y(), 2);
   if (dimension == 3) s << ", " << format_fixed(v.z(), 2);
@@ -123,7 +124,7 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
   };
   row("all", "", s.all, e.comparison ? &e.comparison->all : nullptr);
   for (std::size_t k = 0; k < s.axes.size(); ++k) {
-    row(std::to_string(k), direction_text(s.axes[k].direction, s.dimension), s.axes[k],
+    row(std::to_string(k), direction_components(s.axes[k].direction, s.dimension), s.axes[k],
         e.comparison ? &e.comparison->axes[k] : nullptr);
   }
   if (e.comparison) {
