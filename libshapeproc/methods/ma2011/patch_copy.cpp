@@ -134,150 +134,204 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
   return seam;
 }
 
+// The output's cells filled one by one (patch_copy): the grids of what is placed, and each filled
+// cell's translation from the exemplar.
+class PatchCopy {
+ public:
+  PatchCopy(const EmExemplar& exemplar, const geometry::Domain& domain, double alpha,
+            InitialOutput& out, bool diverse)
+      : exemplar_(exemplar),
+        domain_(domain),
+        alpha_(alpha),
+        out_(out),
+        diverse_(diverse),
+        dim_(domain.dimension()),
+        window_min_(exemplar.scene.window.min()),
+        period_(exemplar.scene.window.sizes()),
+        wraps_(exemplar.boundary == geometry::Boundary::torus),
+        grid_(domain.box(), dim_, exemplar.radius, domain.periodic()),
+        gap_(0.5 * smallest_gap(exemplar)),
+        elements_(domain.box(), dim_, exemplar.radius, domain.periodic()) {
+    for (int a = 0; a < dim_; ++a) {
+      const double side =
+          wraps_ ? 2.0 * exemplar.radius : std::min(2.0 * exemplar.radius, period_[a]);
+      cell_[a] = side;
+      counts_[a] = std::max(1, static_cast<int>(std::ceil(domain.sizes()[a] / side - 1e-9)));
+    }
+  }
+
+  const Eigen::Vector3i& counts() const { return counts_; }
+
+  // Fills the cell at `at` with the best of the candidate patches.
+  void fill(const Eigen::Vector3i& at, const OrientationField& orientation, core::Random& random);
+
+ private:
+  // The patch without its elements nearer to a placed one than half the exemplar's smallest gap
+  // (the patches' seams overlap when they are moved).
+  Placement uncrowded(Placement patch) const;
+  // Whether a cell's translation continues a neighbouring cell's (the diversity control).
+  bool continues_neighbour(const Eigen::Vector3i& at, const Vec3& shift) const;
+  // The output samples within the exemplar's radius of the cell.
+  std::vector<int> bordering(const Vec3& lo, const Vec3& extent) const;
+  // Places the chosen patch.
+  void place(const Placement& patch, double radians);
+
+  const EmExemplar& exemplar_;
+  const geometry::Domain& domain_;
+  const double alpha_;
+  InitialOutput& out_;
+  const bool diverse_;
+  const int dim_;
+  const Vec3 window_min_, period_;
+  const bool wraps_;
+  Vec3 cell_ = Vec3::Ones();
+  Eigen::Vector3i counts_ = Eigen::Vector3i::Ones();
+  geometry::NeighbourGrid grid_;  // the output's samples
+  const double gap_;
+  geometry::NeighbourGrid elements_;  // the elements placed
+  std::vector<Vec3> placed_;
+  std::vector<std::pair<Eigen::Vector3i, Vec3>> shifts_;
+};
+
+Placement PatchCopy::uncrowded(Placement patch) const {
+  patch.erase(
+      std::remove_if(
+          patch.begin(), patch.end(),
+          [&](const std::pair<int, Vec3>& e) {
+            bool crowded = false;
+            elements_.for_each_candidate(e.second, [&](int id) {
+              crowded =
+                  crowded ||
+                  domain_.minimum_image(placed_[static_cast<std::size_t>(id)] - e.second).norm() <
+                      gap_;
+            });
+            return crowded;
+          }),
+      patch.end());
+  return patch;
+}
+
+bool PatchCopy::continues_neighbour(const Eigen::Vector3i& at, const Vec3& shift) const {
+  if (!diverse_) return false;
+  for (const auto& [other, s] : shifts_) {
+    if ((other - at).cwiseAbs().maxCoeff() > 1) continue;
+    if (geometry::minimum_image(s - shift, exemplar_.tile_period).norm() < 0.25 * exemplar_.spacing)
+      return true;
+  }
+  return false;
+}
+
+std::vector<int> PatchCopy::bordering(const Vec3& lo, const Vec3& extent) const {
+  std::vector<int> out;
+  const Vec3 centre = lo + 0.5 * extent;
+  for (std::size_t s = 0; s < out_.output.samples.size(); ++s) {
+    const Vec3 t = domain_.minimum_image(out_.output.samples.positions[s] - centre);
+    bool near_cell = true;
+    for (int a = 0; a < dim_; ++a)
+      near_cell = near_cell && std::abs(t[a]) < 0.5 * extent[a] + exemplar_.radius;
+    if (near_cell) out.push_back(static_cast<int>(s));
+  }
+  return out;
+}
+
+void PatchCopy::place(const Placement& patch, double radians) {
+  for (const auto& [element, position] : patch) {
+    elements_.insert(static_cast<int>(placed_.size()), position);
+    placed_.push_back(position);
+    const std::size_t before = out_.output.samples.size();
+    out_.add(exemplar_, element, position, radians);
+    for (std::size_t s = before; s < out_.output.samples.size(); ++s)
+      grid_.insert(static_cast<int>(s), domain_.wrap(out_.output.samples.positions[s]));
+  }
+}
+
+void PatchCopy::fill(const Eigen::Vector3i& at, const OrientationField& orientation,
+                     core::Random& random) {
+  Vec3 lo = Vec3::Zero(), extent = Vec3::Zero();
+  for (int a = 0; a < dim_; ++a) {
+    lo[a] = domain_.box().min()[a] + at[a] * cell_[a];
+    extent[a] = std::min(cell_[a], domain_.box().max()[a] - lo[a]);
+  }
+  const double radians = orientation.angle_at(lo + 0.5 * extent);
+  // Whether a place lies in a cell filled before this one.
+  const int current = (at.z() * counts_.y() + at.y()) * counts_.x() + at.x();
+  const auto filled = [&](const Vec3& p) {
+    if (!domain_.contains(p)) return false;
+    int index = 0;
+    for (int a = dim_ - 1; a >= 0; --a) {
+      const int c =
+          std::clamp(static_cast<int>(std::floor((p[a] - domain_.box().min()[a]) / cell_[a])), 0,
+                     counts_[a] - 1);
+      index = index * counts_[a] + c;
+    }
+    return index < current;
+  };
+  // Whether a place lies in this cell.
+  const auto in_cell = [&](const Vec3& p) {
+    for (int a = 0; a < dim_; ++a) {
+      double t = p[a] - lo[a];
+      if (domain_.periodic()) {
+        const double side = domain_.sizes()[a];
+        t -= side * std::floor(t / side);
+      }
+      if (!(t >= 0.0 && t < extent[a])) return false;
+    }
+    return true;
+  };
+  const std::vector<int> near = bordering(lo, extent);
+  Placement best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  Vec3 best_shift = Vec3::Zero();
+  const bool first_cell = out_.output.elements() == 0;
+  for (int c = 0; c < (first_cell ? 1 : kPatchCandidates); ++c) {
+    Vec3 origin = Vec3::Zero();
+    for (int a = 0; a < dim_; ++a)
+      origin[a] = wraps_ ? window_min_[a] + random.uniform() * period_[a]
+                         : window_min_[a] + random.uniform() * std::max(0.0, period_[a] - cell_[a]);
+    Placement patch = uncrowded(patch_at(exemplar_, domain_, origin, lo, extent, radians));
+    if (first_cell) {
+      best = std::move(patch);
+      best_shift = lo - origin;
+      break;
+    }
+    // The patch as drawn, and moved to close its seam.
+    const Seam seam =
+        seam_cost(exemplar_, domain_, out_, grid_, patch, radians, alpha_, filled, near, in_cell);
+    // The same cell filled from the exemplar patch moved the other way, so that its elements
+    // move by the shift and the cell stays covered.
+    Vec3 moved_origin = origin - turn_about_z(seam.shift, -radians);
+    for (int a = 0; a < dim_ && !wraps_; ++a)
+      moved_origin[a] = std::clamp(moved_origin[a], window_min_[a],
+                                   window_min_[a] + std::max(0.0, period_[a] - cell_[a]));
+    Placement moved = uncrowded(patch_at(exemplar_, domain_, moved_origin, lo, extent, radians));
+    const double moved_cost =
+        seam_cost(exemplar_, domain_, out_, grid_, moved, radians, alpha_, filled, near, in_cell)
+            .cost;
+    if (seam.cost < best_cost && !continues_neighbour(at, lo - origin)) {
+      best_cost = seam.cost;
+      best = std::move(patch);
+      best_shift = lo - origin;
+    }
+    if (moved_cost < best_cost && !continues_neighbour(at, lo - moved_origin)) {
+      best_cost = moved_cost;
+      best = std::move(moved);
+      best_shift = lo - moved_origin;
+    }
+  }
+  shifts_.emplace_back(at, best_shift);
+  place(best, radians);
+}
+
 }  // namespace
 
 void patch_copy(const EmExemplar& exemplar, const geometry::Domain& domain,
                 const OrientationField& orientation, double alpha, core::Random& random,
                 InitialOutput& out, bool diverse) {
-  const int dim = domain.dimension();
-  const Vec3 window_min = exemplar.scene.window.min(), period = exemplar.scene.window.sizes();
-  const bool wraps = exemplar.boundary == geometry::Boundary::torus;
-  Vec3 cell = Vec3::Ones();
-  Eigen::Vector3i counts = Eigen::Vector3i::Ones();
-  for (int a = 0; a < dim; ++a) {
-    const double side = wraps ? 2.0 * exemplar.radius : std::min(2.0 * exemplar.radius, period[a]);
-    cell[a] = side;
-    counts[a] = std::max(1, static_cast<int>(std::ceil(domain.sizes()[a] / side - 1e-9)));
-  }
-  geometry::NeighbourGrid grid(domain.box(), dim, exemplar.radius, domain.periodic());
-  // Elements already placed: a patch's element nearer to one than half the exemplar's smallest
-  // gap is left out (the patches' seams overlap when they are moved).
-  const double gap = 0.5 * smallest_gap(exemplar);
-  geometry::NeighbourGrid elements(domain.box(), dim, exemplar.radius, domain.periodic());
-  std::vector<Vec3> placed;
-  const auto uncrowded = [&](Placement patch) {
-    patch.erase(
-        std::remove_if(
-            patch.begin(), patch.end(),
-            [&](const std::pair<int, Vec3>& e) {
-              bool crowded = false;
-              elements.for_each_candidate(e.second, [&](int id) {
-                crowded =
-                    crowded ||
-                    domain.minimum_image(placed[static_cast<std::size_t>(id)] - e.second).norm() <
-                        gap;
-              });
-              return crowded;
-            }),
-        patch.end());
-    return patch;
-  };
-  // Each filled cell's translation from the exemplar (output minus exemplar position).
-  std::vector<std::pair<Eigen::Vector3i, Vec3>> shifts;
-  const auto continues_neighbour = [&](const Eigen::Vector3i& at, const Vec3& shift) {
-    if (!diverse) return false;
-    for (const auto& [other, s] : shifts) {
-      if ((other - at).cwiseAbs().maxCoeff() > 1) continue;
-      if (geometry::minimum_image(s - shift, exemplar.tile_period).norm() < 0.25 * exemplar.spacing)
-        return true;
-    }
-    return false;
-  };
+  PatchCopy copy(exemplar, domain, alpha, out, diverse);
+  const Eigen::Vector3i& counts = copy.counts();
   for (int k = 0; k < counts.z(); ++k)
     for (int j = 0; j < counts.y(); ++j)
-      for (int i = 0; i < counts.x(); ++i) {
-        const Eigen::Vector3i at(i, j, k);
-        Vec3 lo = Vec3::Zero(), extent = Vec3::Zero();
-        for (int a = 0; a < dim; ++a) {
-          lo[a] = domain.box().min()[a] + at[a] * cell[a];
-          extent[a] = std::min(cell[a], domain.box().max()[a] - lo[a]);
-        }
-        const double radians = orientation.angle_at(lo + 0.5 * extent);
-        // Whether a place lies in a cell filled before this one.
-        const int current = (k * counts.y() + j) * counts.x() + i;
-        const auto filled = [&](const Vec3& p) {
-          if (!domain.contains(p)) return false;
-          int index = 0;
-          for (int a = dim - 1; a >= 0; --a) {
-            const int c =
-                std::clamp(static_cast<int>(std::floor((p[a] - domain.box().min()[a]) / cell[a])),
-                           0, counts[a] - 1);
-            index = index * counts[a] + c;
-          }
-          return index < current;
-        };
-        // Whether a place lies in this cell, and the placed samples within r of it.
-        const auto in_cell = [&](const Vec3& p) {
-          for (int a = 0; a < dim; ++a) {
-            double t = p[a] - lo[a];
-            if (domain.periodic()) {
-              const double side = domain.sizes()[a];
-              t -= side * std::floor(t / side);
-            }
-            if (!(t >= 0.0 && t < extent[a])) return false;
-          }
-          return true;
-        };
-        std::vector<int> bordering;
-        const Vec3 centre = lo + 0.5 * extent;
-        for (std::size_t s = 0; s < out.output.samples.size(); ++s) {
-          const Vec3 t = domain.minimum_image(out.output.samples.positions[s] - centre);
-          bool near_cell = true;
-          for (int a = 0; a < dim; ++a)
-            near_cell = near_cell && std::abs(t[a]) < 0.5 * extent[a] + exemplar.radius;
-          if (near_cell) bordering.push_back(static_cast<int>(s));
-        }
-        Placement best;
-        double best_cost = std::numeric_limits<double>::infinity();
-        Vec3 best_shift = Vec3::Zero();
-        const bool first_cell = out.output.elements() == 0;
-        for (int c = 0; c < (first_cell ? 1 : kPatchCandidates); ++c) {
-          Vec3 origin = Vec3::Zero();
-          for (int a = 0; a < dim; ++a)
-            origin[a] = wraps
-                            ? window_min[a] + random.uniform() * period[a]
-                            : window_min[a] + random.uniform() * std::max(0.0, period[a] - cell[a]);
-          Placement patch = uncrowded(patch_at(exemplar, domain, origin, lo, extent, radians));
-          if (first_cell) {
-            best = std::move(patch);
-            best_shift = lo - origin;
-            break;
-          }
-          // The patch as drawn, and moved to close its seam.
-          const Seam seam = seam_cost(exemplar, domain, out, grid, patch, radians, alpha, filled,
-                                      bordering, in_cell);
-          // The same cell filled from the exemplar patch moved the other way, so that its
-          // elements move by the shift and the cell stays covered.
-          Vec3 moved_origin = origin - turn_about_z(seam.shift, -radians);
-          for (int a = 0; a < dim && !wraps; ++a)
-            moved_origin[a] = std::clamp(moved_origin[a], window_min[a],
-                                         window_min[a] + std::max(0.0, period[a] - cell[a]));
-          Placement moved =
-              uncrowded(patch_at(exemplar, domain, moved_origin, lo, extent, radians));
-          const double moved_cost = seam_cost(exemplar, domain, out, grid, moved, radians, alpha,
-                                              filled, bordering, in_cell)
-                                        .cost;
-          if (seam.cost < best_cost && !continues_neighbour(at, lo - origin)) {
-            best_cost = seam.cost;
-            best = std::move(patch);
-            best_shift = lo - origin;
-          }
-          if (moved_cost < best_cost && !continues_neighbour(at, lo - moved_origin)) {
-            best_cost = moved_cost;
-            best = std::move(moved);
-            best_shift = lo - moved_origin;
-          }
-        }
-        shifts.emplace_back(at, best_shift);
-        for (const auto& [element, position] : best) {
-          elements.insert(static_cast<int>(placed.size()), position);
-          placed.push_back(position);
-          const std::size_t before = out.output.samples.size();
-          out.add(exemplar, element, position, radians);
-          for (std::size_t s = before; s < out.output.samples.size(); ++s)
-            grid.insert(static_cast<int>(s), domain.wrap(out.output.samples.positions[s]));
-        }
-      }
+      for (int i = 0; i < counts.x(); ++i) copy.fill(Eigen::Vector3i(i, j, k), orientation, random);
 }
 
 }  // namespace shapeproc::methods
