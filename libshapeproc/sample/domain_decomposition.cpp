@@ -199,6 +199,27 @@ bool decomposable(const geometry::Domain& domain, double reach) {
       .has_value();
 }
 
+namespace {
+
+// Cells of the preferred side at `density`, or as large as the domain allows (4 per axis on a
+// torus, 2 on an open domain), never under the reach.
+CellLayout plan_cells(const geometry::Domain& domain, const ChainTables& tables, double density) {
+  const double least_cells = domain.periodic() ? 4 : 2;
+  double fits = std::numeric_limits<double>::infinity();  // over the axes that can be cut
+  for (int axis = 0; axis < tables.dimension; ++axis) {
+    const double size = domain.box().sizes()[axis];
+    if (size >= least_cells * tables.reach) fits = std::min(fits, size / least_cells);
+  }
+  std::optional<CellLayout> layout = CellLayout::plan(
+      domain,
+      std::max(tables.reach, std::min(cell_side(tables.reach, density, tables.dimension), fits)));
+  if (!layout)
+    throw core::ArgumentError("sample", "the domain is too small to cut into cells of the reach");
+  return *layout;
+}
+
+}  // namespace
+
 SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainTables& tables,
                              const ChainRegion& whole, const SamplerOptions& options,
                              core::Random& random, const synthesis::ChainControl& control) {
@@ -210,19 +231,7 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   const int dimension = tables.dimension;
   const std::uint64_t run_seed = random.index(std::numeric_limits<std::uint64_t>::max());
   const double density = pilot_density(model, tables, whole, mix(run_seed, 0, 0, 0));
-  // Cells of the preferred side, or as large as the domain allows (4 per axis on a torus, 2 on an
-  // open domain), never under the reach.
-  const double least_cells = domain.periodic() ? 4 : 2;
-  double fits = std::numeric_limits<double>::infinity();  // over the axes that can be cut
-  for (int axis = 0; axis < dimension; ++axis) {
-    const double size = domain.box().sizes()[axis];
-    if (size >= least_cells * tables.reach) fits = std::min(fits, size / least_cells);
-  }
-  std::optional<CellLayout> layout = CellLayout::plan(
-      domain, std::max(tables.reach, std::min(cell_side(tables.reach, density, dimension), fits)));
-  if (!layout)
-    throw core::ArgumentError("sample", "the domain is too small to cut into cells of the reach");
-  Cells cells(tables, whole, *layout, density);
+  Cells cells(tables, whole, plan_cells(domain, tables, density), density);
   std::vector<MoveCounts> moves(static_cast<std::size_t>(cells.layout().count()));
   const auto shift_cells = [&] {
     geometry::Vec3 offset = geometry::Vec3::Zero();
