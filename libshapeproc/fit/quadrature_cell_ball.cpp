@@ -26,6 +26,88 @@ struct Neighbour {
   int band, axis;
 };
 
+// The axis of a pair seen from a cell's centre, and, where the cell may straddle the boundary
+// of its sector (2D, the axis not settled by the boxes), the axis across that boundary and the
+// distance to it (`margin`, −1 when there is none).
+struct PairAxis {
+  int axis;
+  int other_axis = -1;
+  double margin = -1.0;
+};
+
+PairAxis axis_in_cell(const geometry::PairMeasurer& measurer, int shape, int other_shape,
+                      const Vec3& offset, double corner, int dimension) {
+  PairAxis out{measurer.axis_from_boxes(shape, other_shape, offset, corner)};
+  if (out.axis >= 0) return out;
+  const Vec3 direction = measurer.direction(shape, other_shape, offset);
+  out.axis = measurer.bins().axis_of(direction);
+  if (dimension != 2 || measurer.bins().directions() <= 1) return out;
+  const double step = 2 * core::kPi / measurer.bins().directions();
+  const double angle = std::atan2(direction.y(), direction.x());
+  const double sector = std::round(angle / step);
+  const long neighbour_sector = static_cast<long>(sector) + (angle > sector * step ? 1 : -1);
+  const long half = measurer.bins().directions() / 2;
+  out.other_axis = static_cast<int>(((neighbour_sector % half) + half) % half);
+  // The angle to the sector boundary becomes a distance in the plane at the rate of a direction
+  // between centres, 1/|offset|; the gravitation direction turns at a similar rate, and
+  // measuring its own rate would cost one more direction per near pair.
+  out.margin = (step / 2 - std::abs(angle - sector * step)) * offset.norm();
+  return out;
+}
+
+// The distance from `d` to the threshold between `d` and `outside` where the band of the pair
+// (a, b) on `axis` changes, by bisection on the band function (bands are monotone in the
+// distance).
+double crossing_distance(const Interaction& interaction, int a, int b, int axis, double d,
+                         double outside) {
+  const int band = interaction.band(a, b, axis, d);
+  double inside = d;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (inside + outside);
+    if (interaction.band(a, b, axis, mid) == band)
+      inside = mid;
+    else
+      outside = mid;
+  }
+  return std::abs(0.5 * (inside + outside) - d);
+}
+
+// The cell's parts: every combination of the first 5 cuts (32 parts at most; further ones keep
+// the centre's value), each with its share of the cell and the counts of its neighbours' bands;
+// a part where some neighbour is in its hard core is left out.
+std::vector<CellPart> combined_parts(const Interaction& interaction, int category,
+                                     const std::vector<Neighbour>& neighbours,
+                                     const std::vector<Cut>& cuts) {
+  std::vector<CellPart> parts;
+  const std::size_t used = std::min<std::size_t>(cuts.size(), 5);
+  for (std::size_t mask = 0; mask < (std::size_t{1} << used); ++mask) {
+    double fraction = 1.0;
+    std::vector<Neighbour> state = neighbours;
+    for (std::size_t c = 0; c < used; ++c) {
+      const Cut& cut = cuts[c];
+      if (mask & (std::size_t{1} << c)) {
+        fraction *= cut.fraction;
+        state[static_cast<std::size_t>(cut.neighbour)].band = cut.other_band;
+        state[static_cast<std::size_t>(cut.neighbour)].axis = cut.other_axis;
+      } else {
+        fraction *= 1.0 - cut.fraction;
+      }
+    }
+    if (fraction <= 0.0) continue;
+    model::InteractionCounts counts;
+    bool forbidden = false;
+    for (const Neighbour& n : state) {
+      if (n.band == Interaction::kHardCore) {
+        forbidden = true;
+        break;
+      }
+      if (n.band >= 0) counts.add(interaction.parameter(category, n.category, n.axis, n.band));
+    }
+    if (!forbidden) parts.push_back({fraction, std::move(counts.counts)});
+  }
+  return parts;
+}
+
 }  // namespace
 
 // 3D: each boundary cuts the ball of the cell's measure at its estimated distance.
@@ -56,26 +138,10 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context,
       return;
     auto [lo, hi] = measurer.distance_bounds(dummy.shape, other.shape, offset);
     if (lo >= reach + corner) return;
-    int axis = measurer.axis_from_boxes(dummy.shape, other.shape, offset, corner);
-    double angular_margin = -1.0;
-    int other_axis = -1;
-    if (axis < 0) {
-      const Vec3 direction = measurer.direction(dummy.shape, other.shape, offset);
-      axis = measurer.bins().axis_of(direction);
-      if (context.dimension == 2 && measurer.bins().directions() > 1) {
-        const double step = 2 * core::kPi / measurer.bins().directions();
-        const double angle = std::atan2(direction.y(), direction.x());
-        const double sector = std::round(angle / step);
-        angular_margin = step / 2 - std::abs(angle - sector * step);
-        const long neighbour_sector = static_cast<long>(sector) + (angle > sector * step ? 1 : -1);
-        const long half = measurer.bins().directions() / 2;
-        other_axis = static_cast<int>(((neighbour_sector % half) + half) % half);
-        // The angle to the sector boundary becomes a distance in the plane at the rate of a
-        // direction between centres, 1/|offset|; the gravitation direction turns at a similar
-        // rate, and measuring its own rate would cost one more direction per near pair.
-        angular_margin *= offset.norm();
-      }
-    }
+    const PairAxis pair_axis =
+        axis_in_cell(measurer, dummy.shape, other.shape, offset, corner, context.dimension);
+    const int axis = pair_axis.axis, other_axis = pair_axis.other_axis;
+    const double angular_margin = pair_axis.margin;
     // Thresholds of this axis near [lo, hi] decide whether the exact distance is needed.
     double d = lo;
     bool exact = false;
@@ -100,17 +166,9 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context,
       const int above = interaction.band(dummy.category, other.category, axis, d + corner);
       if (below != band || above != band) {
         neighbour_near = true;
-        // Find the threshold crossing by bisection on the band function (bands are monotone in d).
         const bool downward = below != band;
-        double inside = d, outside = downward ? std::max(0.0, d - corner) : d + corner;
-        for (int it = 0; it < 60; ++it) {
-          const double mid = 0.5 * (inside + outside);
-          if (interaction.band(dummy.category, other.category, axis, mid) == band)
-            inside = mid;
-          else
-            outside = mid;
-        }
-        const double x = std::abs(0.5 * (inside + outside) - d);
+        const double x = crossing_distance(interaction, dummy.category, other.category, axis, d,
+                                           downward ? std::max(0.0, d - corner) : d + corner);
         const int other_band = downward ? below : above;
         // Only the nearest crossing on that side is modelled; a second one within the cell is rare.
         if (x < radius)
@@ -146,37 +204,8 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context,
     }
   });
   if (uniform) *uniform = !near_boundary;
-  std::vector<CellPart> parts;
-  if (hard_core) return parts;
-  // At most 5 cuts are combined (32 parts); further ones keep the centre's value.
-  const std::size_t used = std::min<std::size_t>(cuts.size(), 5);
-  for (std::size_t mask = 0; mask < (std::size_t{1} << used); ++mask) {
-    double fraction = 1.0;
-    std::vector<Neighbour> state = neighbours;
-    for (std::size_t c = 0; c < used; ++c) {
-      const Cut& cut = cuts[c];
-      if (mask & (std::size_t{1} << c)) {
-        fraction *= cut.fraction;
-        state[static_cast<std::size_t>(cut.neighbour)].band = cut.other_band;
-        state[static_cast<std::size_t>(cut.neighbour)].axis = cut.other_axis;
-      } else {
-        fraction *= 1.0 - cut.fraction;
-      }
-    }
-    if (fraction <= 0.0) continue;
-    model::InteractionCounts counts;
-    bool forbidden = false;
-    for (const Neighbour& n : state) {
-      if (n.band == Interaction::kHardCore) {
-        forbidden = true;
-        break;
-      }
-      if (n.band >= 0)
-        counts.add(interaction.parameter(dummy.category, n.category, n.axis, n.band));
-    }
-    if (!forbidden) parts.push_back({fraction, std::move(counts.counts)});
-  }
-  return parts;
+  if (hard_core) return {};
+  return combined_parts(interaction, dummy.category, neighbours, cuts);
 }
 
 }  // namespace shapeproc::fit
