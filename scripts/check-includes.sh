@@ -19,24 +19,6 @@ declare -A allowed=(
   [evaluation]="core geometry model synthesis sample fit metrics"
   [methods]="core geometry model synthesis sample fit"
 )
-status=0
-for dir in libshapeproc/*/; do
-  module=$(basename "$dir")
-  if [ -z "${allowed[$module]+set}" ]; then
-    echo "check-includes: module '$module' has no place in the layering (add it to scripts/check-includes.sh)"
-    status=1
-    continue
-  fi
-  while IFS= read -r line; do
-    file=${line%%:*}
-    used=$(sed -E 's#.*"libshapeproc/([a-z_]+)/.*#\1#' <<< "$line")
-    [ "$used" = "$module" ] && continue
-    if ! grep -qw -- "$used" <<< "${allowed[$module]}"; then
-      echo "check-includes: $file includes libshapeproc/$used/ but $module may include only: ${allowed[$module]:-nothing}"
-      status=1
-    fi
-  done < <(grep -rHE '^#include "libshapeproc/[a-z_]+/' "$dir" || true)
-done
 # The synthesis methods by paper (libshapeproc/methods/): a folder may include, within methods/,
 # only itself and the folders listed; the files at the top (the hybrid, the tile baseline) any.
 declare -A method_allowed=(
@@ -46,23 +28,33 @@ declare -A method_allowed=(
   [davison2018]="common"
   [ijiri2008]="common"
 )
-for dir in libshapeproc/methods/*/; do
-  part=$(basename "$dir")
-  if [ -z "${method_allowed[$part]+set}" ]; then
-    echo "check-includes: methods/$part has no place in the methods' layering (add it to scripts/check-includes.sh)"
-    status=1
-    continue
-  fi
-  while IFS= read -r line; do
-    file=${line%%:*}
-    used=$(sed -E 's#.*"libshapeproc/methods/([a-z0-9_]+)/.*#\1#' <<< "$line")
-    [ "$used" = "$part" ] && continue
-    if ! grep -qw -- "$used" <<< "${method_allowed[$part]}"; then
-      echo "check-includes: $file includes libshapeproc/methods/$used/ but methods/$part may include only: ${method_allowed[$part]:-nothing}"
+status=0
+# check_layering ROOT ALLOWED: every folder under ROOT includes, of ROOT's folders, only itself
+# and those ALLOWED (the name of an array like the ones above) lists for it.
+check_layering() {
+  local root=$1
+  local -n rules=$2
+  local dir part line file used
+  for dir in "$root"/*/; do
+    part=$(basename "$dir")
+    if [ -z "${rules[$part]+set}" ]; then
+      echo "check-includes: $root/$part has no place in the layering (add it to scripts/check-includes.sh)"
       status=1
+      continue
     fi
-  done < <(grep -rHE '^#include "libshapeproc/methods/[a-z0-9_]+/' "$dir" || true)
-done
+    while IFS= read -r line; do
+      file=${line%%:*}
+      used=$(sed -E "s#.*\"$root/([a-z0-9_]+)/.*#\\1#" <<< "$line")
+      [ "$used" = "$part" ] && continue
+      if ! grep -qw -- "$used" <<< "${rules[$part]}"; then
+        echo "check-includes: $file includes $root/$used/ but $part may include only: ${rules[$part]:-nothing}"
+        status=1
+      fi
+    done < <(grep -rHE "^#include \"$root/[a-z0-9_]+/" "$dir" || true)
+  done
+}
+check_layering libshapeproc allowed
+check_layering libshapeproc/methods method_allowed
 # A module's detail/ headers are its own: no other module, and not the command line, includes
 # them (tests may).
 while IFS= read -r line; do

@@ -225,24 +225,18 @@ int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>&
 
 // The options of the other methods, each group remembered so that a method refuses the others'.
 void add_method_options(CLI::App& command, SynthesizeArguments& args) {
-  std::size_t before = command.get_options().size();
-  args.em.add_shared_to(command);
-  args.shared = options_since(command, before);
-  before = command.get_options().size();
-  args.em.add_to(command);
-  args.em_only = options_since(command, before);
-  before = command.get_options().size();
-  args.growth.add_to(command);
-  args.growth_only = options_since(command, before);
-  before = command.get_options().size();
-  args.em.add_orientation_to(command);
-  args.orientation = options_since(command, before);
-  before = command.get_options().size();
-  args.ijiri.add_to(command);
-  args.ijiri_only = options_since(command, before);
-  before = command.get_options().size();
-  args.growth.add_overlap_to(command);
-  args.growth_overlap = options_since(command, before);
+  // The names of the options that `add` adds.
+  const auto group = [&command](const auto& add) {
+    const std::size_t before = command.get_options().size();
+    add();
+    return options_since(command, before);
+  };
+  args.shared = group([&] { args.em.add_shared_to(command); });
+  args.em_only = group([&] { args.em.add_to(command); });
+  args.growth_only = group([&] { args.growth.add_to(command); });
+  args.orientation = group([&] { args.em.add_orientation_to(command); });
+  args.ijiri_only = group([&] { args.ijiri.add_to(command); });
+  args.growth_overlap = group([&] { args.growth.add_overlap_to(command); });
 }
 
 // Options given for another method than --method are refused, naming the method they are for;
