@@ -1,6 +1,6 @@
-// Edits of a model (Landes et al. 2013, §7.3): a new pattern from a learned one. Each edit keeps the model valid
-// or throws core::ArgumentError naming what is wrong; parameters set by hand become fixed, without
-// a standard error. `shapeproc edit` parses its options into these calls.
+// Edits of a model (Landes et al. 2013, §7.3): a new pattern from a learned one. Each edit keeps
+// the model valid or throws core::ArgumentError naming what is wrong; parameters set by hand become
+// fixed, without a standard error. `shapeproc edit` parses its options into these calls.
 #pragma once
 
 #include <cstddef>
