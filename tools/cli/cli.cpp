@@ -8,21 +8,11 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/common.hpp"
 
 namespace shapeproc::cli {
 
 namespace {
-
-// One line, whatever the exception carried.
-// An error message on one line, safe for a terminal and of bounded length: a bad value of 5 MB
-// or one holding escape sequences is not echoed whole.
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return core::printable(text, 600);
-}
 
 // Levenshtein distance, for suggesting the option a user meant.
 std::size_t edit_distance(const std::string& a, const std::string& b) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
@@ -183,6 +184,14 @@ io::Provenance make_provenance(const std::string& command,
                                  {"arguments", arguments},
                                  {"parameters", parameters}};
   return io::Provenance{record.dump()};
+}
+
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return core::printable(text, 600);
 }
 
 }  // namespace shapeproc::cli

@@ -85,4 +85,8 @@ io::Provenance make_provenance(const std::string& command,
                                const std::vector<std::string>& arguments,
                                const nlohmann::json& parameters);
 
+// An error message on one line, safe for a terminal and of bounded length: a bad value of 5 MB
+// or one holding escape sequences is not echoed whole.
+std::string one_line(std::string text);
+
 }  // namespace shapeproc::cli

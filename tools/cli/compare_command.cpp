@@ -14,10 +14,10 @@
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
-#include "tools/cli/cli.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/report_command.hpp"
+#include "tools/cli/synthesize_command.hpp"
 
 namespace shapeproc::cli {
 
@@ -42,7 +42,7 @@ std::vector<std::string> parse_methods(const std::string& list) {
   return out;
 }
 
-// The `synthesize` command line that runs `method`.
+// The `synthesize` command line that runs `method`: what the outputs' records name as their source.
 std::vector<std::string> synthesize_arguments(const std::string& method,
                                               const std::string& exemplar,
                                               const ReaderFlags& reader, const std::string& size,
@@ -63,10 +63,48 @@ std::vector<std::string> synthesize_arguments(const std::string& method,
   return a;
 }
 
-int run_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
-  std::vector<const char*> argv;
-  for (const std::string& a : arguments) argv.push_back(a.c_str());
-  return run(static_cast<int>(argv.size()), argv.data(), out, err);
+// The `synthesize` arguments that run `method` (as synthesize_arguments's command line says).
+SynthesizeArguments synthesize_request(const std::string& method, const std::string& exemplar,
+                                       const ReaderFlags& reader, const std::string& size,
+                                       std::uint64_t seed, const std::string& output,
+                                       const std::string& model) {
+  SynthesizeArguments args;
+  args.input = exemplar;
+  args.output = output;
+  args.model = model;
+  args.reader = reader;
+  args.sample.size = size;
+  args.sample.seed = seed;
+  args.sample.exemplar_multiples = true;
+  if (method == "centroid" || method == "hausdorff") {
+    args.fit.distance = method;
+  } else if (method.rfind("hybrid-", 0) == 0) {
+    args.method = "hybrid";
+    args.start_from = method.substr(7);
+  } else if (method != "shape-process") {
+    args.method = method;
+  }
+  return args;
+}
+
+// Runs one method as `synthesize` would; returns the reason it failed, empty when it did not.
+// Ctrl-C stops the whole comparison.
+std::string run_one_method(SynthesizeArguments args, const std::vector<std::string>& arguments,
+                           std::ostream& out) {
+  try {
+    run_synthesize(args, arguments, out);
+    return {};
+  } catch (const core::Cancelled&) {
+    throw;
+  } catch (const core::InputError& e) {
+    return one_line(e.what());
+  } catch (const core::UsageError& e) {
+    return one_line(e.what());
+  } catch (const core::ArgumentError& e) {
+    return one_line(e.what());
+  } catch (const std::exception& e) {
+    return "internal error: " + one_line(e.what());
+  }
 }
 
 }  // namespace
@@ -134,18 +172,18 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
         const std::string output = (directory / (method + "." + extension)).string();
         const std::string model =
             method == "shape-process" ? (directory / "model.json").string() : std::string();
-        std::ostringstream said, errors;
+        std::ostringstream said;
         const core::Stopwatch watch;
-        const int code = run_arguments(synthesize_arguments(method, args->exemplar, args->reader,
-                                                            args->size, args->seed, output, model),
-                                       said, errors);
+        const std::string reason =
+            run_one_method(synthesize_request(method, args->exemplar, args->reader, args->size,
+                                              args->seed, output, model),
+                           synthesize_arguments(method, args->exemplar, args->reader, args->size,
+                                                args->seed, output, model),
+                           said);
         const double seconds = watch.seconds();
         std::istringstream lines(said.str());
         for (std::string line; std::getline(lines, line);) out << "  " << line << '\n';
-        if (code != 0) {
-          std::string reason = errors.str();
-          if (!reason.empty() && reason.back() == '\n') reason.pop_back();
-          if (reason.rfind("shapeproc: ", 0) == 0) reason.erase(0, 11);
+        if (!reason.empty()) {
           out << "  failed: " << reason << '\n';
           failed.push_back(method + " (" + reason + ")");
           continue;

@@ -2,6 +2,8 @@
 // the shape process (fit, then sample), the neighbourhood EM of Ma et al. 2011, the region growing
 // of Davison et al. 2018 or the seed-and-grow of Ijiri et al. 2008, through the same domain,
 // chains, outputs and pictures. The methods' own flags are in method_flags.
+#include "tools/cli/synthesize_command.hpp"
+
 #include <filesystem>
 #include <memory>
 #include <system_error>
@@ -13,11 +15,7 @@
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
-#include "libshapeproc/methods/davison2018/region_growing.hpp"
-#include "libshapeproc/methods/hybrid_synthesis.hpp"
-#include "libshapeproc/methods/ijiri2008/seed_and_grow.hpp"
-#include "libshapeproc/methods/ma2011/neighbourhood_em.hpp"
-#include "libshapeproc/methods/tiled_exemplar.hpp"
+#include "libshapeproc/methods/synthesizer_factory.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/flags.hpp"
@@ -50,44 +48,6 @@ void record_reader(const ReaderFlags& reader, synthesis::SynthesisRecord& record
     record.options.push_back(std::move(pair));
 }
 
-struct SynthesizeArguments {
-  std::string input, output, model, method = "shape-process", start_from = "ma-em", start = "auto";
-  FitFlags fit;
-  ReaderFlags reader;
-  SampleFlags sample;
-  EmFlags em;
-  GrowthFlags growth;
-  IjiriFlags ijiri;
-  std::vector<std::string> fit_only, shared, em_only, growth_only, orientation, ijiri_only,
-      growth_overlap;
-};
-
-// --method hybrid: the start method's output, then the shape-process sampler at `model`.
-int run_hybrid(const SynthesizeArguments& args, const model::ShapeProcessModel& model,
-               synthesis::SynthesisRecord record, std::ostream& out) {
-  const geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
-  const geometry::Boundary boundary = args.reader.boundary();
-  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  std::unique_ptr<synthesis::Synthesizer> start;
-  if (args.start_from == "ma-em") {
-    start = std::make_unique<methods::NeighbourhoodEm>(exemplar, boundary, domain,
-                                                       args.em.options(domain, 0));
-  } else if (args.start_from == "davison") {
-    start = std::make_unique<methods::RegionGrowing>(exemplar, boundary, domain,
-                                                     args.growth.options(args.em));
-  } else {
-    if (exemplar.dimension != 2)
-      throw core::UsageError(args.input + ": --start-from ijiri grows 2D exemplars only");
-    start = std::make_unique<methods::SeedAndGrow>(exemplar, boundary, domain,
-                                                   args.ijiri.options(exemplar, "", "", domain));
-  }
-  const methods::HybridSynthesis method(std::move(start), model, domain,
-                                        args.sample.sampler_options());
-  out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
-  args.sample.verbosity.stage("synthesising");
-  return args.sample.run(method, args.output, std::move(record), out);
-}
-
 // The exemplar, with the output's name and the resource budget checked against it.
 geometry::Scene read_checked_exemplar(SynthesizeArguments& args) {
   geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
@@ -97,104 +57,95 @@ geometry::Scene read_checked_exemplar(SynthesizeArguments& args) {
   return exemplar;
 }
 
-// --method tile: the exemplar repeated over the output.
-int run_tile(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
-  const geometry::Scene exemplar = read_checked_exemplar(args);
-  const methods::TiledExemplar method(exemplar, args.sample.domain(exemplar.dimension));
-  out << "tile: the exemplar repeated over the output (the baseline: a copy, no novelty)\n";
-  record_reader(args.reader, record);
-  return args.sample.run(method, args.output, std::move(record), out);
-}
-
-// --method ijiri: seed-and-grow.
-int run_ijiri(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
-  if (args.sample.iterations > 0)
-    throw core::UsageError(
-        "--iterations: --method ijiri grows until no seed is left; it takes no iteration "
-        "count");
-  const geometry::Scene exemplar = read_checked_exemplar(args);
-  if (exemplar.dimension != 2)
-    throw core::UsageError(args.input + ": --method ijiri grows 2D exemplars only");
-  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  methods::SeedGrowthOptions options =
-      args.ijiri.options(exemplar, args.em.orientation, args.growth.overlap, domain);
-  args.sample.verbosity.stage("analysing the exemplar");
-  const methods::SeedAndGrow method(exemplar, args.reader.boundary(), domain, std::move(options));
-  if (!args.ijiri.show.empty()) {
-    if (io::extension_of(args.ijiri.show) != "svg")
-      throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
-                             "'");
-    show_connectivity(method.exemplar(), args.ijiri.show);
-    out << "wrote the connectivity to " << args.ijiri.show << '\n';
-  }
-  out << "seed-and-grow: " << exemplar.elements.size() << " exemplar elements, "
-      << method.exemplar().references.size() << " with closed rings, mean edge "
-      << core::format_number(method.exemplar().connectivity.mean_edge) << ' ' << exemplar.units
-      << '\n';
-  if (!args.ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args.ijiri.flips);
-  if (!args.ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args.ijiri.seeds);
-  record_reader(args.reader, record);
-  args.sample.verbosity.stage("growing");
-  return args.sample.run(method, args.output, std::move(record), out);
-}
-
-// --method davison: region growing, with an optional palette.
-int run_davison(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
-  if (args.sample.iterations > 0)
-    throw core::UsageError(
-        "--iterations: --method davison grows until the domain is full; it takes no "
-        "iteration count");
-  const geometry::Boundary boundary = args.reader.boundary();
-  std::vector<methods::GrowthSource> palette;
-  palette.reserve(2);  // `exemplar` stays valid
-  palette.push_back({io::read_scene(args.input, args.reader.options()), boundary});
-  const geometry::Scene& exemplar = palette.front().scene;
-  args.sample.set_exemplar(exemplar);
-  args.sample.check(args.output, exemplar.dimension);
-  args.sample.check_budget(exemplar);
+// Davison's palette (--palette): the second exemplar, read with the first's reader options.
+std::vector<methods::GrowthSource> read_palette(const SynthesizeArguments& args,
+                                                const geometry::Scene& exemplar) {
   if (args.growth.palette.empty() &&
       (args.growth.palette_rings > 0 || args.growth.palette_bounding_radius >= 0))
     throw core::UsageError(
         "--palette-neighbourhood, --palette-bounding-radius: they need --palette");
-  if (!args.growth.palette.empty()) {
-    palette.push_back({io::read_scene(args.growth.palette, args.reader.options()), boundary,
-                       args.growth.palette_rings, args.growth.palette_bounding_radius});
-    if (palette.back().scene.dimension != exemplar.dimension)
-      throw core::UsageError(args.growth.palette + ": --palette is " +
-                             std::to_string(palette.back().scene.dimension) +
-                             "D but the exemplar is " + std::to_string(exemplar.dimension) + "D");
-    record.inputs.emplace_back("palette", args.growth.palette);
-  }
-  const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  args.sample.verbosity.stage("analysing the exemplar");
-  const methods::RegionGrowing method(palette, domain, args.growth.options(args.em));
-  const methods::GrowthExemplar& grown = method.exemplar();
-  for (std::size_t s = 0, part = 0; s < grown.part.size(); ++s) {
-    if (static_cast<std::size_t>(grown.part[s]) != part) continue;
-    const std::size_t count = palette[part].scene.elements.size();
-    out << (part == 0 ? "region growing: " : "palette: ") << count
-        << " exemplar elements, neighbourhood radius " << core::format_number(grown.reach[s]) << ' '
-        << palette[part].scene.units << '\n';
-    ++part;
-  }
-  record_reader(args.reader, record);
-  args.sample.verbosity.stage("growing");
-  return args.sample.run(method, args.output, std::move(record), out);
+  if (args.growth.palette.empty()) return {};
+  std::vector<methods::GrowthSource> palette;
+  palette.push_back({io::read_scene(args.growth.palette, args.reader.options()),
+                     args.reader.boundary(), args.growth.palette_rings,
+                     args.growth.palette_bounding_radius});
+  if (palette.back().scene.dimension != exemplar.dimension)
+    throw core::UsageError(args.growth.palette + ": --palette is " +
+                           std::to_string(palette.back().scene.dimension) +
+                           "D but the exemplar is " + std::to_string(exemplar.dimension) + "D");
+  return palette;
 }
 
-// --method ma-em: the neighbourhood EM.
-int run_em(SynthesizeArguments& args, synthesis::SynthesisRecord record, std::ostream& out) {
+// The library's options of the method and, for a hybrid, of its start, from the flags.
+methods::MethodOptions method_options(const SynthesizeArguments& args, methods::Method method,
+                                      const geometry::Scene& exemplar,
+                                      const geometry::Domain& domain) {
+  methods::MethodOptions options;
+  const bool hybrid = method == methods::Method::hybrid;
+  const methods::Method uses = hybrid ? *methods::method_from_name(args.start_from) : method;
+  if (hybrid) options.start_from = uses;
+  if (uses == methods::Method::ma_em)
+    options.em = args.em.options(domain, hybrid ? 0 : args.sample.iterations);
+  if (uses == methods::Method::davison) {
+    options.growth = args.growth.options(args.em);
+    options.palette = read_palette(args, exemplar);
+  }
+  if (uses == methods::Method::ijiri) {
+    if (exemplar.dimension != 2)
+      throw core::UsageError(args.input + (hybrid ? ": --start-from ijiri" : ": --method ijiri") +
+                             " grows 2D exemplars only");
+    options.ijiri = args.ijiri.options(exemplar, args.em.orientation, args.growth.overlap, domain);
+  }
+  if (hybrid) options.sampler = args.sample.sampler_options();
+  return options;
+}
+
+// The inputs beyond the exemplar, in the outputs' record.
+void record_method_inputs(const SynthesizeArguments& args, methods::Method method,
+                          synthesis::SynthesisRecord& record) {
+  if (method == methods::Method::ijiri) {
+    if (!args.ijiri.flips.empty()) record.inputs.emplace_back("edge flips", args.ijiri.flips);
+    if (!args.ijiri.seeds.empty()) record.inputs.emplace_back("seeds", args.ijiri.seeds);
+  }
+  if (method == methods::Method::davison && !args.growth.palette.empty())
+    record.inputs.emplace_back("palette", args.growth.palette);
+  if (method != methods::Method::hybrid) record_reader(args.reader, record);
+}
+
+// Every method but the shape process's own sampler (tile, ma-em, davison, ijiri, and the hybrid
+// at `model`): the library's synthesizer, run over the chains.
+int run_method(SynthesizeArguments& args, const model::ShapeProcessModel* model,
+               synthesis::SynthesisRecord record, std::ostream& out) {
+  const methods::Method method = *methods::method_from_name(args.method);
+  const bool grows = method == methods::Method::ijiri || method == methods::Method::davison;
+  if (grows && args.sample.iterations > 0)
+    throw core::UsageError("--iterations: --method " + args.method +
+                           (method == methods::Method::ijiri
+                                ? " grows until no seed is left; it takes no iteration count"
+                                : " grows until the domain is full; it takes no iteration count"));
   const geometry::Scene exemplar = read_checked_exemplar(args);
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  const methods::EmOptions options = args.em.options(domain, args.sample.iterations);
-  args.sample.verbosity.stage("analysing the exemplar");
-  const methods::NeighbourhoodEm method(exemplar, args.reader.boundary(), domain, options);
-  out << "neighbourhood EM: " << exemplar.elements.size() << " exemplar elements, "
-      << method.exemplar().samples.size() << " samples, radius "
-      << core::format_number(method.exemplar().radius) << ' ' << exemplar.units << '\n';
-  record_reader(args.reader, record);
-  args.sample.verbosity.stage("synthesising");
-  return args.sample.run(method, args.output, std::move(record), out);
+  const methods::MethodOptions options = method_options(args, method, exemplar, domain);
+  if (method != methods::Method::tile && method != methods::Method::hybrid)
+    args.sample.verbosity.stage("analysing the exemplar");
+  const auto synthesizer =
+      methods::make_synthesizer(method, exemplar, args.reader.boundary(), domain, options, model);
+  if (method == methods::Method::ijiri && !args.ijiri.show.empty()) {
+    if (io::extension_of(args.ijiri.show) != "svg")
+      throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
+                             "'");
+    show_connectivity(dynamic_cast<const methods::SeedAndGrow&>(*synthesizer).exemplar(),
+                      args.ijiri.show);
+    out << "wrote the connectivity to " << args.ijiri.show << '\n';
+  }
+  for (const std::string& line : methods::describe_synthesizer(*synthesizer, exemplar, options))
+    out << line << '\n';
+  if (method == methods::Method::hybrid)
+    out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
+  record_method_inputs(args, method, record);
+  if (method != methods::Method::tile)
+    args.sample.verbosity.stage(grows ? "growing" : "synthesising");
+  return args.sample.run(*synthesizer, args.output, std::move(record), out);
 }
 
 // --method shape-process or hybrid: fit, then sample (a hybrid from another method's output).
@@ -215,7 +166,7 @@ int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>&
   if (!args.model.empty()) record.inputs.emplace_back("model", args.model);
   record.options = flatten_options("fit", args.fit.to_json());
   record_reader(args.reader, record);
-  if (hybrid) return run_hybrid(args, fitted.model, std::move(record), out);
+  if (hybrid) return run_method(args, &fitted.model, std::move(record), out);
   const bool at_exemplar = args.start == "exemplar";
   record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
   args.sample.verbosity.stage("sampling");
@@ -323,19 +274,22 @@ void add_synthesize_command(CLI::App& app, Action& action,
   command->callback([&action, args, arguments, command, start_from, start] {
     action = [args, arguments, command, start_from, start](std::ostream& out) {
       check_method_options(*command, *args, *start_from, *start);
-      args->sample.check(args->output);
-      args->reader.options();
-      synthesis::SynthesisRecord record;
-      record.command = "synthesize";
-      record.arguments = arguments;
-      record.inputs = {{"exemplar", args->input}};
-      if (args->method == "tile") return run_tile(*args, std::move(record), out);
-      if (args->method == "ijiri") return run_ijiri(*args, std::move(record), out);
-      if (args->method == "davison") return run_davison(*args, std::move(record), out);
-      if (args->method == "ma-em") return run_em(*args, std::move(record), out);
-      return run_shape_process(*args, arguments, std::move(record), out);
+      return run_synthesize(*args, arguments, out);
     };
   });
+}
+
+int run_synthesize(SynthesizeArguments& args, const std::vector<std::string>& arguments,
+                   std::ostream& out) {
+  args.sample.check(args.output);
+  args.reader.options();
+  synthesis::SynthesisRecord record;
+  record.command = "synthesize";
+  record.arguments = arguments;
+  record.inputs = {{"exemplar", args.input}};
+  if (args.method != "shape-process" && args.method != "hybrid")
+    return run_method(args, nullptr, std::move(record), out);
+  return run_shape_process(args, arguments, std::move(record), out);
 }
 
 }  // namespace shapeproc::cli
