@@ -16,7 +16,7 @@ declare -A allowed=(
   [sample]="core geometry model synthesis"
   [metrics]="core geometry"
   [report]="core geometry model synthesis render io metrics evaluation"
-  [evaluation]="core geometry model synthesis sample fit metrics"
+  [evaluation]="core geometry model synthesis render io sample fit metrics"
   [methods]="core geometry model synthesis sample fit"
 )
 # The synthesis methods by paper (libshapeproc/methods/): a folder may include, within methods/,

@@ -17,6 +17,7 @@
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/report_command.hpp"
+#include "tools/cli/stats_command.hpp"
 #include "tools/cli/synthesize_command.hpp"
 
 namespace shapeproc::cli {
@@ -159,11 +160,11 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
       const std::string extension = io::extension_of(args->exemplar) == "svg"   ? "svg"
                                     : io::extension_of(args->exemplar) == "csv" ? "csv"
                                                                                 : "obj";
-      ReportRequest request;
+      report::ComparisonRequest request;
       request.exemplar = args->exemplar;
       request.directory = args->directory;
-      request.reader = args->reader;
-      request.metrics = args->metrics;
+      request.reader = args->reader.options();
+      request.metrics = args->metrics.options();
       request.command = command_line(arguments);
       std::vector<std::string> failed;
       for (std::size_t i = 0; i < methods.size(); ++i) {
@@ -196,9 +197,9 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
       if (request.outputs.empty())
         throw core::UsageError("no method could synthesise from " + args->exemplar + ": " +
                                failed.front());
-      const int code = write_report(request, out);
+      print_report(report::write_comparison_report(request), out);
       for (const std::string& f : failed) out << "not on the page: " << f << '\n';
-      return code;
+      return 0;
     };
   });
 }

@@ -1,229 +1,54 @@
 // shapeproc report EXEMPLAR OUTPUT... -o DIR [--model model.json]: index.html, pictures and
-// metrics.json comparing outputs with their exemplar.
+// metrics.json comparing outputs with their exemplar (report::write_comparison_report).
 #include "tools/cli/report_command.hpp"
 
-#include <algorithm>
 #include <memory>
-#include <sstream>
 
-#include "libshapeproc/core/atomic_file.hpp"
-#include "libshapeproc/core/error.hpp"
-#include "libshapeproc/core/stopwatch.hpp"
-#include "libshapeproc/evaluation/envelope.hpp"
-#include "libshapeproc/evaluation/verdicts.hpp"
-#include "libshapeproc/geometry/tile_repeat.hpp"
-#include "libshapeproc/io/model_io.hpp"
-#include "libshapeproc/report/html_report.hpp"
-#include "libshapeproc/report/verdict_markdown.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/common.hpp"
 #include "tools/cli/stats_command.hpp"
 
 namespace shapeproc::cli {
 
-namespace {
-
-// The goodness-of-fit table a maximum-likelihood fit stored in the model (nothing for others, or
-// for a table the file does not hold whole: hand-edited, or of another version).
-void read_goodness(const model::ShapeProcessModel& model, report::Report& r) {
-  if (!model.fit || !model.fit->likelihood) return;
-  const model::LikelihoodRecord& e = *model.fit->likelihood;
-  const std::vector<std::string> names = model::statistic_names(model);
-  const std::size_t n = names.size();
-  if (e.observed.size() != n || e.expected.size() != n || e.z.size() != n) return;
-  const bool errors = e.expected_standard_error.size() == n;
-  for (std::size_t i = 0; i < n; ++i) {
-    report::GoodnessRow row;
-    row.statistic = names[i];
-    row.exemplar = e.observed[i];
-    row.model = e.expected[i];
-    row.z = e.z[i];
-    if (errors) row.standard_error = e.expected_standard_error[i];
-    row.penalised =
-        std::find(e.penalised.begin(), e.penalised.end(), static_cast<int>(i)) != e.penalised.end();
-    r.goodness.push_back(row);
-  }
-  r.goodness_note = std::string("Maximum likelihood (MCMC): ") +
-                    (e.converged ? "converged" : "did not converge") + " in " +
-                    std::to_string(e.iterations) + " iterations";
-}
-
-}  // namespace
-
-namespace {
-
-// The model of --model, if any, and the metric flags it completes (its directions and direction
-// kind where the flags leave them to it).
-std::unique_ptr<model::ShapeProcessModel> read_report_model(const ReportRequest& request,
-                                                            MetricFlags& flags) {
-  if (request.model.empty()) return nullptr;
-  auto model = std::make_unique<model::ShapeProcessModel>(io::read_model(request.model));
-  if (flags.directions == 0) flags.directions = model->measurement.directions;
-  if (flags.direction == "gravitation" &&
-      model->measurement.direction == geometry::DirectionKind::centroid) {
-    flags.direction = "centroid";
-  }
-  return model;
-}
-
-// Everything the report measures: the exemplar (a seamless tile of few elements measured as a
-// repeat of itself: on its own small torus an element's images one period away are the element
-// itself, and the contacts and nearest distances they make would go uncounted), the outputs
-// against it, and their verdicts.
-struct Measured {
-  EvaluatedScene exemplar;
-  std::string exemplar_note;
-  Evaluation exemplar_eval;
-  std::vector<EvaluatedScene> outputs;
-  std::vector<Evaluation> evals;
-  std::vector<std::vector<evaluation::Verdict>> verdicts;
-};
-
-void measure_report(const ReportRequest& request, const MetricFlags& flags,
-                    const model::ShapeProcessModel* model, Measured& m) {
-  m.exemplar = read_exemplar(request.exemplar, request.reader, flags);
-  const geometry::Scene tile = m.exemplar.scene;  // novelty is judged against the drawing itself
-  if (m.exemplar.boundary == geometry::Boundary::torus) {
-    const int times = geometry::tile_repeats(m.exemplar.scene.elements.size());
-    if (times > 1) {
-      m.exemplar.scene = geometry::repeat_tile(m.exemplar.scene, times);
-      m.exemplar_note = "measured and drawn as a " + std::to_string(times) + " × " +
-                        std::to_string(times) + " repeat of the tile";
-    }
-  }
-  m.exemplar_eval = evaluate(m.exemplar, flags);
-  for (const std::string& file : request.outputs) {
-    m.outputs.push_back(read_evaluated_scene(file, request.reader, flags.boundary));
-    // Novelty against the drawing itself, not its repeat (whose period may be the output's).
-    m.evals.push_back(
-        evaluate(m.outputs.back(), flags, &m.exemplar, &m.exemplar_eval.statistics, &tile));
-  }
-  evaluation::ExemplarMeasures measured = evaluation::measure_exemplar(
-      m.exemplar.scene, m.exemplar.boundary, m.exemplar_eval.statistics, model);
-  measured.scene = nullptr;  // novelty is measured above
-  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
-    evaluation::Judged judged = evaluation::measure_for_verdicts(
-        measured, m.outputs[i].scene, m.outputs[i].boundary, m.evals[i].statistics,
-        *m.evals[i].comparison, &*m.evals[i].neighbourhood);
-    judged.novelty = m.evals[i].novelty;
-    m.verdicts.push_back(evaluation::judge(judged));
-  }
-}
-
-// The model's part of the report: its goodness-of-fit table, the simulation envelopes of the
-// nearest distances, and the fit's times.
-void add_model(const model::ShapeProcessModel& model, const Measured& m, report::Report& r) {
-  read_goodness(model, r);
-  const core::Stopwatch envelopes_watch;
-  const evaluation::EnvelopeOptions envelope;
-  r.envelopes =
-      evaluation::nearest_envelopes(m.exemplar.scene, m.exemplar.boundary, model, envelope);
-  r.envelope_samples = envelope.samples;
-  r.timings.emplace_back("simulation envelopes", envelopes_watch.seconds());
-  if (!model.fit) return;
-  const model::FitSeconds& seconds = model.fit->seconds;
-  for (const auto& [stage, value] : {std::pair{"measurements", seconds.measurements},
-                                     {"optimisation", seconds.optimisation},
-                                     {"proxies", seconds.proxies},
-                                     {"quadrature", seconds.quadrature}})
-    r.timings.emplace_back(std::string("fit: ") + stage, value);
-}
-
-std::string label_of(const ReportRequest& request, std::size_t i) {
-  return request.labels.empty() ? request.outputs[i] : request.labels[i];
-}
-
-// metrics.json: every measure of the exemplar and the outputs, and the outputs' verdicts.
-void write_metrics_json(const ReportRequest& request, const MetricFlags& flags, const Measured& m) {
-  nlohmann::json metrics = {{"exemplar", evaluation_json(m.exemplar, m.exemplar_eval)},
-                            {"outputs", nlohmann::json::array()},
-                            {"options", flags.to_json()}};
-  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
-    nlohmann::json entry = evaluation_json(m.outputs[i], m.evals[i]);
-    entry["summary"] = evaluation::summary(m.verdicts[i]);
-    for (const evaluation::Verdict& v : m.verdicts[i])
-      entry["verdicts"].push_back({{"check", v.metric},
-                                   {"value", v.value},
-                                   {"shown", v.shown},
-                                   {"rule", v.rule},
-                                   {"outcome", v.outcome == evaluation::Outcome::pass   ? "pass"
-                                               : v.outcome == evaluation::Outcome::fail ? "fail"
-                                                                                        : "shown"},
-                                   {"problem", v.problem}});
-    metrics["outputs"].push_back(std::move(entry));
-  }
-  core::write_file_atomically(std::filesystem::path(request.directory) / "metrics.json",
-                              [&](std::ostream& f) { f << metrics.dump(2) << '\n'; });
-}
-
-}  // namespace
-
-int write_report(const ReportRequest& request, std::ostream& out) {
-  const core::Stopwatch watch;
-  MetricFlags flags = request.metrics;
-  const std::unique_ptr<model::ShapeProcessModel> model = read_report_model(request, flags);
-  if (std::filesystem::exists(request.directory) &&
-      !std::filesystem::is_directory(request.directory)) {
-    throw core::UsageError(request.directory + ": exists and is not a directory");
-  }
-  Measured m;
-  measure_report(request, flags, model.get(), m);
-
-  report::Report r;
-  r.exemplar = {request.exemplar, &m.exemplar.scene, &m.exemplar_eval.statistics,
-                nullptr,          nullptr,           m.exemplar_note};
-  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
-    r.outputs.push_back({label_of(request, i), &m.outputs[i].scene, &m.evals[i].statistics,
-                         &*m.evals[i].comparison, &*m.evals[i].neighbourhood,
-                         m.outputs[i].record ? m.outputs[i].record->summary() : std::string(),
-                         &m.verdicts[i]});
-  }
-  r.model = model.get();
-  if (model) add_model(*model, m, r);
-  r.model_label = request.model;
-  r.command = request.command;
-  for (const auto& timing : request.timings) r.timings.push_back(timing);
-  r.timings.emplace_back("metrics: exemplar", m.exemplar_eval.statistics.seconds);
-  for (std::size_t i = 0; i < m.evals.size(); ++i) {
-    r.timings.emplace_back("metrics: output " + std::to_string(i + 1),
-                           m.evals[i].statistics.seconds);
-  }
-  std::filesystem::create_directories(request.directory);
-  write_metrics_json(request, flags, m);
-  r.timings.emplace_back("reading and metrics, in total", watch.seconds());
-  report::write_report(r, request.directory);
-  report::write_verdict_markdown(r, std::filesystem::path(request.directory) / "verdicts.md");
+void print_report(const report::ComparisonReport& report, std::ostream& out) {
   // The verdicts first: what a person would notice, one line per output.
-  for (std::size_t i = 0; i < m.outputs.size(); ++i)
-    out << label_of(request, i) << ": " << evaluation::summary(m.verdicts[i]) << '\n';
-  out << "wrote " << (std::filesystem::path(request.directory) / "index.html").string() << " ("
-      << m.outputs.size() + 1 << " pictures, metrics.json, verdicts.md)\n";
-  for (std::size_t i = 0; i < m.outputs.size(); ++i) {
-    const Evaluation& e = m.evals[i];
-    out << "  " << request.outputs[i] << ": " << e.statistics.elements() << " elements, "
-        << e.statistics.collisions.pairs.size() << " colliding pairs, W1 nearest "
-        << e.comparison->all.nearest << ", W1 pairs " << e.comparison->all.pairs
-        << ", neighbourhood distance " << e.neighbourhood->normalised << " a²\n";
+  for (const report::OutputSummary& o : report.outputs)
+    out << o.label << ": " << o.verdicts << '\n';
+  out << "wrote " << report.index << " (" << report.outputs.size() + 1
+      << " pictures, metrics.json, verdicts.md)\n";
+  for (const report::OutputSummary& o : report.outputs) {
+    out << "  " << o.file << ": " << o.elements << " elements, " << o.colliding_pairs
+        << " colliding pairs, W1 nearest " << o.w1_nearest << ", W1 pairs " << o.w1_pairs
+        << ", neighbourhood distance " << o.neighbourhood << " a²\n";
   }
-  return 0;
 }
 
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
-  auto args = std::make_shared<ReportRequest>();
+  struct ReportArguments {
+    report::ComparisonRequest request;
+    MetricFlags metrics;
+    ReaderFlags reader;
+  };
+  auto args = std::make_shared<ReportArguments>();
   CLI::App* command = app.add_subcommand("report",
                                          "Write DIR/index.html (self-contained) with pictures, "
                                          "verdicts, distance charts and metrics comparing outputs "
                                          "with their exemplar, and DIR/metrics.json");
-  command->add_option("EXEMPLAR", args->exemplar, "the exemplar")->required();
-  command->add_option("OUTPUTS", args->outputs, "outputs to compare with it")->required();
-  command->add_option("-o,--output", args->directory, "report directory")->required();
-  command->add_option("--model", args->model,
+  command->add_option("EXEMPLAR", args->request.exemplar, "the exemplar")->required();
+  command->add_option("OUTPUTS", args->request.outputs, "outputs to compare with it")->required();
+  command->add_option("-o,--output", args->request.directory, "report directory")->required();
+  command->add_option("--model", args->request.model,
                       "the fitted model: its interaction function is drawn, its axes used");
   args->metrics.add_to(*command);
   args->reader.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      args->command = command_line(arguments);
-      return write_report(*args, out);
+      report::ComparisonRequest request = args->request;
+      request.metrics = args->metrics.options();
+      request.reader = args->reader.options();
+      request.command = command_line(arguments);
+      print_report(report::write_comparison_report(request), out);
+      return 0;
     };
   });
 }

@@ -1,28 +1,14 @@
-// What `report` writes, shared by `compare`: the exemplar and outputs read, evaluated and
-// judged, DIR/index.html and DIR/metrics.json.
+// What `report` prints of the report the library wrote (report::write_comparison_report), shared
+// by `compare`.
 #pragma once
 
 #include <ostream>
-#include <string>
-#include <utility>
-#include <vector>
 
-#include "tools/cli/flags.hpp"
-#include "tools/cli/stats_command.hpp"
+#include "libshapeproc/report/comparison_report.hpp"
 
 namespace shapeproc::cli {
 
-struct ReportRequest {
-  std::string exemplar, directory, model;  // model: optional
-  std::vector<std::string> outputs;
-  std::vector<std::string> labels;  // per output (empty: the file names)
-  MetricFlags metrics;
-  ReaderFlags reader;
-  std::string command;                                  // the command line, for the page
-  std::vector<std::pair<std::string, double>> timings;  // stage, seconds, shown first
-};
-
-// Writes the report; prints each output's one-line verdict, then where the page is.
-int write_report(const ReportRequest& request, std::ostream& out);
+// Each output's one-line verdict, where the page is, then each output's figures.
+void print_report(const report::ComparisonReport& report, std::ostream& out);
 
 }  // namespace shapeproc::cli

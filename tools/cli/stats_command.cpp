@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <iomanip>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
@@ -14,6 +16,7 @@
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/report/metrics_json.hpp"
 #include "tools/cli/commands.hpp"
 
 namespace shapeproc::cli {
@@ -23,20 +26,6 @@ namespace {
 // printf-style formatting of one number, for tables.
 using core::format_fixed;
 using core::format_general;
-
-nlohmann::json number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-nlohmann::json cdf_json(const metrics::Distribution& d, double range, int points = 33) {
-  nlohmann::json r = nlohmann::json::array(), f = nlohmann::json::array();
-  for (int k = 0; k < points; ++k) {
-    const double x = range * k / (points - 1);
-    r.push_back(x);
-    f.push_back(d.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.cdf(x)));
-  }
-  return {{"r", r}, {"F", f}, {"samples", d.samples}, {"mean", number(d.mean())}};
-}
 
 // An axis as `stats` tables it: its components to two decimals.
 std::string direction_components(const geometry::Vec3& v, int dimension) {
@@ -70,21 +59,7 @@ void print_novelty(const metrics::Novelty& n, const std::string& unit, std::ostr
       << '\n';
 }
 
-nlohmann::json novelty_json(const metrics::Novelty& n) {
-  auto measures = [](const metrics::CopyMeasures& m) {
-    return nlohmann::json{{"copy", m.copy},
-                          {"patch", m.patch},
-                          {"largest_patch", m.largest_patch},
-                          {"repetition", m.repetition}};
-  };
-  return {{"tolerance", n.tolerance},
-          {"output", measures(n.output)},
-          {"chance", measures(n.chance)},
-          {"lattice_exemplar", n.lattice_exemplar},
-          {"repeats_exemplar", n.repeats_exemplar}};
-}
-
-void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
+void print_evaluation(const evaluation::EvaluatedScene& scene, const evaluation::Evaluation& e,
                       const std::string& reference, std::ostream& out) {
   const metrics::SceneStatistics& s = e.statistics;
   const char* area = s.dimension == 2 ? "²" : "³";
@@ -168,40 +143,6 @@ void print_evaluation(const EvaluatedScene& scene, const Evaluation& e,
 
 }  // namespace
 
-EvaluatedScene read_evaluated_scene(const std::string& file, const ReaderFlags& reader,
-                                    const std::string& boundary) {
-  EvaluatedScene e;
-  e.file = file;
-  e.record = io::read_synthesis_record(file);
-  // A shapeproc output is read as written (its elements are its groups): --tile is for exemplars.
-  io::ReaderOptions options = reader.options();
-  if (e.record) options.tile = false;
-  e.scene = io::read_scene(file, options);
-  // A synthesised output's window is its domain box, which its record holds: mesh files have no
-  // window, and their elements' bounds (wrapped across a torus) are not it.
-  if (e.record && static_cast<int>(e.record->size.size()) == e.scene.dimension) {
-    geometry::Vec3 size = geometry::Vec3::Zero();
-    for (int axis = 0; axis < e.scene.dimension; ++axis)
-      size[axis] = e.record->size[static_cast<std::size_t>(axis)];
-    e.scene.window = geometry::Box3(geometry::Vec3::Zero(), size);
-  }
-  if (boundary == "torus") {
-    e.boundary = geometry::Boundary::torus;
-  } else if (boundary == "auto" && e.record) {
-    e.boundary = e.record->boundary;
-  } else if (boundary == "auto" && options.tile) {
-    e.boundary = geometry::Boundary::torus;  // a seamless tile is one period of a torus
-  }
-  if (e.scene.elements.empty())
-    throw core::InputError(file, 0, "the scene has no elements to measure");
-  return e;
-}
-
-EvaluatedScene read_exemplar(const std::string& file, const ReaderFlags& reader,
-                             const MetricFlags& flags) {
-  return read_evaluated_scene(file, reader, flags.boundary == "torus" ? "auto" : flags.boundary);
-}
-
 void MetricFlags::add_to(CLI::App& command) {
   command
       .add_option(
@@ -227,126 +168,24 @@ void MetricFlags::add_to(CLI::App& command) {
       ->capture_default_str();
 }
 
-metrics::StatisticsOptions MetricFlags::options(const EvaluatedScene& scene,
-                                                double at_range) const {
+evaluation::MetricOptions MetricFlags::options() const {
   if (!(range >= 0)) throw core::UsageError("--range must be positive");
   if (!(neighbourhood >= 0)) throw core::UsageError("--neighbourhood must be positive");
   if (!(proxy_tolerance > 0 && proxy_tolerance < 1))
     throw core::UsageError("--proxy-tolerance must be in (0, 1)");
-  metrics::StatisticsOptions o;
-  o.measurement.direction = direction_kind(direction);
-  o.measurement.directions = geometry::directions_or_default(directions, scene.scene.dimension);
-  o.measurement.periodic = scene.boundary == geometry::Boundary::torus;
-  o.measurement.proxy.tolerance = proxy_tolerance;
-  try {
-    geometry::DirectionBins bins(scene.scene.dimension, o.measurement.directions);
-  } catch (const std::invalid_argument& e) {
-    throw core::UsageError(std::string("--directions: ") + e.what());
-  }
+  evaluation::MetricOptions o;
+  o.boundary = boundary == "torus"  ? evaluation::BoundaryChoice::torus
+               : boundary == "open" ? evaluation::BoundaryChoice::open
+                                    : evaluation::BoundaryChoice::automatic;
   o.edge = edge == "border" ? metrics::EdgeTreatment::border
            : edge == "none" ? metrics::EdgeTreatment::none
                             : metrics::EdgeTreatment::automatic;
-  o.range = at_range > 0 ? at_range : range;
+  o.range = range;
+  o.neighbourhood = neighbourhood;
+  o.directions = directions;
+  o.direction = direction_kind(direction);
+  o.proxy_tolerance = proxy_tolerance;
   return o;
-}
-
-nlohmann::json MetricFlags::to_json() const {
-  return {{"boundary", boundary},
-          {"edge", edge},
-          {"range", range},
-          {"neighbourhood", neighbourhood},
-          {"directions", directions},
-          {"direction", direction},
-          {"proxy_tolerance", proxy_tolerance}};
-}
-
-Evaluation evaluate(const EvaluatedScene& scene, const MetricFlags& flags,
-                    const EvaluatedScene* reference,
-                    const metrics::SceneStatistics* reference_statistics,
-                    const geometry::Scene* drawing) {
-  Evaluation e;
-  if (reference && reference->scene.dimension != scene.scene.dimension) {
-    throw core::UsageError(scene.file + " is " + std::to_string(scene.scene.dimension) + "D but " +
-                           reference->file + " is " + std::to_string(reference->scene.dimension) +
-                           "D");
-  }
-  const double range = reference_statistics ? reference_statistics->range : 0.0;
-  e.statistics =
-      metrics::compute_statistics(scene.scene, flags.options(scene, range), core::Random(1));
-  if (reference && reference_statistics) {
-    e.comparison = metrics::compare(e.statistics, *reference_statistics);
-    e.neighbourhood = metrics::average_neighbourhood_distance(
-        scene.scene, scene.boundary, reference->scene, reference->boundary, flags.neighbourhood);
-    e.novelty = metrics::measure_novelty(drawing ? *drawing : reference->scene, scene.scene,
-                                         scene.boundary);
-  }
-  return e;
-}
-
-nlohmann::json evaluation_json(const EvaluatedScene& scene, const Evaluation& e) {
-  const metrics::SceneStatistics& s = e.statistics;
-  nlohmann::json categories = nlohmann::json::array();
-  for (std::size_t c = 0; c < s.categories.size(); ++c) {
-    nlohmann::json entry = {
-        {"name", s.categories[c]}, {"count", s.counts[c]}, {"intensity", s.intensity[c]}};
-    if (e.comparison) entry["intensity_ratio"] = number(e.comparison->intensity_ratio[c]);
-    categories.push_back(entry);
-  }
-  auto directional = [&](const metrics::DirectionalStatistics& d,
-                         const metrics::DistributionDistances* w) {
-    nlohmann::json j = {{"neighbours", d.neighbours},
-                        {"nearest", cdf_json(d.nearest, s.range)},
-                        {"pairs", cdf_json(d.pairs, s.range)}};
-    if (w) j["w1"] = {{"nearest", number(w->nearest)}, {"pairs", number(w->pairs)}};
-    return j;
-  };
-  nlohmann::json axes = nlohmann::json::array();
-  for (std::size_t k = 0; k < s.axes.size(); ++k) {
-    nlohmann::json a = directional(s.axes[k], e.comparison ? &e.comparison->axes[k] : nullptr);
-    const geometry::Vec3& v = s.axes[k].direction;
-    a["direction"] =
-        s.dimension == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
-    axes.push_back(a);
-  }
-  nlohmann::json correlation = {{"r", s.correlation_r}, {"g", nlohmann::json::array()}};
-  for (double g : s.correlation) correlation["g"].push_back(number(g));
-  nlohmann::json collisions = {
-      {"pairs", s.collisions.pairs.size()},
-      {"elements", s.collisions.elements},
-      {"fraction",
-       s.elements() > 0 ? static_cast<double>(s.collisions.elements) / s.elements() : 0.0},
-      {"list", s.collisions.pairs},
-      {"touching", s.collisions.touching.size()},
-      {"touching_list", s.collisions.touching}};
-  nlohmann::json j = {{"scene", scene.file},
-                      {"dimension", s.dimension},
-                      {"boundary", geometry::to_string(s.boundary)},
-                      {"edge", s.periodic()                               ? "none"
-                               : s.edge == metrics::EdgeTreatment::border ? "border"
-                                                                          : "none"},
-                      {"elements", s.elements()},
-                      {"window_measure", s.window_measure},
-                      {"units", scene.scene.units},
-                      {"range", s.range},
-                      {"mean_spacing", s.mean_spacing},
-                      {"categories", categories},
-                      {"collisions", collisions},
-                      {"all", directional(s.all, e.comparison ? &e.comparison->all : nullptr)},
-                      {"axes", axes},
-                      {"pair_correlation", correlation},
-                      {"seconds", s.seconds}};
-  if (e.comparison) j["w1_scale"] = e.comparison->scale;
-  if (e.novelty) j["novelty"] = novelty_json(*e.novelty);
-  if (e.neighbourhood) {
-    const metrics::NeighbourhoodDistance& n = *e.neighbourhood;
-    j["neighbourhood_distance"] = {{"mean", n.mean},
-                                   {"normalised", n.normalised},
-                                   {"radius", n.radius},
-                                   {"mean_neighbours", n.mean_neighbours},
-                                   {"output_centres", n.output_centres},
-                                   {"exemplar_centres", n.exemplar_centres}};
-  }
-  return j;
 }
 
 void add_stats_command(CLI::App& app, Action& action) {
@@ -371,21 +210,25 @@ void add_stats_command(CLI::App& app, Action& action) {
   args->reader.add_to(*command);
   command->callback([&action, args] {
     action = [args](std::ostream& out) {
-      std::optional<EvaluatedScene> reference;
+      const evaluation::MetricOptions options = args->metrics.options();
+      const io::ReaderOptions reader = args->reader.options();
+      std::optional<evaluation::EvaluatedScene> reference;
       std::optional<metrics::SceneStatistics> reference_statistics;
       if (!args->against.empty()) {
-        reference = read_exemplar(args->against, args->reader, args->metrics);
+        reference = evaluation::read_exemplar(args->against, reader, options);
         reference_statistics = metrics::compute_statistics(
-            reference->scene, args->metrics.options(*reference, 0.0), core::Random(1));
+            reference->scene, evaluation::statistics_options(*reference, options, 0.0),
+            core::Random(1));
       }
-      const EvaluatedScene scene =
-          read_evaluated_scene(args->scene, args->reader, args->metrics.boundary);
-      const Evaluation e = evaluate(scene, args->metrics, reference ? &*reference : nullptr,
-                                    reference_statistics ? &*reference_statistics : nullptr);
+      const evaluation::EvaluatedScene scene =
+          evaluation::read_evaluated_scene(args->scene, reader, options.boundary);
+      const evaluation::Evaluation e =
+          evaluation::evaluate(scene, options, reference ? &*reference : nullptr,
+                               reference_statistics ? &*reference_statistics : nullptr);
       if (args->json) {
-        nlohmann::json j = evaluation_json(scene, e);
+        nlohmann::json j = report::evaluation_json(scene, e);
         if (reference) j["against"] = args->against;
-        j["options"] = args->metrics.to_json();
+        j["options"] = report::metric_options_json(options);
         out << j.dump(2) << '\n';
       } else {
         if (reference) out << "against     " << args->against << '\n';
