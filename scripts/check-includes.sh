@@ -55,16 +55,16 @@ check_layering() {
 }
 check_layering libshapeproc allowed
 check_layering libshapeproc/methods method_allowed
-# A module's detail/ headers are its own: no other module, and not the command line, includes
-# them (tests may).
+# A module's detail/ headers (a method's: methods/PAPER/detail/) are its own: no other module or
+# method, and not the command line, includes them (tests may).
 while IFS= read -r line; do
   file=${line%%:*}
-  owner=$(sed -E 's#.*"libshapeproc/([a-z_]+)/detail/.*#\1#' <<< "$line")
+  owner=$(sed -E 's#.*"libshapeproc/([a-z0-9_/]+)/detail/.*#\1#' <<< "$line")
   case "$file" in
     libshapeproc/"$owner"/*) ;;
     *) echo "check-includes: $file includes a detail header of $owner: ${line#*:}"; status=1 ;;
   esac
-done < <(grep -rHE '^#include "libshapeproc/[a-z_]+/detail/' libshapeproc tools benchmarks || true)
+done < <(grep -rHE '^#include "libshapeproc/[a-z0-9_/]+/detail/' libshapeproc tools benchmarks || true)
 # The library never includes the command line.
 if grep -rqE '^#include "tools/' libshapeproc; then
   grep -rHE '^#include "tools/' libshapeproc | sed 's/^/check-includes: the library includes the CLI: /'

@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/fit/detail/existence_check.hpp"
+#include "libshapeproc/fit/detail/model_assembly.hpp"
+#include "libshapeproc/fit/detail/quadrature_design.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
-#include "libshapeproc/fit/existence_check.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
-#include "libshapeproc/fit/model_assembly.hpp"
-#include "libshapeproc/fit/quadrature_design.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
 #include "libshapeproc/model/interaction.hpp"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/constants.hpp"
-#include "libshapeproc/fit/quadrature_cell_internal.hpp"
+#include "libshapeproc/fit/detail/quadrature_cell_internal.hpp"
 
 namespace shapeproc::fit {
 

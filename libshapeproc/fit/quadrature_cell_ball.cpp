@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "libshapeproc/core/constants.hpp"
-#include "libshapeproc/fit/quadrature_cell_internal.hpp"
+#include "libshapeproc/fit/detail/quadrature_cell_internal.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 
 namespace shapeproc::fit {

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "libshapeproc/core/constants.hpp"
-#include "libshapeproc/fit/cell_cuts.hpp"
-#include "libshapeproc/fit/level_set_chords.hpp"
-#include "libshapeproc/fit/quadrature_cell_internal.hpp"
+#include "libshapeproc/fit/detail/cell_cuts.hpp"
+#include "libshapeproc/fit/detail/level_set_chords.hpp"
+#include "libshapeproc/fit/detail/quadrature_cell_internal.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 
 namespace shapeproc::fit {

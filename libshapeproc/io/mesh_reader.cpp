@@ -10,8 +10,8 @@
 #include <unordered_map>
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/io/mesh_header_check.hpp"
-#include "libshapeproc/io/mesh_tile_seams.hpp"
+#include "libshapeproc/io/detail/mesh_header_check.hpp"
+#include "libshapeproc/io/detail/mesh_tile_seams.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {

@@ -13,8 +13,8 @@
 #include "libshapeproc/geometry/stroke_ink.hpp"
 #include "libshapeproc/geometry/subpath_components.hpp"
 #include "libshapeproc/geometry/visual_elements.hpp"
+#include "libshapeproc/io/detail/svg_style_sheet.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
-#include "libshapeproc/io/svg_style_sheet.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {

@@ -13,7 +13,7 @@
 
 namespace shapeproc::model {
 
-// The pseudo-likelihood's quadrature (fit/quadrature_design.hpp).
+// The pseudo-likelihood's quadrature (fit/detail/quadrature_design.hpp).
 struct QuadratureRecord {
   bool lines = false;  // line quadrature; otherwise cells
   long long cells = 0;

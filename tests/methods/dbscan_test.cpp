@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/davison2018/dbscan.hpp"
+#include "libshapeproc/methods/davison2018/detail/dbscan.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/scene_io.hpp"
-#include "libshapeproc/methods/davison2018/growth_palette.hpp"
+#include "libshapeproc/methods/davison2018/detail/growth_palette.hpp"
 #include "libshapeproc/metrics/novelty.hpp"
 #include "tests/methods/method_scenes.hpp"
 #include "tests/test_support.hpp"

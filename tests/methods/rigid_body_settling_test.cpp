@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/physics/rigid_body_settling.hpp"
+#include "libshapeproc/methods/physics/detail/rigid_body_settling.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <utility>
 
-#include "libshapeproc/methods/davison2018/dbscan.hpp"
+#include "libshapeproc/methods/davison2018/detail/dbscan.hpp"
 
 namespace shapeproc::methods {
 

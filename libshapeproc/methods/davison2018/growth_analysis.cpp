@@ -6,7 +6,7 @@
 #include <string>
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/methods/davison2018/growth_palette.hpp"
+#include "libshapeproc/methods/davison2018/detail/growth_palette.hpp"
 
 namespace shapeproc::methods {
 

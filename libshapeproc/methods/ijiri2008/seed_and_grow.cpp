@@ -8,7 +8,7 @@
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/methods/common/element_reconstruction.hpp"
 #include "libshapeproc/methods/common/em_exemplar.hpp"
-#include "libshapeproc/methods/ijiri2008/local_growth.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/local_growth.hpp"
 
 namespace shapeproc::methods {
 

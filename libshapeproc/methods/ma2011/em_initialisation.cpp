@@ -9,7 +9,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
 #include "libshapeproc/methods/common/neighbourhood_search.hpp"
-#include "libshapeproc/methods/ma2011/patch_copy.hpp"
+#include "libshapeproc/methods/ma2011/detail/patch_copy.hpp"
 
 namespace shapeproc::methods {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "libshapeproc/methods/physics/rigid_body_settling.hpp"
+#include "libshapeproc/methods/physics/detail/rigid_body_settling.hpp"
 
 namespace shapeproc::methods {
 

@@ -6,7 +6,7 @@
 #include <Eigen/SVD>
 #include <memory>
 
-#include "libshapeproc/methods/physics/rigid_body_settling.hpp"
+#include "libshapeproc/methods/physics/detail/rigid_body_settling.hpp"
 
 namespace shapeproc::methods {
 

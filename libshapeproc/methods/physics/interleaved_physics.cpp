@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "libshapeproc/methods/common/element_reconstruction.hpp"
-#include "libshapeproc/methods/physics/rigid_body_settling.hpp"
+#include "libshapeproc/methods/physics/detail/rigid_body_settling.hpp"
 
 namespace shapeproc::methods {
 

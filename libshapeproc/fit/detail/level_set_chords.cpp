@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/level_set_chords.hpp"
+#include "libshapeproc/fit/detail/level_set_chords.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>

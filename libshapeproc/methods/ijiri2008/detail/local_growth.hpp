@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "libshapeproc/geometry/proxy.hpp"
-#include "libshapeproc/methods/ijiri2008/growth_graph.hpp"
-#include "libshapeproc/methods/ijiri2008/ring_relaxation.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/growth_graph.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/ring_relaxation.hpp"
 #include "libshapeproc/methods/ijiri2008/seed_and_grow.hpp"
 
 namespace shapeproc::methods {

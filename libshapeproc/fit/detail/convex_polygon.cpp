@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/convex_polygon.hpp"
+#include "libshapeproc/fit/detail/convex_polygon.hpp"
 
 namespace shapeproc::fit {
 

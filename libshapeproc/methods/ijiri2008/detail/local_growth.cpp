@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/ijiri2008/local_growth.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/local_growth.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "libshapeproc/io/mesh_tile_seams.hpp"
+#include "libshapeproc/io/detail/mesh_tile_seams.hpp"
 
 #include <cmath>
 #include <map>

@@ -1,4 +1,4 @@
-#include "libshapeproc/io/mesh_header_check.hpp"
+#include "libshapeproc/io/detail/mesh_header_check.hpp"
 
 #include <algorithm>
 #include <array>

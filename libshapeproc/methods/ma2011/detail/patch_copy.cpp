@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/ma2011/patch_copy.hpp"
+#include "libshapeproc/methods/ma2011/detail/patch_copy.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/ijiri2008/growth_graph.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/growth_graph.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -13,7 +13,7 @@
 #include <functional>
 #include <vector>
 
-#include "libshapeproc/methods/ijiri2008/growth_graph.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/growth_graph.hpp"
 
 namespace shapeproc::methods {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "libshapeproc/fit/quadrature_design.hpp"
+#include "libshapeproc/fit/detail/quadrature_design.hpp"
 
 namespace shapeproc::fit {
 

@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/model_assembly.hpp"
+#include "libshapeproc/fit/detail/model_assembly.hpp"
 
 #include <cmath>
 #include <limits>

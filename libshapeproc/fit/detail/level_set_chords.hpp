@@ -14,7 +14,7 @@
 
 #include <vector>
 
-#include "libshapeproc/fit/convex_polygon.hpp"
+#include "libshapeproc/fit/detail/convex_polygon.hpp"
 
 namespace shapeproc::fit {
 

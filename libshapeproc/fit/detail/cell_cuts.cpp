@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/cell_cuts.hpp"
+#include "libshapeproc/fit/detail/cell_cuts.hpp"
 
 #include <algorithm>
 #include <cmath>

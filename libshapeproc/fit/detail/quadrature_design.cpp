@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/quadrature_design.hpp"
+#include "libshapeproc/fit/detail/quadrature_design.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "libshapeproc/fit/existence_check.hpp"
+#include "libshapeproc/fit/detail/existence_check.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/ijiri2008/ring_relaxation.hpp"
+#include "libshapeproc/methods/ijiri2008/detail/ring_relaxation.hpp"
 
 #include <algorithm>
 

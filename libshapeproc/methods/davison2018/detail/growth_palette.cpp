@@ -1,4 +1,4 @@
-#include "libshapeproc/methods/davison2018/growth_palette.hpp"
+#include "libshapeproc/methods/davison2018/detail/growth_palette.hpp"
 
 #include <algorithm>
 #include <string>

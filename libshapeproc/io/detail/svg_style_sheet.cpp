@@ -1,4 +1,4 @@
-#include "libshapeproc/io/svg_style_sheet.hpp"
+#include "libshapeproc/io/detail/svg_style_sheet.hpp"
 
 #include "libshapeproc/io/text.hpp"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "libshapeproc/fit/convex_polygon.hpp"
+#include "libshapeproc/fit/detail/convex_polygon.hpp"
 
 namespace shapeproc::fit {
 
