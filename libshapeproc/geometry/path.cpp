@@ -169,4 +169,47 @@ bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vec
   return false;
 }
 
+namespace {
+
+// Whether segment cd runs beside segment ab, within `tolerance` of its line, along more than
+// twice the tolerance of ab's length (a crossing or a touch at a point runs beside it for about
+// the tolerance at most, unless the segments meet at a very small angle).
+bool segments_run_close(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                        double tolerance) {
+  const double length = (b - a).norm();
+  if (!(length > 2 * tolerance)) return false;
+  const Vec2 along = (b - a) / length;
+  const double tc = along.dot(c - a), td = along.dot(d - a);
+  const double low = std::max(0.0, std::min(tc, td)), high = std::min(length, std::max(tc, td));
+  if (!(high - low > 2 * tolerance)) return false;
+  const auto at = [&](double t) { return c + (t - tc) / (td - tc) * (d - c); };
+  const auto off_line = [&](const Vec2& p) {
+    return std::abs(along.x() * (p.y() - a.y()) - along.y() * (p.x() - a.x()));
+  };
+  return off_line(at(low)) <= tolerance && off_line(at(high)) <= tolerance;
+}
+
+}  // namespace
+
+bool polylines_run_close(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
+                         bool b_closed, double tolerance) {
+  const std::size_t na = a.size() < 2 ? 0 : (a_closed ? a.size() : a.size() - 1);
+  const std::size_t nb = b.size() < 2 ? 0 : (b_closed ? b.size() : b.size() - 1);
+  const Vec2 slack = Vec2::Constant(tolerance);
+  for (std::size_t i = 0; i < na; ++i) {
+    const Vec2& p = a[i];
+    const Vec2& q = a[(i + 1) % a.size()];
+    Box2 box_pq = Box2(p).extend(q);
+    box_pq.extend(box_pq.min() - slack).extend(box_pq.max() + slack);
+    for (std::size_t j = 0; j < nb; ++j) {
+      const Vec2& r = b[j];
+      const Vec2& s = b[(j + 1) % b.size()];
+      if (!box_pq.intersects(Box2(r).extend(s))) continue;
+      if (segments_run_close(p, q, r, s, tolerance) || segments_run_close(r, s, p, q, tolerance))
+        return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace shapeproc::geometry

@@ -57,4 +57,10 @@ int winding_number(const std::vector<Vec2>& polygon, const Vec2& point);
 bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
                        bool b_closed);
 
+// True when the outlines run side by side within `tolerance` of each other along more than twice
+// the tolerance: pieces of ink a hair apart, such as the two halves of a shape a tile's border
+// cut and a drawing program wrote 0.02 px apart. Touching or crossing at a point does not count.
+bool polylines_run_close(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
+                         bool b_closed, double tolerance);
+
 }  // namespace shapeproc::geometry

@@ -34,6 +34,18 @@ struct Drawn {
 };
 
 constexpr double kBorderSnap = 1e-3;
+// Pieces of ink whose outlines run side by side closer than this (in the drawing's units: a
+// tenth of a pixel of an SVG at its own scale) are one piece: no one sees such a gap, and drawing
+// programs leave them where a tile's border cut a shape in two (one half ending at y = 39.977,
+// the other starting at y = 40).
+constexpr double kInkGap = 0.1;
+
+// Whether two boxes meet or lie within kInkGap of each other.
+bool near(const Box2& a, const Box2& b) {
+  Box2 wider = a;
+  wider.extend(a.min() - Vec2::Constant(kInkGap)).extend(a.max() + Vec2::Constant(kInkGap));
+  return wider.intersects(b);
+}
 
 // Another subpath joined to this one, its copy moved by `shift` (a whole number of periods).
 struct Link {
@@ -194,13 +206,14 @@ class Grouping {
         // b moved by the shift meets a: b's own box meets a's box moved back (a little wider,
         // for rounding; the exact test follows).
         Box2 query = moved(subpaths_[i].box, -shifts_[s]);
-        const double slack = 1e-9 * (1.0 + query.sizes().maxCoeff() + shifts_[s].norm());
+        const double slack =
+            kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shifts_[s].norm());
         query.extend(query.min() - Vec2::Constant(slack))
             .extend(query.max() + Vec2::Constant(slack));
         tree.for_each_intersecting(query, boxes, [&](int found) {
           const auto j = static_cast<std::size_t>(found);
           if ((j > i || (j == i && !shifts_[s].isZero())) &&
-              subpaths_[i].box.intersects(moved(subpaths_[j].box, shifts_[s])))
+              near(subpaths_[i].box, moved(subpaths_[j].box, shifts_[s])))
             pairs.emplace_back(j, s);
         });
       }
@@ -210,7 +223,9 @@ class Grouping {
         const Subpath &a = subpaths_[i], &b = subpaths_[j];
         moved_polyline = b.polyline;
         for (Vec2& p : moved_polyline) p += shift;
-        if (polylines_overlap(a.polyline, a.closed, moved_polyline, b.closed)) link(i, j, shift);
+        if (polylines_overlap(a.polyline, a.closed, moved_polyline, b.closed) ||
+            polylines_run_close(a.polyline, a.closed, moved_polyline, b.closed, kInkGap))
+          link(i, j, shift);
       }
     }
   }

@@ -369,6 +369,7 @@ void SvgReader::regroup_as_seen() {
   visual.nested_separate = options_.nested_separate;
   visual.tile = options_.tile;
   visual.keep_elements = rule_ != ElementRule::visual;
+  const std::size_t drawn = scene_.elements.size();  // visual: a drawable each
   geometry::VisualElements regrouped = geometry::visual_elements(scene_, visual);
   if (regrouped.scene.elements.empty()) {
     throw core::InputError(file_, 0, "no ink inside the tile");
@@ -380,6 +381,14 @@ void SvgReader::regroup_as_seen() {
         std::to_string(subpaths) + " subpaths formed " + std::to_string(elements) +
         " elements as seen: if the drawing's elements are smaller, try --nested separate or "
         "--elements subpaths");
+  }
+  // A file of a few paths that read as seen makes a few elements more or fewer: likely one path
+  // per element, with pieces of ink the reader sees apart (or joined).
+  if (rule_ == ElementRule::visual && drawn >= 4 && elements != drawn && 2 * elements >= drawn &&
+      elements <= 2 * drawn) {
+    regrouped.scene.notes.push_back(
+        "the file draws " + std::to_string(drawn) + " shapes, read as seen they make " +
+        std::to_string(elements) + " elements: if each shape is one element, try --elements paths");
   }
   scene_ = std::move(regrouped.scene);
 }

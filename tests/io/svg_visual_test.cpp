@@ -209,5 +209,47 @@ TEST(VisualElements, MotifWrappingAroundTheTileIsNoted) {
   EXPECT_NE(scene.notes[0].find("wraps around the tile"), std::string::npos);
 }
 
+// A 40 × 40 tile repeated 3 × 3, as a script writes one: a dot, and a bar the tile's top border
+// cut in two, the halves written as one path whose pieces stand `gap` apart at the seam (as a
+// drawing program rounds them: one ends at y = 39.977, the next starts at 40).
+std::string tiled_three_by_three(double gap) {
+  std::string body;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      const double x = 40.0 * i, y = 40.0 * j;
+      body += "<path d=\"M" + std::to_string(x + 5) + ' ' + std::to_string(y + 10) +
+              "h6v6h-6z\"/>";
+      if (j < 2) {
+        const double seam = y + 40;
+        body += "<path d=\"M" + std::to_string(x + 20) + ' ' + std::to_string(seam - 6) +
+                "h10v" + std::to_string(6 - gap) + "h-10z M" + std::to_string(x + 20) + ' ' +
+                std::to_string(seam) + "h10v6h-10z\"/>";
+      }
+    }
+  }
+  return body;
+}
+
+TEST(VisualElements, PiecesAHairApartAtASeamAreOneElement) {
+  // 9 dots and 6 bars, each bar one path of two pieces 0.023 apart: 15 elements, as drawn.
+  const Scene joined = read(tiled_three_by_three(0.023), false, false, "0 0 120 120");
+  EXPECT_EQ(joined.elements.size(), 15u);
+  EXPECT_TRUE(joined.notes.empty());
+  // A gap a person sees (1 unit) keeps the halves apart, and the reader says that the file's
+  // shapes and the elements as seen disagree, naming the option.
+  const Scene apart = read(tiled_three_by_three(1.0), false, false, "0 0 120 120");
+  EXPECT_EQ(apart.elements.size(), 21u);
+  ASSERT_EQ(apart.notes.size(), 1u);
+  EXPECT_NE(apart.notes[0].find("--elements paths"), std::string::npos) << apart.notes[0];
+  // Shapes meeting at a corner a hair's breadth apart stay two: only outlines that run side by
+  // side join.
+  EXPECT_EQ(count(R"(<rect x="10" y="10" width="10" height="10"/>)"
+                  R"(<rect x="20.02" y="20.02" width="10" height="10"/>)"),
+            2u);
+  EXPECT_EQ(count(R"(<rect x="10" y="10" width="10" height="10"/>)"
+                  R"(<rect x="20.02" y="10" width="10" height="10"/>)"),
+            1u);
+}
+
 }  // namespace
 }  // namespace shapeproc::io
