@@ -15,6 +15,7 @@ EvaluatedScene read_evaluated_scene(const std::string& file, io::ReaderOptions r
   e.record = io::read_synthesis_record(file);
   // A shapeproc output is read as written (its elements are its groups): tiles are exemplars.
   if (e.record) reader.tile = false;
+  reader.empty_outputs = true;  // a chain that ended empty is judged, not refused
   e.scene = io::read_scene(file, reader);
   // A synthesised output's window is its domain box, which its record holds: mesh files have no
   // window, and their elements' bounds (wrapped across a torus) are not it.
@@ -31,16 +32,19 @@ EvaluatedScene read_evaluated_scene(const std::string& file, io::ReaderOptions r
   } else if (boundary == BoundaryChoice::automatic && reader.tile) {
     e.boundary = geometry::Boundary::torus;  // a seamless tile is one period of a torus
   }
-  if (e.scene.elements.empty())
+  if (e.scene.elements.empty() && !e.record)
     throw core::InputError(file, 0, "the scene has no elements to measure");
   return e;
 }
 
 EvaluatedScene read_exemplar(const std::string& file, const io::ReaderOptions& reader,
                              const MetricOptions& options) {
-  return read_evaluated_scene(
+  EvaluatedScene e = read_evaluated_scene(
       file, reader,
       options.boundary == BoundaryChoice::torus ? BoundaryChoice::automatic : options.boundary);
+  if (e.scene.elements.empty())
+    throw core::InputError(file, 0, "the exemplar has no elements to compare with");
+  return e;
 }
 
 metrics::StatisticsOptions statistics_options(const EvaluatedScene& scene,
@@ -76,6 +80,9 @@ Evaluation evaluate(const EvaluatedScene& scene, const MetricOptions& options,
                            reference->file + " is " + std::to_string(reference->scene.dimension) +
                            "D");
   }
+  if (scene.scene.elements.empty())
+    throw core::InputError(
+        scene.file, 0, "the output holds no element (its chain ended empty): nothing to measure");
   const double range = reference_statistics ? reference_statistics->range : 0.0;
   e.statistics = metrics::compute_statistics(scene.scene, statistics_options(scene, options, range),
                                              core::Random(1));

@@ -39,8 +39,9 @@ struct EvaluatedScene {
 };
 
 // Reads `file` with `reader` (a synthesised output as written: its elements are its groups, and
-// its window is its domain's box); the boundary is `boundary`'s. Throws core::InputError for a
-// scene without elements.
+// its window is its domain's box); the boundary is `boundary`'s. A synthesised output may be
+// empty (a chain that ended with no element); throws core::InputError for any other scene
+// without elements.
 EvaluatedScene read_evaluated_scene(const std::string& file, io::ReaderOptions reader,
                                     BoundaryChoice boundary);
 

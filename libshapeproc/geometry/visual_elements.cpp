@@ -206,8 +206,7 @@ class Grouping {
         // b moved by the shift meets a: b's own box meets a's box moved back (a little wider,
         // for rounding; the exact test follows).
         Box2 query = moved(subpaths_[i].box, -shifts_[s]);
-        const double slack =
-            kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shifts_[s].norm());
+        const double slack = kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shifts_[s].norm());
         query.extend(query.min() - Vec2::Constant(slack))
             .extend(query.max() + Vec2::Constant(slack));
         tree.for_each_intersecting(query, boxes, [&](int found) {

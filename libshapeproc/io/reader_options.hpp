@@ -52,6 +52,9 @@ struct ReaderOptions {
   CategoryRule category_by;
   MeshSplit mesh_split = MeshSplit::components;
   std::optional<WindowOption> window;
+  // A synthesised output of the project's own (an SVG carrying its record) may hold no element:
+  // a chain that ended empty. Read it as an empty scene instead of refusing it.
+  bool empty_outputs = false;
 };
 
 }  // namespace shapeproc::io

@@ -315,6 +315,8 @@ Scene SvgReader::read() {
   if (root_state) walk_container(root, *root_state);
   set_window_from_root(root);
   if (scene_.elements.empty()) {
+    if (options_.empty_outputs && root.find_child_by_attribute("id", "shapeproc"))
+      return std::move(scene_);
     throw core::InputError(file_, 0,
                            "no elements found (nothing drawable outside <defs> and hidden parts)");
   }

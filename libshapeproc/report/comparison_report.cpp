@@ -66,6 +66,8 @@ struct Measured {
   std::string exemplar_note;
   evaluation::Evaluation exemplar_eval;
   std::vector<evaluation::EvaluatedScene> outputs;
+  std::vector<std::string> labels;  // per output measured
+  std::vector<std::string> empty;   // outputs that hold no element
   std::vector<evaluation::Evaluation> evals;
   std::vector<std::vector<evaluation::Verdict>> verdicts;
 };
@@ -83,8 +85,16 @@ void measure_report(const ComparisonRequest& request, const evaluation::MetricOp
     }
   }
   m.exemplar_eval = evaluation::evaluate(m.exemplar, flags);
-  for (const std::string& file : request.outputs) {
-    m.outputs.push_back(evaluation::read_evaluated_scene(file, request.reader, flags.boundary));
+  for (std::size_t k = 0; k < request.outputs.size(); ++k) {
+    const std::string& file = request.outputs[k];
+    evaluation::EvaluatedScene output =
+        evaluation::read_evaluated_scene(file, request.reader, flags.boundary);
+    if (output.scene.elements.empty()) {  // a chain that ended empty: named, not measured
+      m.empty.push_back(file);
+      continue;
+    }
+    m.outputs.push_back(std::move(output));
+    m.labels.push_back(request.labels.empty() ? file : request.labels[k]);
     // Novelty against the drawing itself, not its repeat (whose period may be the output's).
     m.evals.push_back(evaluation::evaluate(m.outputs.back(), flags, &m.exemplar,
                                            &m.exemplar_eval.statistics, &tile));
@@ -118,10 +128,6 @@ void add_model(const model::ShapeProcessModel& model, const Measured& m, Report&
                                      {"proxies", seconds.proxies},
                                      {"quadrature", seconds.quadrature}})
     r.timings.emplace_back(std::string("fit: ") + stage, value);
-}
-
-std::string label_of(const ComparisonRequest& request, std::size_t i) {
-  return request.labels.empty() ? request.outputs[i] : request.labels[i];
 }
 
 // metrics.json: every measure of the exemplar and the outputs, and the outputs' verdicts.
@@ -160,12 +166,16 @@ ComparisonReport write_comparison_report(const ComparisonRequest& request) {
   }
   Measured m;
   measure_report(request, flags, model.get(), m);
+  if (m.outputs.empty())
+    throw core::InputError(m.empty.front(), 0,
+                           "the output holds no element (its chain ended empty): nothing to "
+                           "compare with the exemplar");
 
   Report r;
   r.exemplar = {request.exemplar, &m.exemplar.scene, &m.exemplar_eval.statistics,
                 nullptr,          nullptr,           m.exemplar_note};
   for (std::size_t i = 0; i < m.outputs.size(); ++i) {
-    r.outputs.push_back({label_of(request, i), &m.outputs[i].scene, &m.evals[i].statistics,
+    r.outputs.push_back({m.labels[i], &m.outputs[i].scene, &m.evals[i].statistics,
                          &*m.evals[i].comparison, &*m.evals[i].neighbourhood,
                          m.outputs[i].record ? m.outputs[i].record->summary() : std::string(),
                          &m.verdicts[i]});
@@ -186,12 +196,13 @@ ComparisonReport write_comparison_report(const ComparisonRequest& request) {
   write_report(r, request.directory);
   write_verdict_markdown(r, std::filesystem::path(request.directory) / "verdicts.md");
   ComparisonReport result;
+  result.empty_outputs = m.empty;
   result.index = (std::filesystem::path(request.directory) / "index.html").string();
   for (std::size_t i = 0; i < m.outputs.size(); ++i) {
     const evaluation::Evaluation& e = m.evals[i];
     OutputSummary summary;
-    summary.label = label_of(request, i);
-    summary.file = request.outputs[i];
+    summary.label = m.labels[i];
+    summary.file = m.outputs[i].file;
     summary.verdicts = evaluation::summary(m.verdicts[i]);
     summary.elements = e.statistics.elements();
     summary.colliding_pairs = e.statistics.collisions.pairs.size();

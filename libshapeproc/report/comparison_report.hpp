@@ -38,10 +38,12 @@ struct OutputSummary {
 struct ComparisonReport {
   std::string index;  // DIR/index.html
   std::vector<OutputSummary> outputs;
+  // Outputs left off the page because they hold no element (a chain that ended empty).
+  std::vector<std::string> empty_outputs;
 };
 
 // Throws core::UsageError when the directory names a file, core::InputError for an unreadable
-// input. Files are written whole or not at all.
+// input or when every output is empty. Files are written whole or not at all.
 ComparisonReport write_comparison_report(const ComparisonRequest& request);
 
 }  // namespace shapeproc::report

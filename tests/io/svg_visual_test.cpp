@@ -217,12 +217,11 @@ std::string tiled_three_by_three(double gap) {
   for (int j = 0; j < 3; ++j) {
     for (int i = 0; i < 3; ++i) {
       const double x = 40.0 * i, y = 40.0 * j;
-      body += "<path d=\"M" + std::to_string(x + 5) + ' ' + std::to_string(y + 10) +
-              "h6v6h-6z\"/>";
+      body += "<path d=\"M" + std::to_string(x + 5) + ' ' + std::to_string(y + 10) + "h6v6h-6z\"/>";
       if (j < 2) {
         const double seam = y + 40;
-        body += "<path d=\"M" + std::to_string(x + 20) + ' ' + std::to_string(seam - 6) +
-                "h10v" + std::to_string(6 - gap) + "h-10z M" + std::to_string(x + 20) + ' ' +
+        body += "<path d=\"M" + std::to_string(x + 20) + ' ' + std::to_string(seam - 6) + "h10v" +
+                std::to_string(6 - gap) + "h-10z M" + std::to_string(x + 20) + ' ' +
                 std::to_string(seam) + "h10v6h-10z\"/>";
       }
     }

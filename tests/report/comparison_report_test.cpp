@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/io/scene_io.hpp"
+#include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/report/metrics_json.hpp"
 #include "tests/test_support.hpp"
 
@@ -53,6 +55,38 @@ TEST(ComparisonReport, RefusesADirectoryThatIsAFileAndWritesNothing) {
   request.directory = file.string();
   EXPECT_THROW(write_comparison_report(request), core::UsageError);
   EXPECT_EQ(testing::read_file(file), "x");
+}
+
+// An output whose chain ended empty, as `synthesize` writes it.
+std::string write_empty_output(const testing::TempDir& dir) {
+  geometry::Scene empty = io::read_scene(kDots, {});
+  empty.elements.clear();
+  synthesis::SynthesisRecord record;
+  record.method = "shape-process";
+  record.set_domain(geometry::Domain::from_sizes({200, 200}, geometry::Boundary::torus));
+  const auto file = dir.file("empty.svg");
+  io::write_scene(empty, file, io::synthesis_provenance(record));
+  return file.string();
+}
+
+TEST(ComparisonReport, AnEmptyOutputIsNamedAndLeftOffThePage) {
+  const testing::TempDir dir;
+  const std::string empty = write_empty_output(dir);
+  ComparisonRequest request;
+  request.exemplar = kDots;
+  request.outputs = {empty, kDots};
+  request.directory = (dir.path() / "r").string();
+  const ComparisonReport report = write_comparison_report(request);
+  ASSERT_EQ(report.outputs.size(), 1u);
+  EXPECT_EQ(report.outputs[0].file, kDots);
+  EXPECT_EQ(report.empty_outputs, std::vector<std::string>{empty});
+  // Every output empty: nothing to compare, and nothing written.
+  request.outputs = {empty};
+  request.directory = (dir.path() / "none").string();
+  EXPECT_THROW(write_comparison_report(request), core::InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "none"));
+  // An empty output read as an exemplar is refused too.
+  EXPECT_THROW(evaluation::read_exemplar(empty, {}, {}), core::InputError);
 }
 
 TEST(MetricsJson, NamesTheOptionsAsTheCommandsDo) {

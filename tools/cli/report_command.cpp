@@ -21,6 +21,8 @@ void print_report(const report::ComparisonReport& report, std::ostream& out) {
         << " colliding pairs, W1 nearest " << o.w1_nearest << ", W1 pairs " << o.w1_pairs
         << ", neighbourhood distance " << o.neighbourhood << " a²\n";
   }
+  for (const std::string& file : report.empty_outputs)
+    out << "not on the page: " << file << " (it holds no element: its chain ended empty)\n";
 }
 
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
