@@ -191,25 +191,9 @@ bool segments_run_close(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
 
 }  // namespace
 
-bool polylines_run_close(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
-                         bool b_closed, double tolerance) {
-  const std::size_t na = a.size() < 2 ? 0 : (a_closed ? a.size() : a.size() - 1);
-  const std::size_t nb = b.size() < 2 ? 0 : (b_closed ? b.size() : b.size() - 1);
-  const Vec2 slack = Vec2::Constant(tolerance);
-  for (std::size_t i = 0; i < na; ++i) {
-    const Vec2& p = a[i];
-    const Vec2& q = a[(i + 1) % a.size()];
-    Box2 box_pq = Box2(p).extend(q);
-    box_pq.extend(box_pq.min() - slack).extend(box_pq.max() + slack);
-    for (std::size_t j = 0; j < nb; ++j) {
-      const Vec2& r = b[j];
-      const Vec2& s = b[(j + 1) % b.size()];
-      if (!box_pq.intersects(Box2(r).extend(s))) continue;
-      if (segments_run_close(p, q, r, s, tolerance) || segments_run_close(r, s, p, q, tolerance))
-        return true;
-    }
-  }
-  return false;
+bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double tolerance) {
+  return segments_overlap(a, b, c, d) || segments_run_close(a, b, c, d, tolerance) ||
+         segments_run_close(c, d, a, b, tolerance);
 }
 
 }  // namespace shapeproc::geometry

@@ -57,10 +57,10 @@ int winding_number(const std::vector<Vec2>& polygon, const Vec2& point);
 bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
                        bool b_closed);
 
-// True when the outlines run side by side within `tolerance` of each other along more than twice
-// the tolerance: pieces of ink a hair apart, such as the two halves of a shape a tile's border
-// cut and a drawing program wrote 0.02 px apart. Touching or crossing at a point does not count.
-bool polylines_run_close(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,
-                         bool b_closed, double tolerance);
+// True when segments ab and cd cross, run together along a piece of positive length, or run side
+// by side within `tolerance` of each other along more than twice the tolerance: pieces of ink a
+// hair apart, such as the two halves of a shape a tile's border cut and a drawing program wrote
+// 0.02 px apart. Touching or crossing at a point, or corners a hair apart, do not count.
+bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double tolerance);
 
 }  // namespace shapeproc::geometry

@@ -40,13 +40,6 @@ constexpr double kBorderSnap = 1e-3;
 // the other starting at y = 40).
 constexpr double kInkGap = 0.1;
 
-// Whether two boxes meet or lie within kInkGap of each other.
-bool near(const Box2& a, const Box2& b) {
-  Box2 wider = a;
-  wider.extend(a.min() - Vec2::Constant(kInkGap)).extend(a.max() + Vec2::Constant(kInkGap));
-  return wider.intersects(b);
-}
-
 // Another subpath joined to this one, its copy moved by `shift` (a whole number of periods).
 struct Link {
   std::size_t to;
@@ -194,39 +187,53 @@ class Grouping {
 
   // Outlines that cross or run together, also with the copies one period away. Candidate pairs
   // come from a box tree (all pairs took minutes on 200,000 circles).
+  // Pieces whose outlines meet (segments_meet), the pieces and their copies a period away: the
+  // outlines' segments in one tree, so that a segment is tested against the few near it, not
+  // every segment of every piece whose box meets its piece's box (nested outlines).
   void join_crossing_outlines() {
-    std::vector<Box2> boxes(subpaths_.size());
-    for (std::size_t i = 0; i < subpaths_.size(); ++i) boxes[i] = subpaths_[i].box;
+    std::vector<Box2> boxes;
+    std::vector<std::pair<std::size_t, std::size_t>> owner;  // per segment: subpath, first point
+    for (std::size_t i = 0; i < subpaths_.size(); ++i) {
+      const std::vector<Vec2>& line = subpaths_[i].polyline;
+      for (std::size_t k = 0; k < segment_count(subpaths_[i]); ++k) {
+        boxes.push_back(Box2(line[k]).extend(line[(k + 1) % line.size()]));
+        owner.emplace_back(i, k);
+      }
+    }
     const BoxTree<2> tree = BoxTree<2>::build(boxes);
-    std::vector<Vec2> moved_polyline;
     std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (j, shift), in the links' order
     for (std::size_t i = 0; i < subpaths_.size(); ++i) {
       pairs.clear();
-      for (std::size_t s = 0; s < shifts_.size(); ++s) {
-        // b moved by the shift meets a: b's own box meets a's box moved back (a little wider,
-        // for rounding; the exact test follows).
-        Box2 query = moved(subpaths_[i].box, -shifts_[s]);
-        const double slack = kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shifts_[s].norm());
-        query.extend(query.min() - Vec2::Constant(slack))
-            .extend(query.max() + Vec2::Constant(slack));
-        tree.for_each_intersecting(query, boxes, [&](int found) {
-          const auto j = static_cast<std::size_t>(found);
-          if ((j > i || (j == i && !shifts_[s].isZero())) &&
-              near(subpaths_[i].box, moved(subpaths_[j].box, shifts_[s])))
-            pairs.emplace_back(j, s);
-        });
+      const std::vector<Vec2>& line = subpaths_[i].polyline;
+      for (std::size_t k = 0; k < segment_count(subpaths_[i]); ++k) {
+        const Vec2 &p = line[k], &q = line[(k + 1) % line.size()];
+        for (std::size_t s = 0; s < shifts_.size(); ++s) {
+          const Vec2& shift = shifts_[s];
+          // Segments near this one moved back by the shift (a little wider, for rounding).
+          Box2 query = moved(Box2(p).extend(q), -shift);
+          const double slack = kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shift.norm());
+          query.extend(query.min() - Vec2::Constant(slack))
+              .extend(query.max() + Vec2::Constant(slack));
+          tree.for_each_intersecting(query, boxes, [&](int found) {
+            const auto [j, m] = owner[static_cast<std::size_t>(found)];
+            if (!(j > i || (j == i && !shift.isZero()))) return;
+            const std::vector<Vec2>& other = subpaths_[j].polyline;
+            if (segments_meet(p, q, other[m] + shift, other[(m + 1) % other.size()] + shift,
+                              kInkGap))
+              pairs.emplace_back(j, s);
+          });
+        }
       }
       std::sort(pairs.begin(), pairs.end());
-      for (const auto& [j, s] : pairs) {
-        const Vec2& shift = shifts_[s];
-        const Subpath &a = subpaths_[i], &b = subpaths_[j];
-        moved_polyline = b.polyline;
-        for (Vec2& p : moved_polyline) p += shift;
-        if (polylines_overlap(a.polyline, a.closed, moved_polyline, b.closed) ||
-            polylines_run_close(a.polyline, a.closed, moved_polyline, b.closed, kInkGap))
-          link(i, j, shift);
-      }
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      for (const auto& [j, s] : pairs) link(i, j, shifts_[s]);
     }
+  }
+
+  // The segments of a subpath's outline: its closing side included when it is closed.
+  static std::size_t segment_count(const Subpath& s) {
+    const std::size_t n = s.polyline.size();
+    return n < 2 ? 0 : (s.closed ? n : n - 1);
   }
 
   // A point of the subpath's outline away from its vertices (the midpoint of its longest side):

@@ -95,13 +95,6 @@ pugi::xml_attribute attribute_by_local_name(pugi::xml_node node, std::string_vie
   return {};
 }
 
-bool has_class(pugi::xml_node node, const std::string& name) {
-  for (const std::string& c : split(node.attribute("class").value(), ' ')) {
-    if (c == name) return true;
-  }
-  return false;
-}
-
 // What a node inherits and carries down the tree.
 struct State {
   Affine2 transform = Affine2::Identity();
@@ -162,7 +155,7 @@ class SvgReader {
   ElementRule rule_ = ElementRule::groups;  // options_.elements, decided for this file
   pugi::xml_document document_;
   std::unordered_map<std::string, pugi::xml_node> ids_;
-  std::vector<CssRule> css_;
+  StyleSheet css_;
   std::optional<Box2> window_rect_;
   pugi::xml_node window_node_;
   Scene scene_;
@@ -204,19 +197,11 @@ std::optional<State> SvgReader::enter(pugi::xml_node node, const State& parent) 
     if (accept(a.name())) declarations.emplace_back(a.name(), std::string(trim(a.value())));
   }
   // Style sheet rules by specificity, then document order.
-  std::vector<const CssRule*> matching;
   const std::string tag = local_name(node);
-  const std::string id = node.attribute("id").value();
-  for (const CssRule& rule : css_) {
-    if (!rule.id.empty() ? rule.id == id
-                         : (rule.tag.empty() || rule.tag == tag) &&
-                               (rule.class_name.empty() || has_class(node, rule.class_name))) {
-      matching.push_back(&rule);
-    }
-  }
-  std::stable_sort(matching.begin(), matching.end(), [](const CssRule* a, const CssRule* b) {
-    return std::tie(a->specificity, a->order) < std::tie(b->specificity, b->order);
-  });
+  const std::vector<const CssRule*> matching =
+      css_.empty()
+          ? std::vector<const CssRule*>()
+          : css_.matching(tag, node.attribute("id").value(), node.attribute("class").value());
   for (const CssRule* rule : matching) {
     for (const auto& d : rule->declarations) {
       if (accept(d.first)) declarations.push_back(d);
@@ -286,8 +271,7 @@ Scene SvgReader::read() {
       }
       if (const char* id = node.attribute("id").value(); *id) reader->ids_.emplace(id, node);
       if (local_name(node) == "style") {
-        auto rules = parse_style_sheet(node.child_value(), *order);
-        reader->css_.insert(reader->css_.end(), rules.begin(), rules.end());
+        reader->css_.add(parse_style_sheet(node.child_value(), *order));
       }
       if (reader->is_window(node) && !reader->window_node_) reader->window_node_ = node;
       return true;

@@ -1,5 +1,8 @@
 #include "libshapeproc/io/detail/svg_style_sheet.hpp"
 
+#include <algorithm>
+#include <tuple>
+
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -21,7 +24,7 @@ Declarations parse_declarations(std::string_view text) {
 
 std::vector<CssRule> parse_style_sheet(std::string text, int& order) {
   // Strip comments.
-  for (std::size_t start; (start = text.find("/*")) != std::string::npos;) {
+  for (std::size_t start = 0; (start = text.find("/*", start)) != std::string::npos;) {
     const std::size_t end = text.find("*/", start + 2);
     text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
   }
@@ -57,6 +60,44 @@ std::vector<CssRule> parse_style_sheet(std::string text, int& order) {
     pos = close + 1;
   }
   return rules;
+}
+
+void StyleSheet::add(std::vector<CssRule> rules) {
+  for (CssRule& rule : rules) {
+    const std::size_t index = rules_.size();
+    if (!rule.id.empty()) {
+      by_id_[rule.id].push_back(index);
+    } else if (!rule.class_name.empty()) {
+      by_class_[rule.class_name].push_back(index);
+    } else {
+      others_.push_back(index);
+    }
+    rules_.push_back(std::move(rule));
+  }
+}
+
+std::vector<const CssRule*> StyleSheet::matching(std::string_view tag, std::string_view id,
+                                                 std::string_view classes) const {
+  std::vector<std::size_t> candidates = others_;
+  const auto add = [&](const std::unordered_map<std::string, std::vector<std::size_t>>& map,
+                       std::string_view key) {
+    if (key.empty()) return;
+    const auto it = map.find(std::string(key));
+    if (it != map.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+  };
+  add(by_id_, id);
+  for (const std::string& name : split(classes, ' ')) add(by_class_, name);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  std::vector<const CssRule*> out;
+  for (const std::size_t index : candidates) {
+    const CssRule& rule = rules_[index];
+    if (rule.tag.empty() || rule.tag == tag || !rule.id.empty()) out.push_back(&rule);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const CssRule* a, const CssRule* b) {
+    return std::tie(a->specificity, a->order) < std::tie(b->specificity, b->order);
+  });
+  return out;
 }
 
 }  // namespace shapeproc::io
