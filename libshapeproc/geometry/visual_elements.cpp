@@ -260,7 +260,17 @@ class Grouping {
     std::vector<Box2> boxes(drawables_.size());
     for (std::size_t d = 0; d < drawables_.size(); ++d) boxes[d] = drawables_[d].box;
     const BoxTree<2> tree = BoxTree<2>::build(boxes);
+    // Per drawable, its subpaths' boxes in a tree: a point meets the few boxes around it, not
+    // every subpath of a path that draws thousands of dots.
+    std::vector<std::vector<Box2>> piece_boxes(drawables_.size());
+    std::vector<BoxTree<2>> pieces;
+    pieces.reserve(drawables_.size());
+    for (std::size_t d = 0; d < drawables_.size(); ++d) {
+      for (std::size_t k : drawables_[d].subpaths) piece_boxes[d].push_back(subpaths_[k].box);
+      pieces.push_back(BoxTree<2>::build(piece_boxes[d]));
+    }
     std::vector<std::pair<std::size_t, std::size_t>> found;  // (drawable, shift), in order
+    std::vector<std::size_t> around;  // subpaths whose boxes hold the point, in drawing order
     for (std::size_t i = 0; i < subpaths_.size(); ++i) {
       const Vec2 p = probe(subpaths_[i]);
       found.clear();
@@ -276,10 +286,14 @@ class Grouping {
         const Drawn& d = drawables_[index];
         int depth = 0, winding = 0;
         std::size_t innermost = subpaths_.size();
-        for (std::size_t k : d.subpaths) {
+        around.clear();
+        pieces[index].for_each_intersecting(Box2(q, q), piece_boxes[index], [&](int local) {
+          around.push_back(d.subpaths[static_cast<std::size_t>(local)]);
+        });
+        std::sort(around.begin(), around.end());
+        for (std::size_t k : around) {
           const Subpath& container = subpaths_[k];
           if (k == i || !container.closed || container.area <= subpaths_[i].area) continue;
-          if (!container.box.contains(q)) continue;
           const int w = winding_number(container.polyline, q);
           if (w == 0) continue;
           ++depth;
