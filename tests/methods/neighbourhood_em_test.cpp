@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/shape_size.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/metrics/novelty.hpp"
 #include "tests/methods/method_scenes.hpp"
@@ -138,6 +139,34 @@ TEST(NeighbourhoodEm, ElongatedElementsKeepTheirShapeFromSeveralSamples) {
     ASSERT_EQ(sides.size(), 4u);
     for (std::size_t k = 0; k < 4; ++k)
       EXPECT_NEAR((sides[k].end - sides[k].start).norm(), k % 2 ? 3.0 : 20.0, 1e-9);
+  }
+}
+
+// A rigid exemplar rebuilt by thin-plate splines: every output element keeps its source's size
+// and proportions within the documented bound (kMaxSplineDistortion, 1.5 in area and aspect).
+TEST(NeighbourhoodEm, SplinesStayWithinTheDistortionBound) {
+  const geometry::Scene exemplar =
+      io::read_scene(testing::data_path("svg/crescents-grid.svg").string(), {});
+  double smallest = 1e300, largest = 0.0;
+  for (const auto& shape : exemplar.shapes) {
+    smallest = std::min(smallest, geometry::shape_size(shape).area);
+    largest = std::max(largest, geometry::shape_size(shape).area);
+  }
+  const Domain domain = Domain::from_sizes({500, 500}, Boundary::torus);
+  for (const Reconstruction rule : {Reconstruction::tps, Reconstruction::tps_approx}) {
+    EmOptions options;
+    options.reconstruction = rule;
+    const NeighbourhoodEm em(exemplar, Boundary::open, domain, options);
+    for (const std::uint64_t seed : {1, 2}) {
+      const synthesis::SynthesisResult result = run(em, seed);
+      ASSERT_GT(result.scene.elements.size(), 50u);
+      for (const auto& e : result.scene.elements) {
+        const double area =
+            geometry::shape_size(result.scene.shapes[static_cast<std::size_t>(e.shape)]).area;
+        EXPECT_GE(area, smallest / kMaxSplineDistortion * (1 - 1e-9)) << to_string(rule);
+        EXPECT_LE(area, largest * kMaxSplineDistortion * (1 + 1e-9)) << to_string(rule);
+      }
+    }
   }
 }
 

@@ -137,6 +137,61 @@ const SampleTemplate& template_of(const EmExemplar& exemplar, const OutputSample
   return exemplar.templates[static_cast<std::size_t>(source.shape)];
 }
 
+// The points that carry a shape: its path points (2D) or vertices (3D).
+std::vector<Vec3> shape_points(const geometry::Shape& shape) {
+  std::vector<Vec3> points;
+  map_shape(shape, [&points](const Vec3& p) {
+    points.push_back(p);
+    return p;
+  });
+  return points;
+}
+
+// The spread of points along their principal axes: the covariance's eigenvalues, ascending.
+Eigen::VectorXd principal_spreads(const std::vector<Vec3>& points, int dimension) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(dimension, dimension);
+  for (const Vec3& p : points) {
+    const Eigen::VectorXd d = (p - mean).head(dimension);
+    covariance += d * d.transpose();
+  }
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(covariance).eigenvalues();
+}
+
+// Whether `mapped` (the points of `from`, mapped) keeps their size and proportions within
+// kMaxSplineDistortion: the product of the principal spreads (area², volume²) and the ratio of
+// the largest to the smallest. A flat shape (a line) is judged by its largest spread alone.
+bool within_distortion_bound(const Eigen::VectorXd& from, const std::vector<Vec3>& mapped,
+                             int dimension) {
+  const Eigen::VectorXd to = principal_spreads(mapped, dimension);
+  const double limit = kMaxSplineDistortion * kMaxSplineDistortion;  // spreads are squares
+  const auto within = [limit](double ratio) { return ratio <= limit && ratio * limit >= 1.0; };
+  const double flat = 1e-12 * from.maxCoeff();
+  if (!(to.minCoeff() > flat) || !(from.minCoeff() > flat))
+    return from.minCoeff() <= flat && within(to.maxCoeff() / from.maxCoeff());
+  return within(to.prod() / from.prod()) &&
+         within((to.maxCoeff() / to.minCoeff()) / (from.maxCoeff() / from.minCoeff()));
+}
+
+// The spline's map of `shape`, blended towards `rigid` by halves until within the bound (at the
+// sixth halving, the rigid placement itself).
+geometry::Shape bounded_spline_shape(const geometry::Shape& shape, const ThinPlateSpline& spline,
+                                     const Similarity& rigid, int dimension) {
+  const std::vector<Vec3> points = shape_points(shape);
+  const Eigen::VectorXd spreads = principal_spreads(points, dimension);
+  double share = 1.0;
+  for (int halving = 0; halving < 6; ++halving, share /= 2) {
+    const auto blended = [&](const Vec3& x) { return rigid(x) + share * (spline(x) - rigid(x)); };
+    std::vector<Vec3> mapped;
+    mapped.reserve(points.size());
+    for (const Vec3& p : points) mapped.push_back(blended(p));
+    if (within_distortion_bound(spreads, mapped, dimension)) return map_shape(shape, blended);
+  }
+  return map_shape(shape, rigid);
+}
+
 }  // namespace
 
 Similarity rigid_placement(const EmExemplar& exemplar, const OutputSamples& output, std::size_t e,
@@ -181,7 +236,11 @@ geometry::Scene reconstruct(const EmExemplar& exemplar, const OutputSamples& out
       geometry::add_element(scene, map_shape(shape, s), source.category);
     } else {
       const ThinPlateSpline spline(t.offsets, to, dim, rule == Reconstruction::tps);
-      geometry::add_element(scene, map_shape(shape, spline), source.category);
+      geometry::add_element(
+          scene,
+          bounded_spline_shape(shape, spline,
+                               rigid_placement(exemplar, output, e, domain, orientation), dim),
+          source.category);
     }
     geometry::Element& added = scene.elements.back();
     added.position = domain.wrap(added.position);

@@ -25,6 +25,13 @@
 namespace shapeproc::methods {
 
 enum class Reconstruction { rigid, similarity, tps, tps_approx };
+
+// What a spline may do to an element: change its size (area, or volume) or its proportions (the
+// ratio of its principal spreads) by at most this factor either way. The EM moves each sample on
+// its own, and a spline through them follows every move: on a rigid exemplar, unbounded, it
+// blows shapes up three or four times and stretches others into slivers. A spline beyond the
+// bound is blended towards the element's rigid placement, by halves, until it is within it.
+inline constexpr double kMaxSplineDistortion = 1.5;
 const char* to_string(Reconstruction reconstruction);
 Reconstruction parse_reconstruction(const std::string& text);  // throws core::ArgumentError
 
