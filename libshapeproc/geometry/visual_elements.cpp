@@ -5,6 +5,7 @@
 #include <deque>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "libshapeproc/geometry/box_tree.hpp"
@@ -262,15 +263,22 @@ class Grouping {
     const BoxTree<2> tree = BoxTree<2>::build(boxes);
     // Per drawable, its subpaths' boxes in a tree: a point meets the few boxes around it, not
     // every subpath of a path that draws thousands of dots.
-    std::vector<std::vector<Box2>> piece_boxes(drawables_.size());
-    std::vector<BoxTree<2>> pieces;
-    pieces.reserve(drawables_.size());
+    piece_boxes_.assign(drawables_.size(), {});
+    pieces_.clear();
     for (std::size_t d = 0; d < drawables_.size(); ++d) {
-      for (std::size_t k : drawables_[d].subpaths) piece_boxes[d].push_back(subpaths_[k].box);
-      pieces.push_back(BoxTree<2>::build(piece_boxes[d]));
+      for (std::size_t k : drawables_[d].subpaths) piece_boxes_[d].push_back(subpaths_[k].box);
+      pieces_.push_back(BoxTree<2>::build(piece_boxes_[d]));
+    }
+    chains_.assign(subpaths_.size(), Chain{});
+    by_area_.assign(drawables_.size(), {});
+    for (std::size_t d = 0; d < drawables_.size(); ++d) {
+      for (std::size_t k : drawables_[d].subpaths)
+        if (subpaths_[k].closed) by_area_[d].push_back(k);
+      std::sort(by_area_[d].begin(), by_area_[d].end(), [this](std::size_t a, std::size_t b) {
+        return std::tie(subpaths_[a].area, a) < std::tie(subpaths_[b].area, b);
+      });
     }
     std::vector<std::pair<std::size_t, std::size_t>> found;  // (drawable, shift), in order
-    std::vector<std::size_t> around;  // subpaths whose boxes hold the point, in drawing order
     for (std::size_t i = 0; i < subpaths_.size(); ++i) {
       const Vec2 p = probe(subpaths_[i]);
       found.clear();
@@ -281,33 +289,131 @@ class Grouping {
       }
       std::sort(found.begin(), found.end());
       for (const auto& [index, s] : found) {
-        const Vec2& shift = shifts_[s];
-        const Vec2 q = p - shift;
+        const Depth at = depth_at(index, p - shifts_[s], i);
+        if (at.depth == 0) continue;
         const Drawn& d = drawables_[index];
-        int depth = 0, winding = 0;
-        std::size_t innermost = subpaths_.size();
-        around.clear();
-        pieces[index].for_each_intersecting(Box2(q, q), piece_boxes[index], [&](int local) {
-          around.push_back(d.subpaths[static_cast<std::size_t>(local)]);
-        });
-        std::sort(around.begin(), around.end());
-        for (std::size_t k : around) {
-          const Subpath& container = subpaths_[k];
-          if (k == i || !container.closed || container.area <= subpaths_[i].area) continue;
-          const int w = winding_number(container.polyline, q);
-          if (w == 0) continue;
-          ++depth;
-          winding += w;
-          if (innermost == subpaths_.size() || container.area < subpaths_[innermost].area)
-            innermost = k;
-        }
-        if (depth == 0) continue;
         const bool in_fill =
             d.drawable.filled() &&
-            (d.drawable.fill_rule == FillRule::evenodd ? depth % 2 == 1 : winding != 0);
-        if (in_fill || !options_.nested_separate) link(i, innermost, shift);
+            (d.drawable.fill_rule == FillRule::evenodd ? at.depth % 2 == 1 : at.winding != 0);
+        if (in_fill || !options_.nested_separate) link(i, at.innermost, shifts_[s]);
       }
     }
+  }
+
+  // How a point lies in a drawable's closed subpaths larger than subpath `i`: how many hold it,
+  // the sum of their winding numbers about it, and the innermost (smallest) of them.
+  struct Depth {
+    int depth = 0, winding = 0;
+    std::size_t innermost = 0;
+  };
+
+  // Outlines nested deeper than this at a point are counted along the chain of innermost
+  // containers (each container's own depth found once): exact for outlines that do not cross,
+  // and linear where outlines nest thousands deep, where testing every container of every
+  // subpath is quadratic. Shallower nesting is counted container by container.
+  static constexpr std::size_t kChainFrom = 64;
+
+  // The closed subpaths of drawable `d` larger than subpath `i` whose boxes hold `q`, in no
+  // particular order.
+  std::vector<std::size_t> larger_around(std::size_t d, const Vec2& q, std::size_t i) const {
+    std::vector<std::size_t> around;
+    pieces_[d].for_each_intersecting(Box2(q, q), piece_boxes_[d], [&](int local) {
+      const std::size_t k = drawables_[d].subpaths[static_cast<std::size_t>(local)];
+      if (k != i && subpaths_[k].closed && subpaths_[k].area > subpaths_[i].area)
+        around.push_back(k);
+    });
+    return around;
+  }
+
+  // The smallest of `candidates` (the first in drawing order among equals) that winds about `q`,
+  // or subpaths_.size().
+  std::size_t innermost_of(std::vector<std::size_t> candidates, const Vec2& q) const {
+    while (!candidates.empty()) {
+      const auto smallest = std::min_element(
+          candidates.begin(), candidates.end(), [this](std::size_t a, std::size_t b) {
+            return std::tie(subpaths_[a].area, a) < std::tie(subpaths_[b].area, b);
+          });
+      const std::size_t k = *smallest;
+      if (winding_number(subpaths_[k].polyline, q) != 0) return k;
+      *smallest = candidates.back();
+      candidates.pop_back();
+    }
+    return subpaths_.size();
+  }
+
+  // The innermost closed subpath of drawable `d` larger than subpath `i` about `q`, looked for
+  // among the kChainFrom next larger ones (by area, then drawing order); nullopt when it is not
+  // among them, subpaths_.size() when there is none at all.
+  std::optional<std::size_t> near_innermost(std::size_t d, const Vec2& q, std::size_t i) const {
+    const std::vector<std::size_t>& order = by_area_[d];
+    auto it =
+        std::upper_bound(order.begin(), order.end(), subpaths_[i].area,
+                         [this](double area, std::size_t k) { return area < subpaths_[k].area; });
+    for (std::size_t looked = 0; it != order.end(); ++it, ++looked) {
+      if (looked == kChainFrom) return std::nullopt;
+      const Subpath& k = subpaths_[*it];
+      if (*it != i && k.box.contains(q) && winding_number(k.polyline, q) != 0) return *it;
+    }
+    return subpaths_.size();
+  }
+
+  Depth depth_at(std::size_t d, const Vec2& q, std::size_t i) {
+    Depth at;
+    at.innermost = subpaths_.size();
+    const std::optional<std::size_t> near = near_innermost(d, q, i);
+    if (near && *near != subpaths_.size()) {
+      const Chain& outer = chain_of(d, *near);
+      if (outer.depth + 1 > static_cast<int>(kChainFrom)) {
+        at.innermost = *near;
+        at.depth = 1 + outer.depth;
+        at.winding = winding_number(subpaths_[*near].polyline, q) + outer.winding;
+        return at;
+      }
+    }
+    std::vector<std::size_t> around = larger_around(d, q, i);
+    std::sort(around.begin(), around.end());  // drawing order: the first of equals is innermost
+    for (std::size_t k : around) {
+      const int w = winding_number(subpaths_[k].polyline, q);
+      if (w == 0) continue;
+      ++at.depth;
+      at.winding += w;
+      if (at.innermost == subpaths_.size() || subpaths_[k].area < subpaths_[at.innermost].area)
+        at.innermost = k;
+    }
+    return at;
+  }
+
+  // A closed subpath's own containers in its drawable, at its probe: their count and winding sum
+  // along the chain of innermost containers.
+  struct Chain {
+    bool known = false;
+    int depth = 0, winding = 0;
+  };
+
+  const Chain& chain_of(std::size_t d, std::size_t m) {
+    std::vector<std::size_t> pending = {m};
+    while (!pending.empty()) {
+      const std::size_t k = pending.back();
+      if (chains_[k].known) {
+        pending.pop_back();
+        continue;
+      }
+      const Vec2 q = probe(subpaths_[k]);
+      const std::optional<std::size_t> near = near_innermost(d, q, k);
+      const std::size_t parent = near ? *near : innermost_of(larger_around(d, q, k), q);
+      if (parent != subpaths_.size() && !chains_[parent].known) {
+        pending.push_back(parent);  // its chain first
+        continue;
+      }
+      Chain& chain = chains_[k];
+      chain.known = true;
+      if (parent != subpaths_.size()) {
+        chain.depth = 1 + chains_[parent].depth;
+        chain.winding = winding_number(subpaths_[parent].polyline, q) + chains_[parent].winding;
+      }
+      pending.pop_back();
+    }
+    return chains_[m];
   }
 
   // Components of the links, each subpath at the offset its links give it; one element each.
@@ -390,6 +496,10 @@ class Grouping {
   std::vector<Drawn> drawables_;
   std::vector<Subpath> subpaths_;
   std::vector<std::vector<Link>> links_;
+  std::vector<std::vector<Box2>> piece_boxes_;     // per drawable: its subpaths' boxes
+  std::vector<BoxTree<2>> pieces_;                 // per drawable: a tree of them
+  std::vector<Chain> chains_;                      // per subpath, found when first needed
+  std::vector<std::vector<std::size_t>> by_area_;  // per drawable: closed subpaths by area
 };
 
 }  // namespace

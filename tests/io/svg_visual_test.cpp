@@ -250,5 +250,18 @@ TEST(VisualElements, PiecesAHairApartAtASeamAreOneElement) {
             1u);
 }
 
+// 200 squares nested in one even-odd path, 0.5 apart: 100 rings, each an outline and the hole
+// inside it, or one element when nested pieces join. Beyond 64 deep, depth is counted along the
+// chain of innermost containers (geometry/visual_elements.cpp), which must agree.
+TEST(VisualElements, DeeplyNestedOutlinesCountTheirDepthExactly) {
+  std::string d;
+  for (int i = 1; i <= 200; ++i)
+    d += "M" + std::to_string(300 - 0.5 * i) + " " + std::to_string(300 - 0.5 * i) + "h" +
+         std::to_string(i) + "v" + std::to_string(i) + "h" + std::to_string(-i) + "z ";
+  const std::string path = R"(<path fill-rule="evenodd" d=")" + d + R"("/>)";
+  EXPECT_EQ(read(path, false, true, "0 0 600 600").elements.size(), 100u);
+  EXPECT_EQ(read(path, false, false, "0 0 600 600").elements.size(), 1u);
+}
+
 }  // namespace
 }  // namespace shapeproc::io
