@@ -48,6 +48,29 @@ struct BoxTree {
     }
   }
 
+  // The same, stopping as soon as `visit(i)` returns false; returns whether it went through.
+  template <class Visit>
+  bool for_each_intersecting_while(const Box& query, const std::vector<Box>& boxes,
+                                   Visit&& visit) const {
+    if (nodes.empty()) return true;
+    std::vector<int> stack = {0};
+    while (!stack.empty()) {
+      const Node& node = nodes[static_cast<std::size_t>(stack.back())];
+      stack.pop_back();
+      if (!node.box.intersects(query)) continue;
+      if (node.count > 0) {
+        for (int k = node.first; k < node.first + node.count; ++k) {
+          const int i = order[static_cast<std::size_t>(k)];
+          if (boxes[static_cast<std::size_t>(i)].intersects(query) && !visit(i)) return false;
+        }
+      } else {
+        stack.push_back(node.first);
+        stack.push_back(node.first + 1);
+      }
+    }
+    return true;
+  }
+
   // Builds the tree by median splits along the longest axis of the centres' box.
   static BoxTree build(const std::vector<Box>& boxes, int leaf_size = 4) {
     BoxTree tree;

@@ -186,48 +186,91 @@ class Grouping {
     return box;
   }
 
-  // Outlines that cross or run together, also with the copies one period away. Candidate pairs
-  // come from a box tree (all pairs took minutes on 200,000 circles).
-  // Pieces whose outlines meet (segments_meet), the pieces and their copies a period away: the
-  // outlines' segments in one tree, so that a segment is tested against the few near it, not
-  // every segment of every piece whose box meets its piece's box (nested outlines).
+  // Pieces whose outlines meet (segments_meet), the pieces and their copies a period away.
+  // Candidate pieces come from a tree of the pieces' boxes (all pairs took minutes on 200,000
+  // circles); a piece whose box meets many others' (outlines nested inside each other) is tested
+  // through a tree of every outline's segments instead, against the few segments near each of
+  // its own.
   void join_crossing_outlines() {
-    std::vector<Box2> boxes;
-    std::vector<std::pair<std::size_t, std::size_t>> owner;  // per segment: subpath, first point
-    for (std::size_t i = 0; i < subpaths_.size(); ++i) {
-      const std::vector<Vec2>& line = subpaths_[i].polyline;
-      for (std::size_t k = 0; k < segment_count(subpaths_[i]); ++k) {
-        boxes.push_back(Box2(line[k]).extend(line[(k + 1) % line.size()]));
-        owner.emplace_back(i, k);
-      }
-    }
+    std::vector<Box2> boxes(subpaths_.size());
+    for (std::size_t i = 0; i < subpaths_.size(); ++i) boxes[i] = subpaths_[i].box;
     const BoxTree<2> tree = BoxTree<2>::build(boxes);
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (j, shift), in the links' order
+    std::vector<std::pair<std::size_t, std::size_t>> near, pairs;  // (j, shift)
     for (std::size_t i = 0; i < subpaths_.size(); ++i) {
+      near.clear();
       pairs.clear();
-      const std::vector<Vec2>& line = subpaths_[i].polyline;
-      for (std::size_t k = 0; k < segment_count(subpaths_[i]); ++k) {
-        const Vec2 &p = line[k], &q = line[(k + 1) % line.size()];
-        for (std::size_t s = 0; s < shifts_.size(); ++s) {
-          const Vec2& shift = shifts_[s];
-          // Segments near this one moved back by the shift (a little wider, for rounding).
-          Box2 query = moved(Box2(p).extend(q), -shift);
-          const double slack = kInkGap + 1e-9 * (1.0 + query.sizes().maxCoeff() + shift.norm());
-          query.extend(query.min() - Vec2::Constant(slack))
-              .extend(query.max() + Vec2::Constant(slack));
-          tree.for_each_intersecting(query, boxes, [&](int found) {
-            const auto [j, m] = owner[static_cast<std::size_t>(found)];
-            if (!(j > i || (j == i && !shift.isZero()))) return;
-            const std::vector<Vec2>& other = subpaths_[j].polyline;
-            if (segments_meet(p, q, other[m] + shift, other[(m + 1) % other.size()] + shift,
-                              kInkGap))
-              pairs.emplace_back(j, s);
-          });
-        }
+      bool few = true;  // the candidates are few enough to test outline against outline
+      for (std::size_t s = 0; s < shifts_.size() && few; ++s) {
+        few = tree.for_each_intersecting_while(
+            widened(moved(subpaths_[i].box, -shifts_[s]), shifts_[s]), boxes, [&](int found) {
+              const auto j = static_cast<std::size_t>(found);
+              if (j > i || (j == i && !shifts_[s].isZero())) near.emplace_back(j, s);
+              return near.size() <= kDirectPairs;
+            });
+      }
+      if (!few) {
+        meeting_segments(i, pairs);
+      } else {
+        for (const auto& [j, s] : near)
+          if (outlines_meet(subpaths_[i], subpaths_[j], shifts_[s])) pairs.emplace_back(j, s);
       }
       std::sort(pairs.begin(), pairs.end());
       pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
       for (const auto& [j, s] : pairs) link(i, j, shifts_[s]);
+    }
+  }
+
+  // Beyond this many candidate pieces, a piece's segments are looked up in the segment tree.
+  static constexpr std::size_t kDirectPairs = 32;
+
+  // A box widened by the ink gap and a rounding slack.
+  static Box2 widened(Box2 box, const Vec2& shift) {
+    const double slack = kInkGap + 1e-9 * (1.0 + box.sizes().maxCoeff() + shift.norm());
+    box.extend(box.min() - Vec2::Constant(slack)).extend(box.max() + Vec2::Constant(slack));
+    return box;
+  }
+
+  // Whether a's outline meets b's moved by `shift`: each pair of segments whose widened boxes meet.
+  static bool outlines_meet(const Subpath& a, const Subpath& b, const Vec2& shift) {
+    for (std::size_t k = 0; k < segment_count(a); ++k) {
+      const Vec2 &p = a.polyline[k], &q = a.polyline[(k + 1) % a.polyline.size()];
+      const Box2 around = widened(Box2(p).extend(q), shift);
+      for (std::size_t m = 0; m < segment_count(b); ++m) {
+        const Vec2 r = b.polyline[m] + shift, t = b.polyline[(m + 1) % b.polyline.size()] + shift;
+        if (around.intersects(Box2(r).extend(t)) && segments_meet(p, q, r, t, kInkGap)) return true;
+      }
+    }
+    return false;
+  }
+
+  // The pieces (with their shifts) whose segments meet subpath i's, through the segment tree
+  // (built when first needed).
+  void meeting_segments(std::size_t i, std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+    if (segment_boxes_.empty()) {
+      for (std::size_t j = 0; j < subpaths_.size(); ++j) {
+        const std::vector<Vec2>& line = subpaths_[j].polyline;
+        for (std::size_t k = 0; k < segment_count(subpaths_[j]); ++k) {
+          segment_boxes_.push_back(Box2(line[k]).extend(line[(k + 1) % line.size()]));
+          segment_owner_.emplace_back(j, k);
+        }
+      }
+      segment_tree_ = BoxTree<2>::build(segment_boxes_);
+    }
+    const std::vector<Vec2>& line = subpaths_[i].polyline;
+    for (std::size_t k = 0; k < segment_count(subpaths_[i]); ++k) {
+      const Vec2 &p = line[k], &q = line[(k + 1) % line.size()];
+      for (std::size_t s = 0; s < shifts_.size(); ++s) {
+        const Vec2& shift = shifts_[s];
+        segment_tree_.for_each_intersecting(
+            widened(moved(Box2(p).extend(q), -shift), shift), segment_boxes_, [&](int found) {
+              const auto [j, m] = segment_owner_[static_cast<std::size_t>(found)];
+              if (!(j > i || (j == i && !shift.isZero()))) return;
+              const std::vector<Vec2>& other = subpaths_[j].polyline;
+              if (segments_meet(p, q, other[m] + shift, other[(m + 1) % other.size()] + shift,
+                                kInkGap))
+                pairs.emplace_back(j, s);
+            });
+      }
     }
   }
 
@@ -496,6 +539,9 @@ class Grouping {
   std::vector<Drawn> drawables_;
   std::vector<Subpath> subpaths_;
   std::vector<std::vector<Link>> links_;
+  std::vector<Box2> segment_boxes_;  // every outline's segments, when a piece needs them
+  std::vector<std::pair<std::size_t, std::size_t>> segment_owner_;  // their subpath, first point
+  BoxTree<2> segment_tree_;
   std::vector<std::vector<Box2>> piece_boxes_;     // per drawable: its subpaths' boxes
   std::vector<BoxTree<2>> pieces_;                 // per drawable: a tree of them
   std::vector<Chain> chains_;                      // per subpath, found when first needed
