@@ -1,0 +1,36 @@
+// The connectivity picture: a line per edge (across a seam, drawn once, leaving the window), a
+// labelled dot per node.
+#include "libshapeproc/io/graph_svg_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/test_support.hpp"
+
+namespace shapeproc::io {
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++count;
+  return count;
+}
+
+TEST(GraphSvgWriter, ALinePerEdgeADotAndALabelPerNode) {
+  const testing::TempDir dir;
+  const geometry::Box3 window(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
+  const std::vector<geometry::Vec3> nodes = {geometry::Vec3(10, 10, 0), geometry::Vec3(90, 10, 0),
+                                             geometry::Vec3(50, 60, 0)};
+  // 0–2 inside; 1 to 0 across the right seam: drawn from node 1 to (110, 10).
+  const std::vector<GraphEdge> edges = {{0, geometry::Vec3(40, 50, 0)},
+                                        {1, geometry::Vec3(20, 0, 0)}};
+  write_graph_svg(dir.file("g.svg"), window, nodes, edges, {false, true, false});
+  const std::string svg = testing::read_file(dir.file("g.svg"));
+  EXPECT_EQ(occurrences(svg, "<line"), 2u);
+  EXPECT_EQ(occurrences(svg, "<circle"), 3u);
+  EXPECT_EQ(occurrences(svg, "<text"), 3u);
+  EXPECT_NE(svg.find("x2=\"110\""), std::string::npos) << svg;
+}
+
+}  // namespace
+}  // namespace shapeproc::io
