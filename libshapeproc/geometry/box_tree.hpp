@@ -30,22 +30,10 @@ struct BoxTree {
   // Calls `visit(i)` for each primitive i whose box (of `boxes`, as built) intersects `query`.
   template <class Visit>
   void for_each_intersecting(const Box& query, const std::vector<Box>& boxes, Visit&& visit) const {
-    if (nodes.empty()) return;
-    std::vector<int> stack = {0};
-    while (!stack.empty()) {
-      const Node& node = nodes[static_cast<std::size_t>(stack.back())];
-      stack.pop_back();
-      if (!node.box.intersects(query)) continue;
-      if (node.count > 0) {
-        for (int k = node.first; k < node.first + node.count; ++k) {
-          const int i = order[static_cast<std::size_t>(k)];
-          if (boxes[static_cast<std::size_t>(i)].intersects(query)) visit(i);
-        }
-      } else {
-        stack.push_back(node.first);
-        stack.push_back(node.first + 1);
-      }
-    }
+    for_each_intersecting_while(query, boxes, [&visit](int i) {
+      visit(i);
+      return true;
+    });
   }
 
   // The same, stopping as soon as `visit(i)` returns false; returns whether it went through.

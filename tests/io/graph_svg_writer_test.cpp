@@ -9,13 +9,6 @@
 namespace shapeproc::io {
 namespace {
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t count = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-    ++count;
-  return count;
-}
-
 TEST(GraphSvgWriter, ALinePerEdgeADotAndALabelPerNode) {
   const testing::TempDir dir;
   const geometry::Box3 window(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
@@ -26,9 +19,9 @@ TEST(GraphSvgWriter, ALinePerEdgeADotAndALabelPerNode) {
                                         {1, geometry::Vec3(20, 0, 0)}};
   write_graph_svg(dir.file("g.svg"), window, nodes, edges, {false, true, false});
   const std::string svg = testing::read_file(dir.file("g.svg"));
-  EXPECT_EQ(occurrences(svg, "<line"), 2u);
-  EXPECT_EQ(occurrences(svg, "<circle"), 3u);
-  EXPECT_EQ(occurrences(svg, "<text"), 3u);
+  EXPECT_EQ(testing::count_of(svg, "<line"), 2u);
+  EXPECT_EQ(testing::count_of(svg, "<circle"), 3u);
+  EXPECT_EQ(testing::count_of(svg, "<text"), 3u);
   EXPECT_NE(svg.find("x2=\"110\""), std::string::npos) << svg;
 }
 

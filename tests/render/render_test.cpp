@@ -64,14 +64,6 @@ TEST(PngText, RejectsBadKeywordsAndBytesThatAreNotAPng) {
   EXPECT_THROW(add_png_text(png, {{std::string(80, 'k'), "x"}}), core::ArgumentError);
 }
 
-// Occurrences of `needle` in `text`.
-std::size_t count_of(const std::string& text, const std::string& needle) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
-    ++n;
-  return n;
-}
-
 // Two axes of two bands each: every axis is drawn on both of its opposite directions, as a black
 // hard-core sector and one sector per band whose title names the axis, the band, its γ and its
 // thresholds.
@@ -94,13 +86,13 @@ TEST(InteractionPlot, DrawsOneCurvePerAxisOfEveryPair) {
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("dots - dots"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(count_of(svg, "<title>axis "), 8u);  // 2 axes x 2 directions x 2 bands
-  EXPECT_EQ(count_of(svg, "<title>axis 0 band 1: gamma 0.5 on [1, 2)</title>"), 2u);
-  EXPECT_EQ(count_of(svg, "<title>axis 0 band 2: gamma 2 on [2, 3)</title>"), 2u);
-  EXPECT_EQ(count_of(svg, "<title>axis 1 band 1: gamma 3 on [1, 2)</title>"), 2u);
-  EXPECT_EQ(count_of(svg, "<title>axis 1 band 2: gamma 1 on [2, 3)</title>"), 2u);
+  EXPECT_EQ(testing::count_of(svg, "<title>axis "), 8u);  // 2 axes x 2 directions x 2 bands
+  EXPECT_EQ(testing::count_of(svg, "<title>axis 0 band 1: gamma 0.5 on [1, 2)</title>"), 2u);
+  EXPECT_EQ(testing::count_of(svg, "<title>axis 0 band 2: gamma 2 on [2, 3)</title>"), 2u);
+  EXPECT_EQ(testing::count_of(svg, "<title>axis 1 band 1: gamma 3 on [1, 2)</title>"), 2u);
+  EXPECT_EQ(testing::count_of(svg, "<title>axis 1 band 2: gamma 1 on [2, 3)</title>"), 2u);
   // Hard-core sectors: 4, and the legend's swatch.
-  EXPECT_EQ(count_of(svg, "fill=\"black\""), 5u);
+  EXPECT_EQ(testing::count_of(svg, "fill=\"black\""), 5u);
   // γ = 1 is drawn white, and inhibition and attraction in other colours.
   EXPECT_NE(svg.find("fill=\"#ffffff\" stroke=\"#555\" stroke-width=\"0.3\"><title>axis 1 band 2"),
             std::string::npos);
