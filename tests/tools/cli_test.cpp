@@ -455,6 +455,20 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   EXPECT_EQ(large.out.find("warning: the output torus"), std::string::npos) << large.out;
 }
 
+// -o naming a directory is refused, saying so, and nothing is written into it.
+TEST(CliErrors, AnOutputThatIsADirectoryIsRefused) {
+  const testing::TempDir dir;
+  const std::string folder = dir.path().string();
+  const Result convert = run_cli({"convert", data("svg/dots-random.svg"), "-o", folder});
+  EXPECT_EQ(convert.code, 2);
+  EXPECT_NE(convert.err.find("is a directory"), std::string::npos) << convert.err;
+  const Result synthesize =
+      run_cli({"synthesize", data("svg/dots-random.svg"), "-o", folder, "--size", "2W,2H"});
+  EXPECT_EQ(synthesize.code, 2);
+  EXPECT_NE(synthesize.err.find("is a directory"), std::string::npos) << synthesize.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
 // Hostile text from the command line or a file is not echoed as it came: a bad value of 1 MB
 // gives a bounded one-line error, and a category name holding a terminal escape sequence is
 // printed with '?' for its control characters.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -140,6 +142,11 @@ geometry::DirectionKind direction_kind(const std::string& name) {
 }
 
 void check_output_extension(const std::string& file, const std::string& option) {
+  std::error_code unreadable;  // a name the system refuses is no directory
+  if (std::filesystem::is_directory(file, unreadable))
+    throw core::UsageError(
+        option + ": '" + file +
+        "' is a directory; name the output file (.svg, .obj, .ply, .csv or .png)");
   const std::string extension = io::extension_of(file);
   if (extension == "svg" || extension == "obj" || extension == "ply" || extension == "csv" ||
       extension == "png")
