@@ -43,28 +43,7 @@ std::vector<std::string> parse_methods(const std::string& list) {
   return out;
 }
 
-// The `synthesize` command line that runs `method`: what the outputs' records name as their source.
-std::vector<std::string> synthesize_arguments(const std::string& method,
-                                              const std::string& exemplar,
-                                              const ReaderFlags& reader, const std::string& size,
-                                              std::uint64_t seed, const std::string& output,
-                                              const std::string& model) {
-  std::vector<std::string> a = {"shapeproc", "synthesize", exemplar};
-  const std::vector<std::string> flags = reader.arguments();
-  a.insert(a.end(), flags.begin(), flags.end());
-  a.insert(a.end(), {"--size", size, "--seed", std::to_string(seed), "-o", output});
-  if (method == "centroid" || method == "hausdorff") {
-    a.insert(a.end(), {"--distance", method});
-  } else if (method.rfind("hybrid-", 0) == 0) {
-    a.insert(a.end(), {"--method", "hybrid", "--start-from", method.substr(7)});
-  } else if (method != "shape-process") {
-    a.insert(a.end(), {"--method", method});
-  }
-  if (!model.empty()) a.insert(a.end(), {"--model", model});
-  return a;
-}
-
-// The `synthesize` arguments that run `method` (as synthesize_arguments's command line says).
+// The `synthesize` arguments that run `method` (a name of --methods).
 SynthesizeArguments synthesize_request(const std::string& method, const std::string& exemplar,
                                        const ReaderFlags& reader, const std::string& size,
                                        std::uint64_t seed, const std::string& output,
@@ -86,6 +65,22 @@ SynthesizeArguments synthesize_request(const std::string& method, const std::str
     args.method = method;
   }
   return args;
+}
+
+// The `synthesize` command line that `args` stand for: what the outputs' records name as their
+// source.
+std::vector<std::string> command_line_of(const SynthesizeArguments& args) {
+  std::vector<std::string> a = {"shapeproc", "synthesize", args.input};
+  const std::vector<std::string> flags = args.reader.arguments();
+  a.insert(a.end(), flags.begin(), flags.end());
+  a.insert(a.end(), {"--size", args.sample.size, "--seed", std::to_string(args.sample.seed), "-o",
+                     args.output});
+  if (args.fit.distance != FitFlags{}.distance)
+    a.insert(a.end(), {"--distance", args.fit.distance});
+  if (args.method != "shape-process") a.insert(a.end(), {"--method", args.method});
+  if (args.method == "hybrid") a.insert(a.end(), {"--start-from", args.start_from});
+  if (!args.model.empty()) a.insert(a.end(), {"--model", args.model});
+  return a;
 }
 
 // Runs one method as `synthesize` would; returns the reason it failed, empty when it did not.
@@ -175,12 +170,9 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
             method == "shape-process" ? (directory / "model.json").string() : std::string();
         std::ostringstream said;
         const core::Stopwatch watch;
-        const std::string reason =
-            run_one_method(synthesize_request(method, args->exemplar, args->reader, args->size,
-                                              args->seed, output, model),
-                           synthesize_arguments(method, args->exemplar, args->reader, args->size,
-                                                args->seed, output, model),
-                           said);
+        const SynthesizeArguments one = synthesize_request(method, args->exemplar, args->reader,
+                                                           args->size, args->seed, output, model);
+        const std::string reason = run_one_method(one, command_line_of(one), said);
         const double seconds = watch.seconds();
         std::istringstream lines(said.str());
         for (std::string line; std::getline(lines, line);) out << "  " << line << '\n';
