@@ -8,6 +8,7 @@
 #include "libshapeproc/fit/detail/quadrature_design.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
+#include "libshapeproc/fit/neighbour_offsets.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
@@ -47,6 +48,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
 
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
   assign_shape_classes(model, exemplar);
+  model.neighbour_offsets = neighbour_offsets(exemplar, periodic);
   const model::Interaction interaction(model);
   const FitRegion region = fit_region(exemplar, options.edge, interaction.range());
   const ExemplarStatistics statistics =

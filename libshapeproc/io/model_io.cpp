@@ -8,6 +8,7 @@
 #include "libshapeproc/core/atomic_file.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/io/fit_record_io.hpp"
+#include "libshapeproc/io/neighbour_offsets_io.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 #include "libshapeproc/io/svg_grammar.hpp"
 #include "libshapeproc/io/svg_path_data.hpp"
@@ -275,6 +276,9 @@ std::string model_to_json(const ShapeProcessModel& model) {
       classes.push_back({{"category", c.category}, {"weight", c.weight}, {"label", c.label}});
     document["shape_classes"] = classes;
   }
+  if (!model.neighbour_offsets.empty())
+    document["neighbour_offsets"] =
+        neighbour_offsets_json(model.neighbour_offsets, model.dimension);
   if (model.fit) document["fit"] = fit_record_json(*model.fit);
   return document.dump(2) + "\n";
 }
@@ -487,6 +491,9 @@ ShapeProcessModel parse_model(std::string_view text, const std::string& file_nam
   model.interactions = parse_interactions(document, model.dimension, r, axes_seen);
   parse_measurement(document, axes_seen, r, model);
   parse_shapes(document, r, model);
+  if (document.contains("neighbour_offsets"))
+    model.neighbour_offsets =
+        parse_neighbour_offsets(document["neighbour_offsets"], model.dimension, file_name);
   if (document.contains("fit")) {
     if (!document["fit"].is_object()) r.fail("fit", "must be an object");
     model.fit = parse_fit_record(document["fit"]);

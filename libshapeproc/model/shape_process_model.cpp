@@ -193,6 +193,31 @@ void validate_shapes(const ShapeProcessModel& model) {
 
 }  // namespace
 
+// The neighbour offsets: kinds in range, finite offsets in the model's dimension, positive
+// weights and radii.
+void validate_neighbour_offsets(const ShapeProcessModel& model) {
+  const NeighbourOffsets& n = model.neighbour_offsets;
+  if (n.empty()) return;
+  const int kinds =
+      static_cast<int>(model.shapes.empty() ? model.categories.size() : model.shapes.size());
+  if (n.radii.empty()) fail("neighbour_offsets.radii", "at least one radius is needed");
+  for (std::size_t r = 0; r < n.radii.size(); ++r)
+    if (!(std::isfinite(n.radii[r]) && n.radii[r] > 0))
+      fail("neighbour_offsets.radii[" + std::to_string(r) + "]",
+           "must be finite and > 0, got " + number(n.radii[r]));
+  for (std::size_t k = 0; k < n.offsets.size(); ++k) {
+    const NeighbourOffset& o = n.offsets[k];
+    const std::string where = "neighbour_offsets.offsets[" + std::to_string(k) + "]";
+    if (o.from < 0 || o.to < 0 || o.from >= kinds || o.to >= kinds)
+      fail(where, std::string("names a ") + (model.shapes.empty() ? "category" : "shape") +
+                      " out of range");
+    if (!o.offset.allFinite() || (model.dimension == 2 && o.offset.z() != 0))
+      fail(where + ".offset", "must be finite (and 0 along z in 2D)");
+    if (!(std::isfinite(o.weight) && o.weight > 0))
+      fail(where + ".weight", "must be finite and > 0, got " + number(o.weight));
+  }
+}
+
 void validate(const ShapeProcessModel& model) {
   if (model.dimension != 2 && model.dimension != 3)
     fail("dimension", "must be 2 or 3, got " + std::to_string(model.dimension));
@@ -218,6 +243,7 @@ void validate(const ShapeProcessModel& model) {
   }
   validate_interactions(model, bins);
   validate_shapes(model);
+  validate_neighbour_offsets(model);
 }
 
 std::vector<std::string> statistic_names(const ShapeProcessModel& model) {

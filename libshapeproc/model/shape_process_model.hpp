@@ -80,6 +80,25 @@ struct ShapeClass {
   std::string label;    // how the class was formed ("identical", "size 2 of 4"), may be empty
 };
 
+// Where the sampler proposes births besides uniformly (sample/neighbour_births.hpp;
+// docs/mathematics.md, "Births near neighbours"): an element of kind `from` had a neighbour of kind
+// `to` at `offset` (its reference position minus the element's) in the exemplar, with this share of
+// the kind's offsets. A kind is a shape index, or a category index for a point pattern. The offsets
+// steer proposals only: the density, and so every sample's distribution, does not depend on them.
+struct NeighbourOffset {
+  int from = 0, to = 0;
+  geometry::Vec3 offset = geometry::Vec3::Zero();
+  double weight = 1.0;  // > 0
+};
+
+struct NeighbourOffsets {
+  std::vector<NeighbourOffset> offsets;
+  // A proposal lands uniformly in a ball around the offset, of one of these radii (each as
+  // likely): a small one that hits a tight packing's slot, a larger one that explores.
+  std::vector<double> radii;
+  bool empty() const { return offsets.empty(); }
+};
+
 struct ShapeProcessModel {
   int dimension = 2;
   std::string units = "px";
@@ -90,7 +109,8 @@ struct ShapeProcessModel {
   // Empty: every shape of a category is equally likely (one class per category). Otherwise every
   // shape names its class.
   std::vector<ShapeClass> shape_classes;
-  std::optional<FitRecord> fit;  // how the model was fitted; none for a model written by hand
+  NeighbourOffsets neighbour_offsets;  // empty: births are proposed uniformly only
+  std::optional<FitRecord> fit;        // how the model was fitted; none for a model written by hand
 
   // Largest δ_K over every pair and axis: beyond it no pair interacts.
   double interaction_range() const;

@@ -84,6 +84,15 @@ ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::
   shape_cumulative = shape_probabilities(model, shapes_of, weight_sum);
   for (std::size_t c = 0; c < model.categories.size(); ++c)
     log_beta.push_back(std::log(model.categories[c].beta * weight_sum[c]));
+  log_shape_probability.assign(std::max<std::size_t>(1, model.shapes.size()), 0.0);
+  for (std::size_t c = 0; c < shapes_of.size(); ++c)
+    for (std::size_t i = 0; i < shapes_of[c].size(); ++i) {
+      const std::vector<double>& cumulative = shape_cumulative[c];
+      const double p = cumulative.empty() ? 1.0 / static_cast<double>(shapes_of[c].size())
+                                          : cumulative[i] - (i > 0 ? cumulative[i - 1] : 0.0);
+      log_shape_probability[static_cast<std::size_t>(shapes_of[c][i])] = std::log(p);
+    }
+  near_births = NeighbourBirths::make(model, reach);
 }
 
 ChainTables::~ChainTables() = default;
@@ -213,17 +222,44 @@ int BirthDeathChain::random_shape(int category) {
 void BirthDeathChain::propose_birth() {
   ++moves_.births_proposed;
   const int n = state_.size() - fixed_;
-  Element xi = random_element();
-  xi.category = static_cast<int>(random_.index(t_.shapes_of.size()));
-  xi.shape = random_shape(xi.category);  // by class weight: the birth ratio is unchanged
+  Element xi = birth_proposal();
+  if (!settle(xi.position) || !in_free_region(xi.position)) return;
   const double log_lambda =
       t_.log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
-  const double log_ratio = log_lambda + log_boost_ + log_measure_categories_ - std::log(n + 1.0);
-  if (std::isfinite(log_lambda) && std::log(random_.uniform()) < log_ratio) {
+  if (!std::isfinite(log_lambda)) return;
+  const double log_ratio = log_lambda + log_boost_ + log_measure_categories_ - std::log(n + 1.0) -
+                           log_proposal_excess(xi, -1);
+  if (std::log(random_.uniform()) < log_ratio) {
     state_.add(xi, local_term_, links_);
     log_density_ += log_lambda;
     ++moves_.births_accepted;
   }
+}
+
+// A birth's proposal: near a neighbour with the region's share (when the configuration has an
+// element), else uniform in the free region (category uniform, shape by class weight: the birth
+// ratio is unchanged).
+Element BirthDeathChain::birth_proposal() {
+  if (near_births() && state_.size() > 0 && random_.uniform() < r_.near_birth_share) {
+    const int slot = state_.slot_of_rank(random_.index(static_cast<std::uint64_t>(state_.size())));
+    return t_.near_births->propose(state_.at(slot), random_);
+  }
+  Element xi = random_element();
+  xi.category = static_cast<int>(random_.index(t_.shapes_of.size()));
+  xi.shape = random_shape(xi.category);
+  return xi;
+}
+
+// log(q(e | x') / q_uniform(e)) for the configuration x' without `skip`: the birth proposal's
+// density over the uniform proposal's, log((1 − s) + s q_near / q_uniform) with s the near share
+// (0 when x' is empty or births are uniform only). q_uniform(e) = P(shape | category) / (|R| C).
+double BirthDeathChain::log_proposal_excess(const Element& e, int skip) const {
+  if (!near_births() || state_.size() - (skip >= 0 ? 1 : 0) <= 0) return 0.0;
+  const double share = r_.near_birth_share;
+  const double near = t_.near_births->density(e, state_, skip);
+  const double uniform = std::exp(t_.log_shape_probability[static_cast<std::size_t>(e.shape)] -
+                                  log_measure_categories_);
+  return std::log((1.0 - share) + share * near / uniform);
 }
 
 void BirthDeathChain::propose_death() {
@@ -234,8 +270,8 @@ void BirthDeathChain::propose_death() {
   const Element& x = state_.at(slot);
   const double log_lambda =
       t_.log_beta[static_cast<std::size_t>(x.category)] + state_.log_lambda_over_beta(slot);
-  const double log_ratio =
-      std::log(static_cast<double>(n)) - log_measure_categories_ - log_lambda - log_boost_;
+  const double log_ratio = std::log(static_cast<double>(n)) - log_measure_categories_ - log_lambda -
+                           log_boost_ + log_proposal_excess(x, slot);
   if (std::log(random_.uniform()) < log_ratio) {
     log_density_ -= log_lambda;
     state_.remove(slot);
@@ -249,21 +285,7 @@ void BirthDeathChain::propose_shift() {
   if (slot < 0) return;
   Element moved = state_.at(slot);
   moved.position += offset_in_ball();
-  const geometry::Domain& domain = r_.domain;
-  bool inside;
-  if (r_.confined) {
-    for (int axis = 0; axis < t_.dimension; ++axis) {
-      const double period = r_.period[axis];
-      if (period > 0)
-        moved.position[axis] -=
-            period * std::floor((moved.position[axis] - r_.free_region.min()[axis]) / period);
-    }
-    inside = in_free_region(moved.position);
-  } else {
-    moved.position = domain.wrap(moved.position);
-    inside =
-        domain.periodic() || (domain.contains(moved.position) && in_free_region(moved.position));
-  }
+  const bool inside = settle(moved.position);
   const double new_term = inside ? log_lambda_over_beta(moved, slot) : kMinusInfinity;
   if (!std::isfinite(new_term)) return;
   const double old_term = state_.log_lambda_over_beta(slot);
@@ -272,6 +294,23 @@ void BirthDeathChain::propose_shift() {
     log_density_ += new_term - old_term;
     ++moves_.shifts_accepted;
   }
+}
+
+// Wraps a position that left the region where the configuration wraps (a torus, or a cell's
+// period); whether it then lies where the chain places elements.
+bool BirthDeathChain::settle(Vec3& position) const {
+  const geometry::Domain& domain = r_.domain;
+  if (r_.confined) {
+    for (int axis = 0; axis < t_.dimension; ++axis) {
+      const double period = r_.period[axis];
+      if (period > 0)
+        position[axis] -=
+            period * std::floor((position[axis] - r_.free_region.min()[axis]) / period);
+    }
+    return in_free_region(position);
+  }
+  position = domain.wrap(position);
+  return domain.periodic() || (domain.contains(position) && in_free_region(position));
 }
 
 std::vector<Element> BirthDeathChain::elements() const { return state_.elements(); }

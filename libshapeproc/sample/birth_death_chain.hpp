@@ -14,6 +14,7 @@
 #include "libshapeproc/model/shape_process_model.hpp"
 #include "libshapeproc/sample/configuration.hpp"
 #include "libshapeproc/sample/move_counts.hpp"
+#include "libshapeproc/sample/neighbour_births.hpp"
 #include "libshapeproc/sample/overlap_guard.hpp"
 
 namespace shapeproc::sample {
@@ -49,6 +50,11 @@ struct ChainTables {
   std::vector<std::vector<double>> shape_cumulative;
   std::vector<double> log_beta;  // per category: log(β_c Σ_k w_k)
   double reach = 0.0;            // farthest apart two interacting reference positions can be
+  // Per shape (one point shape for a point pattern): the log of its probability within its
+  // category as a uniform birth draws it.
+  std::vector<double> log_shape_probability;
+  // Births near neighbours (neighbour_births.hpp); null: the model has no offsets to use.
+  std::unique_ptr<const NeighbourBirths> near_births;
 };
 
 // Where a chain moves elements.
@@ -71,6 +77,9 @@ struct ChainRegion {
   geometry::Vec3 period = geometry::Vec3::Zero();
   double shift_probability = 1.0 / 3.0;
   double shift_radius = 1.0;
+  // The share of birth proposals drawn near a neighbour (neighbour_births.hpp) when the tables
+  // have them and the configuration is not empty; the others are uniform.
+  double near_birth_share = 0.0;
 };
 
 class BirthDeathChain {
@@ -125,6 +134,10 @@ class BirthDeathChain {
  private:
   Element random_element();
   int random_shape(int category);
+  bool near_births() const { return t_.near_births && r_.near_birth_share > 0; }
+  Element birth_proposal();
+  double log_proposal_excess(const Element& e, int skip) const;
+  bool settle(Vec3& position) const;
   void propose_birth();
   void propose_death();
   void propose_shift();

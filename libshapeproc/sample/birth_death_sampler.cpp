@@ -31,6 +31,8 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check(domain_.dimension() == dimension, "sample",
               "the domain is " + std::to_string(domain_.dimension()) + "D but the model " +
                   std::to_string(dimension) + "D");
+  core::check_in_range("sample", "the share of births near neighbours", options_.near_birth_share,
+                       0.0, 1.0, true);
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
@@ -65,6 +67,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
     core::check(e.category >= 0 && e.category < categories && e.shape >= 0 && e.shape < shapes,
                 "sample", "a start element has a category or shape the model does not have");
   region.shift_probability = options_.shift_probability;
+  region.near_birth_share = options_.near_birth_share;
   const double range = tables_->interaction->range();
   region.shift_radius = options_.shift_radius > 0 ? options_.shift_radius
                         : range > 0               ? 0.5 * range
@@ -217,6 +220,8 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius())}};
+  if (tables_->near_births)
+    record.options.emplace_back("near_birth_share", core::describe(options_.near_birth_share));
   record.steps = sampled.iterations;
   record.stationary = sampled.stationary;
   const MoveCounts& m = sampled.moves;

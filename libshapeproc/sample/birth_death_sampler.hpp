@@ -40,7 +40,11 @@ struct SamplerOptions {
   long long iterations = 0;
   long long max_iterations = 5'000'000;
   double shift_probability =
-      1.0 / 3.0;              // share of steps that shift an element (0: pure birth-death)
+      1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
+  // The share of birth proposals drawn near an element, at an offset the exemplar showed
+  // (neighbour_births.hpp), when the model has offsets; the rest are uniform. The chain's target
+  // is the model's at any share.
+  double near_birth_share = 0.5;
   double shift_radius = 0.0;  // ρ; 0 = half the model's interaction range (1/20 of the
                               // domain's shorter side for a model without interaction)
   long long trace_every = 0;  // record the state every so many steps (0: no trace)

@@ -67,6 +67,16 @@ class Configuration {
 
   std::vector<Element> elements() const;
 
+  // Calls f(slot, element) for every element whose reference position may lie within the reach
+  // of `position` (a superset of them, each once).
+  template <class F>
+  void for_each_near(const Vec3& position, F&& f) const {
+    grid_.for_each_candidate(position,
+                             [&](int slot) { f(slot, elements_[static_cast<std::size_t>(slot)]); });
+  }
+  // The period the configuration wraps with (zero along open axes).
+  const Vec3& period() const { return period_; }
+
   // The sufficient statistics t(x) of the configuration (Interaction::statistic_count): by θ
   // index elements per category, then pairs per interaction parameter (each pair once), then
   // elements per shape class. Kept up to date by add, remove and move.

@@ -65,6 +65,7 @@ double pilot_density(const model::ShapeProcessModel& model, const ChainTables& t
   const ChainTables pilot_tables(model, torus);
   ChainRegion region{torus, torus.box()};
   region.shift_probability = whole.shift_probability;
+  region.near_birth_share = whole.near_birth_share;
   region.shift_radius = whole.shift_radius;
   core::Random random(seed);
   BirthDeathChain chain(pilot_tables, region, random, {}, {});
@@ -145,6 +146,7 @@ class Cells {
     region.confined = true;
     region.period = layout_.spanned_period();
     region.shift_probability = whole_.shift_probability;
+    region.near_birth_share = whole_.near_birth_share;
     region.shift_radius = whole_.shift_radius;
     std::vector<Element> around, own;
     for (int other : layout_.around(cell)) {

@@ -67,6 +67,12 @@ TEST(ModelFile, FitWriteReadRoundTrip) {
   }
   for (std::size_t s = 0; s < back.shapes.size(); ++s)
     EXPECT_EQ(back.shapes[s].shape_class, fit.model.shapes[s].shape_class);
+  // Where its elements have their neighbours, for births near them.
+  ASSERT_FALSE(fit.model.neighbour_offsets.empty());
+  ASSERT_EQ(back.neighbour_offsets.offsets.size(), fit.model.neighbour_offsets.offsets.size());
+  EXPECT_EQ(back.neighbour_offsets.radii, fit.model.neighbour_offsets.radii);
+  EXPECT_EQ(back.neighbour_offsets.offsets[0].offset,
+            fit.model.neighbour_offsets.offsets[0].offset);
   // The plot is an SVG with one polar sector per axis half and band.
   const std::string svg = render::interaction_plot_svg(back);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
@@ -121,7 +127,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"number_overflow", "\"beta\": 0.01", "\"beta\": 1e999999",
                  "malformed JSON: number overflow parsing '1e999999'"},
         BadModel{"missing", "\"categories\": [ { \"name\"", "\"cats\": [ { \"name\"",
-                 "categories: missing"}),
+                 "categories: missing"},
+        BadModel{"offsets_shape", "\"shapes\": [",
+                 "\"neighbour_offsets\": {\"radii\": [0.1], \"offsets\": [[0, 3, 1, 0, 1]]}, "
+                 "\"shapes\": [",
+                 "neighbour_offsets.offsets[0]: names a shape out of range"},
+        BadModel{"offsets_row", "\"shapes\": [",
+                 "\"neighbour_offsets\": {\"radii\": [0.1], \"offsets\": [[0, 0, 1, 1]]}, "
+                 "\"shapes\": [",
+                 "neighbour_offsets.offsets[0]: expected [from, to, x, y, weight]"},
+        BadModel{"offsets_radius", "\"shapes\": [",
+                 "\"neighbour_offsets\": {\"radii\": [-1], \"offsets\": [[0, 0, 1, 0, 1]]}, "
+                 "\"shapes\": [",
+                 "neighbour_offsets.radii[0]: must be finite and > 0"}),
     [](const ::testing::TestParamInfo<BadModel>& param_info) {
       return std::string(param_info.param.name);
     });

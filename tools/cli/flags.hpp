@@ -70,6 +70,7 @@ struct SampleFlags {
   int chains = 1, threads = 0;
   bool force = false;  // overwrite existing outputs
   double shift_probability = sample::SamplerOptions{}.shift_probability;
+  double near_birth_share = sample::SamplerOptions{}.near_birth_share;
   double shift_radius = 0.0;
   double png_scale = 0.0;
   VerbosityFlags verbosity;
