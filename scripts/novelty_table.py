@@ -79,7 +79,7 @@ def row(path, seed, args, pictures):
         png = os.path.join(pictures, f"{name}-seed{seed}.png")
         reader = ["--tile"] if args.tile else []
         command = ["synthesize", path, *reader, "--size", ",".join(f"{3 * s:g}" for s in size),
-                   "--seed", str(seed), "-o", out, "--png", png, "--force"]
+                   "--seed", str(seed), "-o", out, "--png", png, "--force", *args.flags.split()]
         try:
             p, seconds = run(command, args.timeout)
         except subprocess.TimeoutExpired:
@@ -116,6 +116,8 @@ def shown_arguments(args):
     shown = [f"--seeds {args.seeds}", f"--timeout {args.timeout:g}"]
     if args.tile:
         shown.append("--tile")
+    if args.flags:
+        shown.append(f"--flags '{args.flags}'")
     return " ".join(shown + [args.out] + ([args.name] if args.name else args.dirs))
 
 
@@ -145,6 +147,8 @@ def main():
     parser.add_argument("out")
     parser.add_argument("dirs", nargs="+")
     parser.add_argument("--name", help="how the header names the folders (default: as given)")
+    parser.add_argument("--flags", default="",
+                        help="further synthesize flags, e.g. '--near-births 0.5' (default: none)")
     args = parser.parse_args()
     pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "novelty")
     os.makedirs(pictures, exist_ok=True)
@@ -156,7 +160,8 @@ def main():
         f"Command: `python3 scripts/novelty_table.py {shown_arguments(args)}` at commit {commit}, "
         f"{datetime.date.today().isoformat()}.",
         "",
-        "Each output: `shapeproc synthesize EXEMPLAR --size 3W,3H --seed S` with every other flag at "
+        "Each output: `shapeproc synthesize EXEMPLAR --size 3W,3H --seed S"
+        + (f" {args.flags}" if args.flags else "") + "` with every other flag at "
         "its default, judged by `shapeproc report` (docs/metrics.md). Chance levels in brackets: "
         "the same measure of the output's elements placed at random.",
         "",

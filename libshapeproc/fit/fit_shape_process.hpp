@@ -44,6 +44,10 @@ struct FitOptions {
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;
+  // The share of the maximum-likelihood chains' birth proposals drawn near a neighbour, recorded
+  // in the model for every later chain (model::NeighbourOffsets::share; docs/mathematics.md,
+  // "Births near neighbours"); in [0, 1).
+  double near_birth_share = 0.0;
   // Threads that integrate the quadrature (0: one per core); the fit does not depend on them.
   int threads = 0;
   // Called at each stage ("proxies", "measurements", "quadrature", "optimisation") with the work

@@ -17,7 +17,7 @@ json neighbour_offsets_json(const model::NeighbourOffsets& offsets, int dimensio
     row.push_back(o.weight);
     rows.push_back(std::move(row));
   }
-  return {{"radii", offsets.radii}, {"offsets", rows}};
+  return {{"share", offsets.share}, {"radii", offsets.radii}, {"offsets", rows}};
 }
 
 namespace {
@@ -47,6 +47,7 @@ model::NeighbourOffsets parse_neighbour_offsets(const json& object, int dimensio
       !object["radii"].is_array() || !object["offsets"].is_array())
     fail(file_name, "", "expected an object with the arrays \"radii\" and \"offsets\"");
   model::NeighbourOffsets out;
+  if (object.contains("share")) out.share = number(object["share"], file_name, ".share");
   const json& radii = object["radii"];
   for (std::size_t r = 0; r < radii.size(); ++r)
     out.radii.push_back(number(radii[r], file_name, ".radii[" + std::to_string(r) + "]"));

@@ -9,7 +9,8 @@
 
 namespace shapeproc::io {
 
-// {"radii": [r, ...], "offsets": [[from, to, x, y(, z), weight], ...]}.
+// {"share": s, "radii": [r, ...], "offsets": [[from, to, x, y(, z), weight], ...]} ("share" may be
+// left out: 0).
 nlohmann::json neighbour_offsets_json(const model::NeighbourOffsets& offsets, int dimension);
 
 // The offsets an object holds; a malformed one is a core::InputError naming `file_name` and the

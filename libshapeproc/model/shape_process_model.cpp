@@ -201,6 +201,8 @@ void validate_neighbour_offsets(const ShapeProcessModel& model) {
   const int kinds =
       static_cast<int>(model.shapes.empty() ? model.categories.size() : model.shapes.size());
   if (n.radii.empty()) fail("neighbour_offsets.radii", "at least one radius is needed");
+  if (!(n.share >= 0 && n.share < 1))
+    fail("neighbour_offsets.share", "must be in [0, 1), got " + number(n.share));
   for (std::size_t r = 0; r < n.radii.size(); ++r)
     if (!(std::isfinite(n.radii[r]) && n.radii[r] > 0))
       fail("neighbour_offsets.radii[" + std::to_string(r) + "]",

@@ -96,6 +96,10 @@ struct NeighbourOffsets {
   // A proposal lands uniformly in a ball around the offset, of one of these radii (each as
   // likely): a small one that hits a tight packing's slot, a larger one that explores.
   std::vector<double> radii;
+  // The share of birth proposals drawn near a neighbour, in [0, 1): the fit's chains used it, and
+  // every chain of the model uses it unless told otherwise (sample::SamplerOptions). 0: births
+  // are uniform only, the offsets merely recorded.
+  double share = 0.0;
   bool empty() const { return offsets.empty(); }
 };
 

@@ -31,6 +31,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check(domain_.dimension() == dimension, "sample",
               "the domain is " + std::to_string(domain_.dimension()) + "D but the model " +
                   std::to_string(dimension) + "D");
+  if (options_.near_birth_share < 0) options_.near_birth_share = model_.neighbour_offsets.share;
   core::check_in_range("sample", "the share of births near neighbours", options_.near_birth_share,
                        0.0, 1.0, true);
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
@@ -220,7 +221,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   record.iterations = options_.iterations > 0 ? std::to_string(options_.iterations) : "stationary";
   record.options = {{"shift_probability", core::describe(options_.shift_probability)},
                     {"shift_radius", core::describe(shift_radius())}};
-  if (tables_->near_births)
+  if (tables_->near_births && options_.near_birth_share > 0)
     record.options.emplace_back("near_birth_share", core::describe(options_.near_birth_share));
   record.steps = sampled.iterations;
   record.stationary = sampled.stationary;

@@ -43,8 +43,8 @@ struct SamplerOptions {
       1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
   // The share of birth proposals drawn near an element, at an offset the exemplar showed
   // (neighbour_births.hpp), when the model has offsets; the rest are uniform. The chain's target
-  // is the model's at any share.
-  double near_birth_share = 0.5;
+  // is the model's at any share. Negative: the model's own (model::NeighbourOffsets::share).
+  double near_birth_share = -1.0;
   double shift_radius = 0.0;  // ρ; 0 = half the model's interaction range (1/20 of the
                               // domain's shorter side for a model without interaction)
   long long trace_every = 0;  // record the state every so many steps (0: no trace)

@@ -164,6 +164,13 @@ void FitFlags::add_to(CLI::App& command) {
           "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
       ->capture_default_str();
   command
+      .add_option("--near-births", near_birth_share,
+                  "share of birth proposals placed where the exemplar had a neighbour, in the "
+                  "fit's chains and every chain of the model (0: all uniform; see "
+                  "docs/mathematics.md)")
+      ->check(CLI::Range(0.0, 0.95))
+      ->capture_default_str();
+  command
       .add_option("--estimator", estimator,
                   "mle (maximum likelihood by MCMC, started from the MPL fit; every edge "
                   "treatment) or mpl (maximum pseudo-likelihood alone, fast); see docs/fit.md")
@@ -227,6 +234,7 @@ fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   if (!(data_weight >= 0 && data_weight < 1))
     throw core::UsageError("--data-weight must be in [0, 1)");
   o.data_weight = data_weight;
+  o.near_birth_share = near_birth_share;
   return o;
 }
 
@@ -243,7 +251,8 @@ nlohmann::json FitFlags::to_json() const {
           {"refine", refine},
           {"lines", lines},
           {"proxy_tolerance", proxy_tolerance},
-          {"data_weight", data_weight}};
+          {"data_weight", data_weight},
+          {"near_births", near_birth_share}};
 }
 
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {

@@ -36,6 +36,7 @@ struct FitFlags {
   bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
+  double near_birth_share = fit::FitOptions{}.near_birth_share;
   std::string estimator = "mle";
   int mle_chains = fit::MleOptions{}.sampling.chains;
   long long mle_steps = fit::MleOptions{}.sampling.steps;
@@ -70,7 +71,6 @@ struct SampleFlags {
   int chains = 1, threads = 0;
   bool force = false;  // overwrite existing outputs
   double shift_probability = sample::SamplerOptions{}.shift_probability;
-  double near_birth_share = sample::SamplerOptions{}.near_birth_share;
   double shift_radius = 0.0;
   double png_scale = 0.0;
   VerbosityFlags verbosity;

@@ -92,12 +92,6 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options, bool multiples
         ->check(CLI::Range(0.0, 0.95))
         ->capture_default_str();
     command
-        .add_option("--near-births", near_birth_share,
-                    "share of birth proposals placed where the exemplar had a neighbour (the "
-                    "model's offsets; 0: all uniform); the samples' distribution does not change")
-        ->check(CLI::Range(0.0, 0.95))
-        ->capture_default_str();
-    command
         .add_option("--shift-radius", shift_radius,
                     "largest shift (default: half the interaction range)")
         ->check(non_negative_number());
@@ -285,7 +279,6 @@ sample::SamplerOptions SampleFlags::sampler_options() const {
   sample::SamplerOptions options;
   options.iterations = iterations;
   options.shift_probability = shift_probability;
-  options.near_birth_share = near_birth_share;
   options.shift_radius = shift_radius;
   if (!trace.empty())
     options.trace_every = iterations > 0 ? std::max<long long>(1, iterations / 1000) : 100;

@@ -254,12 +254,6 @@ void add_synthesize_command(CLI::App& app, Action& action,
       ->check(CLI::Range(0.0, 0.95))
       ->capture_default_str();
   command
-      ->add_option("--near-births", args->sample.near_birth_share,
-                   "share of birth proposals placed where the exemplar had a neighbour (0: all "
-                   "uniform); the samples' distribution does not change")
-      ->check(CLI::Range(0.0, 0.95))
-      ->capture_default_str();
-  command
       ->add_option("--shift-radius", args->sample.shift_radius,
                    "largest shift (default: half the interaction range)")
       ->check(non_negative_number());
