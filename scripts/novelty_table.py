@@ -8,9 +8,9 @@ a user would (`shapeproc synthesize`, defaults, an output of 3 x 3 exemplars' si
   period (docs/metrics.md, "Novelty"); density against the exemplar's; the class mix's p; overlaps;
   order; seconds of the whole synthesize command (fit included); the report's failed checks.
 
-Usage: python3 scripts/novelty_table.py [--seeds 1,2,3,4] [--timeout 120] [--tile] OUT.md DIR...
+Usage: python3 scripts/novelty_table.py [--seeds 1,2,3,4] [--timeout 120] [--tile] [--flags F] OUT.md DIR...
 Folders of .svg files; --tile reads them as seamless tiles (Hero Patterns). The pictures of each
-output are kept in OUT's folder under novelty/ (PNG).
+output are kept in OUT's folder under novelty/ (PNG); with --flags, under novelty-FLAGS/.
 """
 import argparse
 import datetime
@@ -150,7 +150,10 @@ def main():
     parser.add_argument("--flags", default="",
                         help="further synthesize flags, e.g. '--near-births 0.5' (default: none)")
     args = parser.parse_args()
-    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "novelty")
+    # Pictures of outputs made with further flags go to a folder of their own.
+    folder = "novelty" + ("-" + re.sub(r"[^a-z0-9.]+", "-", args.flags.lower()).strip("-")
+                          if args.flags else "")
+    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), folder)
     os.makedirs(pictures, exist_ok=True)
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
