@@ -158,7 +158,7 @@ def main():
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
     lines = [
-        "# Novelty of default outputs",
+        "# Novelty of " + (f"outputs with {args.flags}" if args.flags else "default outputs"),
         "",
         f"Command: `python3 scripts/novelty_table.py {shown_arguments(args)}` at commit {commit}, "
         f"{datetime.date.today().isoformat()}.",
