@@ -304,6 +304,18 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
       synthesis::run_chains(synthesizer, chains_options);
   bar.finish();
 
+  // An output emptied by its own chain is nothing to write (a model whose chains either fill the
+  // domain or empty it, and this one emptied): said before any file is written.
+  for (const synthesis::SynthesisResult& result : results) {
+    const double wanted = exemplar_density * result.scene.window_measure();
+    if (result.scene.elements.empty() && wanted >= 1.0)
+      throw core::UsageError(
+          "chain " + std::to_string(result.record.chain) + " ended empty where the exemplar's " +
+          "density gives " + core::format_general(wanted, 4) +
+          " elements: the model's chains do not hold its exemplar's elements from empty; "
+          "nothing written");
+  }
+
   for (int c = 0; c < chains; ++c) {
     const synthesis::SynthesisResult& result = results[static_cast<std::size_t>(c)];
     const std::string file = suffixed(output, c, chains);
