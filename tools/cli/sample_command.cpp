@@ -304,11 +304,12 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
       synthesis::run_chains(synthesizer, chains_options);
   bar.finish();
 
-  // An output emptied by its own chain is nothing to write (a model whose chains either fill the
-  // domain or empty it, and this one emptied): said before any file is written.
+  // An output its own chain emptied, run to its automatic stop, is nothing to write (a model
+  // whose chains either fill the domain or empty it, and this one emptied): said before any file
+  // is written. Given --iterations, the chain's state after them is what was asked for.
   for (const synthesis::SynthesisResult& result : results) {
     const double wanted = exemplar_density * result.scene.window_measure();
-    if (result.scene.elements.empty() && wanted >= 1.0)
+    if (iterations <= 0 && result.scene.elements.empty() && wanted >= 1.0)
       throw core::UsageError(
           "chain " + std::to_string(result.record.chain) + " ended empty where the exemplar's " +
           "density gives " + core::format_general(wanted, 4) +
