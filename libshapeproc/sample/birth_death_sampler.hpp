@@ -3,7 +3,9 @@
 // configuration, each step is with probability p_s a shift, otherwise with equal probability a
 // birth or a death:
 // - birth: u uniform in the domain D, category c uniform among the C categories, shape uniform in
-//   S_c; accepted with probability min(1, λ(ξ | x) |D| C / (n + 1));
+//   S_c; accepted with probability min(1, λ(ξ | x) |D| C / (n + 1)) (with a model's births near
+//   neighbours, neighbour_births.hpp, a share of births is drawn there and the ratio divides by
+//   the mixture's density instead);
 // - death: an element chosen uniformly; accepted with probability min(1, n / (|D| C λ(x_i | x
 // \ x_i)));
 // - shift: an element chosen uniformly moves by an offset uniform in a ball of radius ρ (same shape
