@@ -5,54 +5,27 @@
 #include <map>
 
 #include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/geometry/nearest_neighbours.hpp"
 
 namespace shapeproc::fit {
 
 namespace {
 
-struct Neighbour {
-  double squared;
-  int index;
-  geometry::Vec3 offset;
-};
-
-// Each element's `k` nearest neighbours (fewer when the exemplar has fewer), nearest first.
-std::vector<std::vector<Neighbour>> nearest_neighbours(const geometry::Scene& exemplar,
-                                                       const geometry::Vec3& period, int k) {
-  const std::vector<geometry::Element>& elements = exemplar.elements;
-  std::vector<std::vector<Neighbour>> out(elements.size());
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    std::vector<Neighbour>& list = out[i];
-    for (std::size_t j = 0; j < elements.size(); ++j) {
-      if (j == i) continue;
-      const geometry::Vec3 t =
-          geometry::minimum_image(elements[j].position - elements[i].position, period);
-      list.push_back({t.squaredNorm(), static_cast<int>(j), t});
-    }
-    const std::size_t keep = std::min(list.size(), static_cast<std::size_t>(k));
-    std::partial_sort(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(keep), list.end(),
-                      [](const Neighbour& a, const Neighbour& b) {
-                        return a.squared != b.squared ? a.squared < b.squared : a.index < b.index;
-                      });
-    list.resize(keep);
-  }
-  return out;
-}
-
 // A single element on a torus is its own neighbour at the lattice vectors: its images along each
-// axis and the diagonals.
-std::vector<Neighbour> own_images(const geometry::Vec3& period, int dimension) {
-  std::vector<Neighbour> out;
+// axis and the diagonals, nearest first.
+std::vector<geometry::NearestNeighbour> own_images(const geometry::Vec3& period, int dimension) {
+  std::vector<geometry::NearestNeighbour> out;
   const int z_reach = dimension == 3 ? 1 : 0;
   for (int dz = -z_reach; dz <= z_reach; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         if (dx == 0 && dy == 0 && dz == 0) continue;
-        const geometry::Vec3 t(dx * period.x(), dy * period.y(), dz * period.z());
-        out.push_back({t.squaredNorm(), 0, t});
+        out.push_back({0, geometry::Vec3(dx * period.x(), dy * period.y(), dz * period.z())});
       }
   std::stable_sort(out.begin(), out.end(),
-                   [](const Neighbour& a, const Neighbour& b) { return a.squared < b.squared; });
+                   [](const geometry::NearestNeighbour& a, const geometry::NearestNeighbour& b) {
+                     return a.offset.squaredNorm() < b.offset.squaredNorm();
+                   });
   return out;
 }
 
@@ -62,16 +35,23 @@ model::NeighbourOffsets neighbour_offsets(const geometry::Scene& exemplar, bool 
                                           const NeighbourOffsetOptions& options) {
   model::NeighbourOffsets result;
   const std::vector<geometry::Element>& elements = exemplar.elements;
+  const bool lone = elements.size() == 1 && periodic;
   const geometry::Vec3 period =
       periodic ? geometry::Vec3(exemplar.window.sizes()) : geometry::Vec3::Zero();
   const int k = options.neighbours > 0 ? options.neighbours : (exemplar.dimension == 3 ? 6 : 4);
-  std::vector<std::vector<Neighbour>> near = nearest_neighbours(exemplar, period, k);
-  if (elements.size() == 1 && periodic) near[0] = own_images(period, exemplar.dimension);
+  std::vector<geometry::Vec3> positions;
+  for (const geometry::Element& e : elements) positions.push_back(e.position);
+  std::vector<std::vector<geometry::NearestNeighbour>> near = geometry::nearest_neighbours(
+      positions,
+      geometry::Domain(exemplar.window, exemplar.dimension,
+                       periodic ? geometry::Boundary::torus : geometry::Boundary::open),
+      static_cast<std::size_t>(k));
+  if (lone) near[0] = own_images(period, exemplar.dimension);
   double sum = 0.0;
   int counted = 0;
   for (const auto& list : near)
     if (!list.empty()) {
-      sum += std::sqrt(list.front().squared);
+      sum += list.front().offset.norm();
       ++counted;
     }
   if (counted == 0 || !(sum > 0)) return result;
@@ -83,9 +63,9 @@ model::NeighbourOffsets neighbour_offsets(const geometry::Scene& exemplar, bool 
   // Per kind of element: its offsets, merged within the small radius.
   std::map<int, std::vector<model::NeighbourOffset>> by_kind;
   for (std::size_t i = 0; i < elements.size(); ++i)
-    for (const Neighbour& n : near[i]) {
+    for (const geometry::NearestNeighbour& n : near[i]) {
       const int from = kind(elements[i]);
-      const int to = kind(elements[static_cast<std::size_t>(n.index)]);
+      const int to = kind(elements[n.index]);
       std::vector<model::NeighbourOffset>& list = by_kind[from];
       const auto same =
           std::find_if(list.begin(), list.end(), [&](const model::NeighbourOffset& o) {

@@ -8,9 +8,10 @@
 
 namespace shapeproc::geometry {
 
-std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
-                                               const Domain& domain, std::size_t count) {
-  std::vector<std::vector<Vec3>> out(points.size());
+std::vector<std::vector<NearestNeighbour>> nearest_neighbours(const std::vector<Vec3>& points,
+                                                              const Domain& domain,
+                                                              std::size_t count) {
+  std::vector<std::vector<NearestNeighbour>> out(points.size());
   if (points.size() < 2 || count == 0) return out;
   const int dimension = domain.dimension();
   std::vector<std::size_t> short_of;
@@ -21,7 +22,7 @@ std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
   for (int axis = 0; axis < dimension; ++axis)
     largest += domain.sizes()[axis] * domain.sizes()[axis];
   largest = std::sqrt(largest);
-  std::vector<std::pair<double, Vec3>> near;
+  std::vector<std::pair<double, NearestNeighbour>> near;
   while (!short_of.empty()) {
     NeighbourGrid grid(domain.box(), dimension, cell, domain.periodic());
     for (std::size_t i = 0; i < points.size(); ++i) grid.insert(static_cast<int>(i), points[i]);
@@ -31,7 +32,7 @@ std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
       grid.for_each_candidate(points[i], [&](int j) {
         if (static_cast<std::size_t>(j) == i) return;
         const Vec3 d = domain.minimum_image(points[static_cast<std::size_t>(j)] - points[i]);
-        near.emplace_back(d.squaredNorm(), d);
+        near.emplace_back(d.squaredNorm(), NearestNeighbour{static_cast<std::size_t>(j), d});
       });
       std::sort(near.begin(), near.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -47,6 +48,16 @@ std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
     }
     short_of = std::move(still);
     cell *= 2.0;
+  }
+  return out;
+}
+
+std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
+                                               const Domain& domain, std::size_t count) {
+  std::vector<std::vector<Vec3>> out;
+  for (const auto& list : nearest_neighbours(points, domain, count)) {
+    out.emplace_back();
+    for (const NearestNeighbour& n : list) out.back().push_back(n.offset);
   }
   return out;
 }

@@ -11,8 +11,18 @@
 
 namespace shapeproc::geometry {
 
-// Per point, up to `count` offsets (fewer when there are not that many others), nearest first.
+struct NearestNeighbour {
+  std::size_t index;  // of the other point
+  Vec3 offset;        // from the point to it
+};
+
+// Per point, up to `count` neighbours (fewer when there are not that many others), nearest first.
 // Points lie in the domain's box (the grid clamps those outside to its border cells).
+std::vector<std::vector<NearestNeighbour>> nearest_neighbours(const std::vector<Vec3>& points,
+                                                              const Domain& domain,
+                                                              std::size_t count);
+
+// The same, offsets only.
 std::vector<std::vector<Vec3>> nearest_offsets(const std::vector<Vec3>& points,
                                                const Domain& domain, std::size_t count);
 

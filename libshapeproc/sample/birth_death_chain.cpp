@@ -8,6 +8,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/ball_offset.hpp"
 
 namespace shapeproc::sample {
 
@@ -139,13 +140,8 @@ int BirthDeathChain::add_or_place_near(const std::vector<Element>& elements, dou
     bool fits = false;
     for (int a = 0; a <= attempts && !fits; ++a) {
       if (a > 0) {
-        placed.position = e.position;
-        Vec3 offset = Vec3::Zero();
-        do {
-          for (int axis = 0; axis < t_.dimension; ++axis)
-            offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
-        } while (offset.squaredNorm() > radius * radius);
-        placed.position = r_.domain.wrap(placed.position + offset);
+        placed.position =
+            r_.domain.wrap(e.position + offset_in_ball(random_, radius, t_.dimension));
       }
       if (!in_free_region(placed.position) ||
           (!r_.domain.periodic() && !r_.domain.contains(placed.position)))
@@ -284,7 +280,7 @@ void BirthDeathChain::propose_shift() {
   const int slot = uniform_slot();
   if (slot < 0) return;
   Element moved = state_.at(slot);
-  moved.position += offset_in_ball();
+  moved.position += offset_in_ball(random_, r_.shift_radius, t_.dimension);
   const bool inside = settle(moved.position);
   const double new_term = inside ? log_lambda_over_beta(moved, slot) : kMinusInfinity;
   if (!std::isfinite(new_term)) return;
@@ -336,17 +332,6 @@ bool BirthDeathChain::in_free_region(const Vec3& p) const {
   for (int axis = 0; axis < t_.dimension; ++axis)
     if (p[axis] < r_.free_region.min()[axis] || p[axis] > r_.free_region.max()[axis]) return false;
   return true;
-}
-
-// Uniform in the ball of radius ρ, by rejection from its bounding cube.
-Vec3 BirthDeathChain::offset_in_ball() {
-  const double radius = r_.shift_radius;
-  Vec3 offset = Vec3::Zero();
-  do {
-    for (int axis = 0; axis < t_.dimension; ++axis)
-      offset[axis] = radius * (2.0 * random_.uniform() - 1.0);
-  } while (offset.squaredNorm() > radius * radius);
-  return offset;
 }
 
 // log of the domain's local factor of β at the element: −∞ outside the mask or where the

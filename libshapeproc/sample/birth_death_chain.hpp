@@ -143,7 +143,6 @@ class BirthDeathChain {
   void propose_shift();
   int uniform_slot();
   bool in_free_region(const Vec3& p) const;
-  Vec3 offset_in_ball();
   double log_local_factor(const Element& e) const;
   double log_lambda_over_beta(const Element& e, int skip);
 

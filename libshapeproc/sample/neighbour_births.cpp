@@ -5,6 +5,7 @@
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/sample/ball_offset.hpp"
 
 namespace shapeproc::sample {
 
@@ -59,11 +60,7 @@ Element NeighbourBirths::propose(const Element& anchor, core::Random& random) co
                                         cumulative.begin()));
   const Entry& entry = from_[from][pick];
   const double radius = radii_[random.index(radii_.size())];
-  Vec3 jitter = Vec3::Zero();
-  do {
-    for (int axis = 0; axis < dimension_; ++axis)
-      jitter[axis] = radius * (2.0 * random.uniform() - 1.0);
-  } while (jitter.squaredNorm() > radius * radius);
+  const Vec3 jitter = offset_in_ball(random, radius, dimension_);
   Element xi;
   xi.category = entry.to_category;
   xi.shape = entry.to_shape;
