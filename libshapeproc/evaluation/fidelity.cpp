@@ -68,6 +68,7 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
   }
   // The chains run the fit's burn-in: compressing for a packed exemplar.
   setting.compress = fit::compressing_burn_in(model);
+  setting.crystal = fit::output_compression(model).crystal;
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);

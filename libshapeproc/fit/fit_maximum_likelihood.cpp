@@ -6,6 +6,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
+#include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
@@ -86,6 +87,7 @@ bool compressing_burn_in(const model::ShapeProcessModel& model) {
 sample::CompressionOptions output_compression(const model::ShapeProcessModel& model) {
   sample::CompressionOptions c;
   c.enabled = compressing_burn_in(model);
+  c.crystal = c.enabled && likelihood_of(model)->crystal_growth;
   return c;
 }
 
@@ -174,6 +176,11 @@ void add_outcome_notes(const MleResult& mle, const MleOptions& options,
                     " iterations: " + mle.abandoned +
                     "; the model is the iterate closest to the exemplar, and its outputs "
                     "hold fewer elements than the exemplar's density");
+  } else if (mle.held_crystal) {
+    notes.push_back("the maximum-likelihood fit stopped after " + std::to_string(mle.iterations) +
+                    " iterations at an iterate whose expected counts are within the tolerance, "
+                    "untested: its chains grow the lattice as a crystal and hold it, each worth "
+                    "about one observation");
   } else if (!mle.converged) {
     notes.push_back("the maximum-likelihood fit did not converge in " +
                     std::to_string(mle.iterations) +
@@ -216,6 +223,7 @@ model::LikelihoodRecord likelihood_record(const MleResult& mle, const MleOptions
   model::LikelihoodRecord e;
   e.stationary_window = stationary;
   e.compressing_burn_in = chains.sampling.compress;
+  e.crystal_growth = chains.sampling.compress && chains.sampling.crystal;
   e.unbounded = indices_with(mle, model::ParameterStatus::unbounded);
   e.iterations = mle.iterations;
   e.converged = mle.converged;
@@ -248,7 +256,7 @@ model::LikelihoodRecord likelihood_record(const MleResult& mle, const MleOptions
 // receives the measure of the region the chains sample.
 MleOptions chain_options(const geometry::Scene& exemplar, const FitOptions& fit_options,
                          const model::ShapeProcessModel& start, const MleOptions& options,
-                         bool stationary, bool compress, double& measure) {
+                         bool stationary, bool compress, bool crystal, double& measure) {
   MleOptions chains = options;
   measure = geometry::measure(exemplar.window, exemplar.dimension);
   if (stationary) chains.sampling.observe_region = exemplar.window;
@@ -263,6 +271,7 @@ MleOptions chain_options(const geometry::Scene& exemplar, const FitOptions& fit_
     measure = geometry::measure(border.region, exemplar.dimension);
   }
   chains.sampling.compress = compress;  // a packed exemplar's chains compress from empty
+  chains.sampling.crystal = crystal;
   return chains;
 }
 
@@ -274,16 +283,21 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   model::ShapeProcessModel start = mple.model;
   const bool open_window = fit_options.boundary == geometry::Boundary::open &&
                            fit_options.edge == geometry::EdgeTreatment::none;
-  const bool compress = packed_exemplar(start);
+  const bool packed = packed_exemplar(start);
+  // A lattice's chains grow it as a crystal from one element, by births at the exemplar's
+  // neighbour offsets (every element of a lattice is equivalent: any one is a nucleus), packed or
+  // not: random births fill a lattice's sites only by chance.
+  const bool crystal = !start.neighbour_offsets.empty() && metrics::is_lattice_exemplar(exemplar);
+  const bool compress = packed || crystal;
   const bool stationary = open_window && (options.window == WindowModel::stationary ||
-                                          (options.window == WindowModel::automatic && !compress));
+                                          (options.window == WindowModel::automatic && !packed));
   const geometry::Domain window =
       stationary ? stationary_domain(exemplar)
                  : geometry::Domain(exemplar.window, exemplar.dimension, fit_options.boundary);
   const std::vector<double> observed = observed_statistics(exemplar, start);
   double measure = 0.0;
   const MleOptions chains =
-      chain_options(exemplar, fit_options, start, options, stationary, compress, measure);
+      chain_options(exemplar, fit_options, start, options, stationary, compress, crystal, measure);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;

@@ -39,8 +39,9 @@ bool packed_exemplar(const model::ShapeProcessModel& mple);
 // did (its fit record's `estimator.burn_in`); false for other models.
 bool compressing_burn_in(const model::ShapeProcessModel& model);
 
-// The burn-in an output of a fitted model runs: the compressing one, until its count is stationary
-// under the boost and as long again to release it, where the model's fit used it; none otherwise.
+// The burn-in an output of a fitted model runs: the compressing one (growing a crystal where the
+// fit's did), until its count is stationary under the boost and as long again to release it,
+// where the model's fit used it; none otherwise.
 sample::CompressionOptions output_compression(const model::ShapeProcessModel& model);
 
 // The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.

@@ -451,6 +451,10 @@ LikelihoodSearch::Next LikelihoodSearch::decide(StatisticsMoments& m, double eff
       rough_ = false;  // within tolerance at a quarter of the precision: check at full length
       return Next::again;
     }
+    if (effective < kMinEffectiveSize && options_.sampling.crystal) {
+      r_.held_crystal = true;
+      return Next::stop;
+    }
     if (effective < kMinEffectiveSize && chains_ < most_chains_) {
       chains_ = more_chains(m.chains(), effective, most_chains_);
       added_to_ = std::move(m);  // the same θ again, with a sample whose test means something

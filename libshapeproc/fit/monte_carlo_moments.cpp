@@ -76,6 +76,7 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
     core::check(setting.burn_in >= 4, "mle", "the compressing burn-in needs a burn-in of 4 steps");
     sampler_options.compression.enabled = true;
     sampler_options.compression.release_steps = setting.burn_in / 4;
+    sampler_options.compression.crystal = setting.crystal;
   }
   sampler_options.observe_region = setting.observe_region;
   sampler_options.geometry = setting.geometry;

@@ -35,6 +35,8 @@ struct ChainsSetting {
   // burn-in (sample/compression.hpp: a phase at an annealed β, then its release), so that a
   // packed exemplar's density is reached from no position of the exemplar.
   bool compress = false;
+  // With `compress`: the growth stages grow a crystal (sample::CompressionOptions::crystal).
+  bool crystal = false;
   // The stationary window (docs/fit.md, "Stationary window"): when set, the chains sample a
   // domain larger than the exemplar's window, and the statistics observed are those of the
   // elements in this region (the window) and their pairs there, t_W, while the model's density

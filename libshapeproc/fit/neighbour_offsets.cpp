@@ -29,6 +29,30 @@ std::vector<geometry::NearestNeighbour> own_images(const geometry::Vec3& period,
   return out;
 }
 
+// Candidates looked at per element for the cones' nearest neighbours.
+constexpr std::size_t kCandidates = 16;
+
+// Of an element's neighbours (nearest first), the `k` nearest and the nearest in each cone around
+// an axis (the neighbours whose offset is largest along that axis, one cone per sign): offsets
+// that span the space, so that a crystal grown from them fills it (groovy's elements stand in
+// rows 12 px apart, and their 4 nearest neighbours are all in their row, the next row 40 px up).
+std::vector<geometry::NearestNeighbour> spanning(
+    const std::vector<geometry::NearestNeighbour>& nearest_first, std::size_t k, int dimension) {
+  std::vector<geometry::NearestNeighbour> kept;
+  std::vector<bool> cone_filled(2 * static_cast<std::size_t>(dimension), false);
+  for (std::size_t i = 0; i < nearest_first.size(); ++i) {
+    const geometry::Vec3& d = nearest_first[i].offset;
+    int axis = 0;
+    for (int a = 1; a < dimension; ++a)
+      if (std::abs(d[a]) > std::abs(d[axis])) axis = a;
+    const std::size_t cone = 2 * static_cast<std::size_t>(axis) + (d[axis] < 0 ? 1 : 0);
+    const bool first_in_cone = !cone_filled[cone];
+    cone_filled[cone] = true;
+    if (i < k || first_in_cone) kept.push_back(nearest_first[i]);
+  }
+  return kept;
+}
+
 }  // namespace
 
 model::NeighbourOffsets neighbour_offsets(const geometry::Scene& exemplar, bool periodic,
@@ -45,8 +69,9 @@ model::NeighbourOffsets neighbour_offsets(const geometry::Scene& exemplar, bool 
       positions,
       geometry::Domain(exemplar.window, exemplar.dimension,
                        periodic ? geometry::Boundary::torus : geometry::Boundary::open),
-      static_cast<std::size_t>(k));
+      std::max(kCandidates, static_cast<std::size_t>(k)));
   if (lone) near[0] = own_images(period, exemplar.dimension);
+  for (auto& list : near) list = spanning(list, static_cast<std::size_t>(k), exemplar.dimension);
   double sum = 0.0;
   int counted = 0;
   for (const auto& list : near)

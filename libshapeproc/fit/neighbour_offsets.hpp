@@ -9,17 +9,19 @@
 namespace shapeproc::fit {
 
 struct NeighbourOffsetOptions {
-  int neighbours = 0;          // nearest neighbours per element; 0: 4 in 2D, 6 in 3D
+  int neighbours =
+      0;  // nearest neighbours per element (and each cone's nearest); 0: 4 in 2D, 6 in 3D
   int max_per_kind = 64;       // the heaviest offsets kept per kind of element
   double small_radius = 0.01;  // the proposal radii, as shares of the mean nearest-neighbour
   double large_radius = 0.1;   // distance
 };
 
 // For every element, its nearest neighbours by reference position (the nearest image on a
-// `periodic` window), each giving the offset from the element's kind (shape, or category for a
-// point pattern) to the neighbour's. Offsets of one pair of kinds nearer each other than the small
-// radius are merged (their weights, counts of pairs, summed). Empty for an exemplar without a
-// neighbour (a single element on an open window).
+// `periodic` window), and the nearest in each cone around an axis (so that the offsets span the
+// space, as a crystal grown from them must), each giving the offset from the element's kind (shape,
+// or category for a point pattern) to the neighbour's. Offsets of one pair of kinds nearer each
+// other than the small radius are merged (their weights, counts of pairs, summed). Empty for an
+// exemplar without a neighbour (a single element on an open window).
 model::NeighbourOffsets neighbour_offsets(const geometry::Scene& exemplar, bool periodic,
                                           const NeighbourOffsetOptions& options = {});
 

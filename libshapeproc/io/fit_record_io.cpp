@@ -20,7 +20,9 @@ json likelihood_json(const model::LikelihoodRecord& e) {
           {"start", e.start},
           {"window", e.stationary_window ? "stationary" : "own"},
           {"chains_start", "empty"},
-          {"burn_in_kind", e.compressing_burn_in ? "compressing" : "plain"},
+          {"burn_in_kind", e.crystal_growth        ? "crystal"
+                           : e.compressing_burn_in ? "compressing"
+                                                   : "plain"},
           {"unbounded", e.unbounded},
           {"iterations", e.iterations},
           {"converged", e.converged},
@@ -90,7 +92,9 @@ model::LikelihoodRecord parse_likelihood(const json& e) {
   model::LikelihoodRecord r;
   r.start = field(e, "start", r.start);
   r.stationary_window = field(e, "window", std::string()) == "stationary";
-  r.compressing_burn_in = field(e, "burn_in_kind", std::string()) == "compressing";
+  const std::string burn_in = field(e, "burn_in_kind", std::string());
+  r.crystal_growth = burn_in == "crystal";
+  r.compressing_burn_in = burn_in == "compressing" || r.crystal_growth;
   r.iterations = field(e, "iterations", 0);
   r.converged = field(e, "converged", false);
   r.chains = field(e, "chains", 0);

@@ -40,6 +40,9 @@ struct LikelihoodRecord {
   // The chains start empty and compress in their burn-in (sample/compression.hpp); outputs of the
   // model do the same.
   bool compressing_burn_in = false;
+  // Its growth stages grow a lattice exemplar as a crystal (sample/compression.hpp): births near
+  // neighbours from the first element on, at the model's own hard cores.
+  bool crystal_growth = false;
   int iterations = 0;
   bool converged = false;
   int chains = 0;        // of each simulation

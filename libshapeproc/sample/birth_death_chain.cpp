@@ -220,6 +220,7 @@ void BirthDeathChain::propose_birth() {
   const int n = state_.size() - fixed_;
   Element xi = birth_proposal();
   if (!settle(xi.position) || !in_free_region(xi.position)) return;
+  if (!r_.proposal_corrected && on_an_element(xi.position)) return;
   const double log_lambda =
       t_.log_beta[static_cast<std::size_t>(xi.category)] + log_lambda_over_beta(xi, -1);
   if (!std::isfinite(log_lambda)) return;
@@ -230,6 +231,23 @@ void BirthDeathChain::propose_birth() {
     log_density_ += log_lambda;
     ++moves_.births_accepted;
   }
+}
+
+// Whether an element of the configuration has its reference position at `position` (up to
+// rounding): a crystal's growth proposes the sites of its elements again, exactly, and two
+// identical outlines that coincide measure 0 apart, which a hard core at 0 (touching shapes)
+// allows.
+bool BirthDeathChain::on_an_element(const Vec3& position) const {
+  const double tolerance = 1e-9 * std::max(1.0, t_.reach);
+  bool found = false;
+  state_.for_each_near(position, [&](int, const Element& e) {
+    Vec3 d = e.position - position;
+    const Vec3& period = state_.period();
+    for (int axis = 0; axis < t_.dimension; ++axis)
+      if (period[axis] > 0) d[axis] -= period[axis] * std::round(d[axis] / period[axis]);
+    found = found || d.norm() <= tolerance;
+  });
+  return found;
 }
 
 // A birth's proposal: near a neighbour with the region's share (when the configuration has an
@@ -250,7 +268,8 @@ Element BirthDeathChain::birth_proposal() {
 // density over the uniform proposal's, log((1 − s) + s q_near / q_uniform) with s the near share
 // (0 when x' is empty or births are uniform only). q_uniform(e) = P(shape | category) / (|R| C).
 double BirthDeathChain::log_proposal_excess(const Element& e, int skip) const {
-  if (!near_births() || state_.size() - (skip >= 0 ? 1 : 0) <= 0) return 0.0;
+  if (!near_births() || !r_.proposal_corrected || state_.size() - (skip >= 0 ? 1 : 0) <= 0)
+    return 0.0;
   const double share = r_.near_birth_share;
   const double near = t_.near_births->density(e, state_, skip);
   const double uniform = std::exp(t_.log_shape_probability[static_cast<std::size_t>(e.shape)] -

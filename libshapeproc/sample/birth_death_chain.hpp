@@ -80,6 +80,10 @@ struct ChainRegion {
   // The share of birth proposals drawn near a neighbour (neighbour_births.hpp) when the tables
   // have them and the configuration is not empty; the others are uniform.
   double near_birth_share = 0.0;
+  // Whether births and deaths divide by the birth proposal's density (the model's chain); a
+  // compressing burn-in's growth, which only chooses where the chain starts, grows from its
+  // elements as a crystal grows: every proposal that fits is kept.
+  bool proposal_corrected = true;
 };
 
 class BirthDeathChain {
@@ -136,6 +140,7 @@ class BirthDeathChain {
   int random_shape(int category);
   bool near_births() const { return t_.near_births && r_.near_birth_share > 0; }
   Element birth_proposal();
+  bool on_an_element(const Vec3& position) const;
   double log_proposal_excess(const Element& e, int skip) const;
   bool settle(Vec3& position) const;
   void propose_birth();

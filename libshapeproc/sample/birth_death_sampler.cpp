@@ -94,10 +94,21 @@ void ShapeProcessSampler::prepare_growth() {
   ChainRegion local = *region_;
   local.shift_radius = push_radius_;
   local.shift_probability = kGrowthShiftProbability;
+  const bool crystal = c.crystal && tables_->near_births;
+  if (crystal) {
+    // Every birth exactly at an offset from an element, kept whenever it fits: a lattice's
+    // offsets add up to its own sites, where jittered ones drift apart over a few cells and
+    // leave the sites where two grown fronts meet too narrow for an element.
+    model::ShapeProcessModel seeded = model_;
+    seeded.neighbour_offsets.radii.assign(1, 0.0);
+    growth_.push_back(std::make_unique<const ChainTables>(seeded, domain_, tables_->geometry));
+    local.near_birth_share = 1.0;
+    local.proposal_corrected = false;
+    local.shift_probability = 0.0;  // a shift would move a grown element off its site
+  }
   growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
-  for (int k = 0; k < c.stages; ++k) {
+  for (int k = 0; k < c.stages && !crystal; ++k) {
     const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
-    growth_scales_.push_back(scale);
     growth_.push_back(
         std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
   }
@@ -108,8 +119,11 @@ std::vector<Element> ShapeProcessSampler::grow(const std::vector<Element>& start
                                                const synthesis::ChainControl& control,
                                                long long& steps, MoveCounts& moves) const {
   std::vector<Element> state = start;
-  for (std::size_t k = 0; k < growth_.size(); ++k) {
-    BirthDeathChain chain(*growth_[k], *growth_region_, random, options_.fixed, {});
+  const int stages = options_.compression.stages;
+  for (int k = 0; k < stages; ++k) {
+    // A crystal's stages share one model (its own hard cores); the others grow them.
+    const ChainTables& tables = *growth_[std::min<std::size_t>(k, growth_.size() - 1)];
+    BirthDeathChain chain(tables, *growth_region_, random, options_.fixed, {});
     chain.add_or_place_near(state, push_radius_, kPushAttempts);
     chain.set_log_boost(options_.compression.log_boost);
     const long long stage = options_.compression.stage_steps(chain.size());

@@ -144,9 +144,9 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   std::unique_ptr<const ChainTables> tables_;
   std::unique_ptr<const ChainRegion> region_;  // the whole domain, or the free region
   // The compressing burn-in's growth stages: the model with its hard cores scaled
-  // (compression.hpp), smallest first; empty without compression.
+  // (compression.hpp), smallest first, or for a crystal's growth one model for every stage (its
+  // births near neighbours); empty without compression.
   std::vector<std::unique_ptr<const ChainTables>> growth_;
-  std::vector<double> growth_scales_;
   double push_radius_ = 0.0;
   std::unique_ptr<const ChainRegion> growth_region_;  // the region with short, frequent shifts
   void prepare_growth();

@@ -7,7 +7,10 @@
 //      then larger in `stages` equal steps up to the model's own; at each step an element that
 //      the grown hard cores now forbid is moved to the nearest place found around it (or, where
 //      none is found, removed), and births and deaths see β_c e^B (B = `log_boost`), so that every
-//      proposal that fits is kept and removals are rare while shifts rearrange the elements;
+//      proposal that fits is kept and removals are rare while shifts rearrange the elements.
+//      Random elements jam a lattice far below its density (its sites between placed neighbours
+//      fit only where both leave room); a lattice exemplar's growth is therefore a crystal's
+//      (`crystal`): births at its neighbour offsets, from the first element on;
 //   2. at the model's own hard cores, a phase at the same boost, then its release: B falls
 //      linearly to 0 over as many steps;
 //   3. exact Metropolis–Hastings at the model.
@@ -32,6 +35,12 @@ struct CompressionOptions {
   double log_boost = std::log(1000.0);  // B: β multiplied by 1,000 at first
   double start_scale = 0.5;             // the hard cores grow from this share of the model's
   int stages = 8;                       // growth stages before the model's own hard cores
+  // Growth as a crystal (a lattice exemplar): the stages keep the model's own hard cores, and
+  // every birth is proposed exactly at one of the exemplar's neighbour offsets from an element
+  // (uniformly only into the empty configuration), kept whenever it fits: the lattice grows from
+  // its first element. Needs the model's neighbour offsets (without
+  // them the cores grow as above).
+  bool crystal = false;
 
   static constexpr long long kLeastStageSteps = 2000;
   static constexpr long long kStepsPerElement = 50;

@@ -397,6 +397,35 @@ TEST(FitThresholds, ALatticesShellIsABandAroundItsDistanceAndNoBandIsEmpty) {
   }
 }
 
+// The closest distance is a shell too when a lattice's nearest neighbours repeat it, though only
+// the quantile 0 falls on it: a 6 × 6 grid of spacing 10 on its torus has 72 pairs at 10 of 216
+// within 20, and the quantiles 0, 0.5 and 0.8 fall at 10, 14.14 and 20. The hard core sits
+// w = 1 below the 10; with one point moved 1 towards a neighbour, the closest distance (9) is one
+// pair's and the hard core stays a hair below it.
+TEST(FitThresholds, ARepeatedClosestDistanceIsAShellAndASingleOneIsNot) {
+  std::vector<Vec3> lattice;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) lattice.emplace_back(5 + 10 * i, 5 + 10 * j, 0);
+  FitOptions options;
+  options.boundary = geometry::Boundary::torus;
+  options.measurement.directions = 1;
+  options.quadrature = 8;
+  options.quantiles = {0.0, 0.5, 0.8};
+  const geometry::Box3 window(Vec3(0, 0, 0), Vec3(60, 60, 0));
+  const FitResult fit =
+      fit_shape_process(points(lattice, std::vector<int>(36, 0), window), options);
+  const std::vector<double>& shell = fit.model.interactions.at(0).axes.at(0).thresholds;
+  ASSERT_GE(shell.size(), 3u);
+  EXPECT_NEAR(shell[0], 9.0, 1e-9);
+  EXPECT_NEAR(shell[1], 11.0, 1e-9);
+  lattice[0].x() += 1.0;
+  const FitResult moved =
+      fit_shape_process(points(lattice, std::vector<int>(36, 0), window), options);
+  const double core = moved.model.interactions.at(0).axes.at(0).thresholds.at(0);
+  EXPECT_LT(core, 9.0);
+  EXPECT_GT(core, 9.0 - 1e-4);
+}
+
 // The border rule is robust to rounding: on the unit window with range 0.1, a point at x = 0.9 is
 // at the border distance although 1 − 0.9 < 0.1 in floating point, and counts as inside, as does
 // one at 0.1; a point a millionth closer to the edge does not.

@@ -39,9 +39,27 @@ TEST(NeighbourOffsets, KindsAreShapesAndALoneElementOnATorusMeetsItsImages) {
   geometry::Scene one = points({Vec3(1, 1, 0)}, 2, 4);
   one.shapes.resize(1);
   const model::NeighbourOffsets n = neighbour_offsets(one, true);
-  EXPECT_EQ(n.offsets.size(), 8u);  // the images along both axes and the diagonals
+  EXPECT_EQ(n.offsets.size(), 4u);  // the images along both axes (the diagonals are farther)
   EXPECT_DOUBLE_EQ(n.radii[0], 0.02);
   EXPECT_TRUE(neighbour_offsets(points({Vec3(1, 1, 0)}, 2, 4), false).empty());
+}
+
+// Rows of points 1 apart, the rows 5 apart: the 4 nearest neighbours lie in the row, and each
+// cone's nearest adds the next rows', so that the offsets span the plane.
+TEST(NeighbourOffsets, EachAxisConeGivesItsNearestSoThatTheOffsetsSpan) {
+  std::vector<Vec3> rows;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 6; ++i) rows.emplace_back(i + 0.5, 5 * j + 2.5, 0);
+  const model::NeighbourOffsets n = neighbour_offsets(points(rows, 6, 15), true);
+  ASSERT_EQ(n.offsets.size(), 6u);
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(2, 0, 0), Vec3(-2, 0, 0), Vec3(0, 5, 0),
+                        Vec3(0, -5, 0)}) {
+    const auto it = std::find_if(
+        n.offsets.begin(), n.offsets.end(),
+        [&](const model::NeighbourOffset& o) { return (o.offset - d).norm() < 1e-12; });
+    ASSERT_NE(it, n.offsets.end()) << d.transpose();
+    EXPECT_EQ(it->weight, 18.0);
+  }
 }
 
 }  // namespace
