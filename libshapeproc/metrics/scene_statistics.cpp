@@ -163,6 +163,10 @@ int SceneStatistics::elements() const { return std::accumulate(counts.begin(), c
 
 namespace {
 
+// Shape distances within this share of the range of 0 are a contact, not an overlap or a gap:
+// floating-point rounding of outlines that meet.
+constexpr double kContactRounding = 1e-9;
+
 // The statistics that need no measurement: counts, intensities, the mean spacing and the range.
 SceneStatistics counted(const geometry::Scene& scene, const StatisticsOptions& options) {
   const std::size_t n = scene.elements.size();
@@ -235,14 +239,16 @@ PairTally tally_pairs(const std::vector<geometry::PairRecord>& pairs,
   const double width = range / bins;
   for (const geometry::PairRecord& p : pairs) {
     // Signed shape distance: below 0 the shapes overlap, at 0 they touch; the distributions
-    // take the gap, 0 for both.
+    // take the gap, 0 for both. Within rounding of 0 (kContactRounding of the range) they touch:
+    // a touching tiling placed at offsets that are not whole numbers measures −4e-15 apart.
     const double signed_distance = p.measurement.distance;
     const double d = std::max(0.0, signed_distance);
     const int axis = p.measurement.axis;
-    if (signed_distance < 0.0) {
+    const double rounding = kContactRounding * range;
+    if (signed_distance < -rounding) {
       collisions.pairs.emplace_back(p.i, p.j);
       collisions.colliding[p.i] = collisions.colliding[p.j] = true;
-    } else if (signed_distance == 0.0) {
+    } else if (signed_distance <= rounding) {
       collisions.touching.emplace_back(p.i, p.j);
     }
     for (const int e : {p.i, p.j}) {

@@ -83,6 +83,19 @@ TEST(Collisions, NestedShapesOverlapTouchingOnesAreCountedApart) {
   EXPECT_EQ(s.collisions.elements, 2);
 }
 
+// Outlines that meet up to rounding touch: two triangles of a touching tiling placed at offsets
+// that are no whole numbers (as a crystal's growth places them), the second's corner 3.6e-15
+// past the first's edge.
+TEST(Collisions, OutlinesThatMeetUpToRoundingTouch) {
+  const std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 -10 70 60">
+    <path d="M38.18442218197183 17.072894230672286L58.18442218197183 17.072894230672286L38.18442218197183 37.07289423067229Z"/>
+    <path d="M38.18442218197183 -2.92710576932771L58.18442218197183 -2.92710576932771L38.18442218197183 17.07289423067229Z"/></svg>)";
+  const SceneStatistics s = compute_statistics(io::parse_svg(svg, "meet.svg", each_drawable()),
+                                               StatisticsOptions{}, core::Random(1));
+  EXPECT_TRUE(s.collisions.pairs.empty());
+  EXPECT_EQ(s.collisions.touching.size(), 1u);
+}
+
 TEST(SceneStatistics, LatticeNearestNeighboursPerAxis) {
   const double spacing = 10.0;
   const SceneStatistics s =
