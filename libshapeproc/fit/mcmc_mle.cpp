@@ -85,9 +85,6 @@ constexpr double kMaxRHat = 1.1;
 // effective size: a packed lattice's count that the chains leave once in a long while has almost
 // no variance and almost no effective observations.
 constexpr double kMinEffectiveSize = 20;
-// A crystal's chains hold it when their element counts' standard error is at most this share of
-// the exemplar's count.
-constexpr double kHeldSpread = 0.05;
 constexpr int kMostChainFactor = 16;
 
 using Clock = std::chrono::steady_clock;
@@ -256,7 +253,6 @@ class LikelihoodSearch {
   double ranking_z(const StatisticsMoments& m, const Gap& g) const;
   double worst_r_hat(const StatisticsMoments& m) const;
   double least_effective(const StatisticsMoments& m) const;
-  bool crystal_held(const StatisticsMoments& m) const;
   double seconds() const { return std::chrono::duration<double>(Clock::now() - clock_).count(); }
 
   const Clock::time_point clock_ = Clock::now();
@@ -455,7 +451,7 @@ LikelihoodSearch::Next LikelihoodSearch::decide(StatisticsMoments& m, double eff
       rough_ = false;  // within tolerance at a quarter of the precision: check at full length
       return Next::again;
     }
-    if (effective < kMinEffectiveSize && options_.sampling.crystal && crystal_held(m)) {
+    if (effective < kMinEffectiveSize && options_.sampling.crystal) {
       r_.held_crystal = true;
       return Next::stop;
     }
@@ -508,15 +504,6 @@ void LikelihoodSearch::converge(const StatisticsMoments& m, const Gap& g) {
   } else {
     newton_->standard_errors(g, m, r_.standard_errors);
   }
-}
-
-// Whether the chains held their crystal: the element counts agree across them (the count's
-// standard error at most kHeldSpread of the exemplar's count). Chains whose crystal melts at θ
-// (some hold it, others lose most of it) disagree, and the search goes on.
-bool LikelihoodSearch::crystal_held(const StatisticsMoments& m) const {
-  for (std::size_t c = 0; c < categories_; ++c)
-    if (m.standard_error[c] > kHeldSpread * std::max(1.0, observed_[c])) return false;
-  return true;
 }
 
 void LikelihoodSearch::run() {
