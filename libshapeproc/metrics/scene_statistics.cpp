@@ -164,8 +164,9 @@ int SceneStatistics::elements() const { return std::accumulate(counts.begin(), c
 namespace {
 
 // Shape distances within this share of the range of 0 are a contact, not an overlap or a gap:
-// floating-point rounding of outlines that meet.
-constexpr double kContactRounding = 1e-9;
+// the rounding of outlines that meet, in floating point and in a drawing's coordinates (about 7
+// significant digits: flipped-diamonds grown at its own offsets measured −2.2e-8 apart).
+constexpr double kContactRounding = 1e-6;
 
 // The statistics that need no measurement: counts, intensities, the mean spacing and the range.
 SceneStatistics counted(const geometry::Scene& scene, const StatisticsOptions& options) {
@@ -239,8 +240,7 @@ PairTally tally_pairs(const std::vector<geometry::PairRecord>& pairs,
   const double width = range / bins;
   for (const geometry::PairRecord& p : pairs) {
     // Signed shape distance: below 0 the shapes overlap, at 0 they touch; the distributions
-    // take the gap, 0 for both. Within rounding of 0 (kContactRounding of the range) they touch:
-    // a touching tiling placed at offsets that are not whole numbers measures −4e-15 apart.
+    // take the gap, 0 for both. Within rounding of 0 (kContactRounding of the range) they touch.
     const double signed_distance = p.measurement.distance;
     const double d = std::max(0.0, signed_distance);
     const int axis = p.measurement.axis;

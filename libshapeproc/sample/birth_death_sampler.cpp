@@ -252,7 +252,8 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                                                     core::format_general(t.standard_error, 3));
   }
   if (options_.compression.enabled) {
-    record.options.emplace_back("burn_in", "compressing");
+    const bool crystal = options_.compression.crystal && tables_->near_births;
+    record.options.emplace_back("burn_in", crystal ? "crystal" : "compressing");
     out.counters.emplace_back("compressing burn-in steps",
                               std::to_string(sampled.compression_steps));
     out.counters.emplace_back("elements after compression",

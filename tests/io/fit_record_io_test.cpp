@@ -61,6 +61,7 @@ void expect_equal(const model::FitRecord& a, const model::FitRecord& b) {
   if (a.likelihood) {
     EXPECT_EQ(a.likelihood->seed, b.likelihood->seed);
     EXPECT_EQ(a.likelihood->compressing_burn_in, b.likelihood->compressing_burn_in);
+    EXPECT_EQ(a.likelihood->crystal_growth, b.likelihood->crystal_growth);
     EXPECT_EQ(a.likelihood->z, b.likelihood->z);
   }
   ASSERT_EQ(a.edits.size(), b.edits.size());
@@ -71,6 +72,12 @@ TEST(FitRecordIo, EveryFieldSurvivesTheRoundTrip) {
   const nlohmann::json written = fit_record_json(r);
   expect_equal(parse_fit_record(nlohmann::json::parse(written.dump())), r);
   EXPECT_EQ(written["estimator"]["burn_in_kind"], "compressing");
+  model::FitRecord crystal = r;
+  crystal.likelihood->crystal_growth = true;  // a lattice's: compressing, grown as a crystal
+  const nlohmann::json grown = fit_record_json(crystal);
+  EXPECT_EQ(grown["estimator"]["burn_in_kind"], "crystal");
+  expect_equal(parse_fit_record(grown), crystal);
+  EXPECT_TRUE(parse_fit_record(grown).likelihood->compressing_burn_in);
   EXPECT_EQ(written["options"][0][0], "reader.tile");
   // Without the maximum likelihood, edits or repeats, those fields are absent.
   model::FitRecord plain = r;
