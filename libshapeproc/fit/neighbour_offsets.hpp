@@ -9,8 +9,8 @@
 namespace shapeproc::fit {
 
 struct NeighbourOffsetOptions {
-  int neighbours =
-      0;  // nearest neighbours per element (and each cone's nearest); 0: 4 in 2D, 6 in 3D
+  // Nearest neighbours per element (and each axis cone's nearest); 0: 4 in 2D, 6 in 3D.
+  int neighbours = 0;
   int max_per_kind = 64;       // the heaviest offsets kept per kind of element
   double small_radius = 0.01;  // the proposal radii, as shares of the mean nearest-neighbour
   double large_radius = 0.1;   // distance
