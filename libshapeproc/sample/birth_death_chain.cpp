@@ -241,11 +241,8 @@ bool BirthDeathChain::on_an_element(const Vec3& position) const {
   const double tolerance = 1e-9 * std::max(1.0, t_.reach);
   bool found = false;
   state_.for_each_near(position, [&](int, const Element& e) {
-    Vec3 d = e.position - position;
-    const Vec3& period = state_.period();
-    for (int axis = 0; axis < t_.dimension; ++axis)
-      if (period[axis] > 0) d[axis] -= period[axis] * std::round(d[axis] / period[axis]);
-    found = found || d.norm() <= tolerance;
+    found = found ||
+            geometry::minimum_image(e.position - position, state_.period()).norm() <= tolerance;
   });
   return found;
 }

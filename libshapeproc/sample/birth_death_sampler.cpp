@@ -94,8 +94,8 @@ void ShapeProcessSampler::prepare_growth() {
   ChainRegion local = *region_;
   local.shift_radius = push_radius_;
   local.shift_probability = kGrowthShiftProbability;
-  const bool crystal = c.crystal && tables_->near_births;
-  if (crystal) {
+  crystal_ = c.crystal && tables_->near_births;
+  if (crystal_) {
     // Every birth exactly at an offset from an element, kept whenever it fits: a lattice's
     // offsets add up to its own sites, where jittered ones drift apart over a few cells and
     // leave the sites where two grown fronts meet too narrow for an element.
@@ -107,7 +107,7 @@ void ShapeProcessSampler::prepare_growth() {
     local.shift_probability = 0.0;  // a shift would move a grown element off its site
   }
   growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
-  for (int k = 0; k < c.stages && !crystal; ++k) {
+  for (int k = 0; k < c.stages && !crystal_; ++k) {
     const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
     growth_.push_back(
         std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
@@ -252,8 +252,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                                                     core::format_general(t.standard_error, 3));
   }
   if (options_.compression.enabled) {
-    const bool crystal = options_.compression.crystal && tables_->near_births;
-    record.options.emplace_back("burn_in", crystal ? "crystal" : "compressing");
+    record.options.emplace_back("burn_in", crystal_ ? "crystal" : "compressing");
     out.counters.emplace_back("compressing burn-in steps",
                               std::to_string(sampled.compression_steps));
     out.counters.emplace_back("elements after compression",

@@ -147,6 +147,7 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   // (compression.hpp), smallest first, or for a crystal's growth one model for every stage (its
   // births near neighbours); empty without compression.
   std::vector<std::unique_ptr<const ChainTables>> growth_;
+  bool crystal_ = false;  // the growth is a crystal's (compression.hpp)
   double push_radius_ = 0.0;
   std::unique_ptr<const ChainRegion> growth_region_;  // the region with short, frequent shifts
   void prepare_growth();
