@@ -289,6 +289,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   // not: random births fill a lattice's sites only by chance.
   const bool crystal = !start.neighbour_offsets.empty() && metrics::is_lattice_exemplar(exemplar);
   const bool compress = packed || crystal;
+  if (crystal && fit_options.near_birth_share == kAutomaticNearBirths)
+    start.neighbour_offsets.share = kCrystalNearBirthShare;
   const bool stationary = open_window && (options.window == WindowModel::stationary ||
                                           (options.window == WindowModel::automatic && !packed));
   const geometry::Domain window =

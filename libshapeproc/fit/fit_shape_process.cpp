@@ -1,5 +1,6 @@
 #include "libshapeproc/fit/fit_shape_process.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "libshapeproc/core/stopwatch.hpp"
@@ -49,7 +50,7 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
   assign_shape_classes(model, exemplar);
   model.neighbour_offsets = neighbour_offsets(exemplar, periodic);
-  model.neighbour_offsets.share = options.near_birth_share;
+  model.neighbour_offsets.share = std::max(0.0, options.near_birth_share);
   const model::Interaction interaction(model);
   const FitRegion region = fit_region(exemplar, options.edge, interaction.range());
   const ExemplarStatistics statistics =

@@ -12,6 +12,14 @@
 
 namespace shapeproc::fit {
 
+// FitOptions::near_birth_share chosen by the fit: kCrystalNearBirthShare where the
+// maximum-likelihood chains grow the exemplar's lattice as a crystal, else 0. A proposal: the
+// stationary law does not depend on it. Births near neighbours refill a crystal's vacancies,
+// which uniform births almost never hit, so that its chains reach the model's own equilibrium
+// (docs/fit.md, "Packed exemplars").
+inline constexpr double kAutomaticNearBirths = -1.0;
+inline constexpr double kCrystalNearBirthShare = 0.5;
+
 struct FitOptions {
   // How pairs are measured, as the model records it; directions 0 = the default for the
   // exemplar's dimension (geometry::default_directions).
@@ -46,8 +54,8 @@ struct FitOptions {
   int min_pairs_per_axis = 10;
   // The share of the maximum-likelihood chains' birth proposals drawn near a neighbour, recorded
   // in the model for every later chain (model::NeighbourOffsets::share; docs/mathematics.md,
-  // "Births near neighbours"); in [0, 1).
-  double near_birth_share = 0.0;
+  // "Births near neighbours"); in [0, 1), or kAutomaticNearBirths.
+  double near_birth_share = kAutomaticNearBirths;
   // Threads that integrate the quadrature (0: one per core); the fit does not depend on them.
   int threads = 0;
   // Called at each stage ("proxies", "measurements", "quadrature", "optimisation") with the work

@@ -65,6 +65,10 @@ TEST(Cli, NonsenseFlags) {
   expect_one_line_error(
       run_cli({"fit", data("svg/dots-random.svg"), "--data-weight", "1", "-o", "unused.json"}), 2,
       "--data-weight");
+  for (const char* share : {"1", "-0.1", "often"})
+    expect_one_line_error(
+        run_cli({"fit", data("svg/dots-random.svg"), "--near-births", share, "-o", "unused.json"}),
+        2, "--near-births");
 }
 
 TEST(Cli, InfoTextAndJson) {
@@ -382,8 +386,10 @@ TEST(CliSynthesize, StartsEmptyUnlessTheExemplarIsAskedFor) {
   };
   const auto [sought, sought_count, sought_said] = run("sought.svg", {});
   EXPECT_NE(sought.find("[&quot;start&quot;,&quot;empty&quot;]"), std::string::npos);
-  // tic-tac-toe is a lattice: its burn-in grows it as a crystal.
+  // tic-tac-toe is a lattice: its burn-in grows it as a crystal, and half its births at the
+  // model are proposed near a neighbour (the fit's automatic share), which the record says.
   EXPECT_NE(sought.find("[&quot;burn_in&quot;,&quot;crystal&quot;]"), std::string::npos);
+  EXPECT_NE(sought.find("[&quot;near_birth_share&quot;,&quot;0.5&quot;]"), std::string::npos);
   EXPECT_GT(sought_count, 0);
   if (sought_count < 0.9 * 16) {
     EXPECT_NE(sought_said.find("warning: the chain reached " + std::to_string(sought_count)),

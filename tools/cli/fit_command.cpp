@@ -164,11 +164,10 @@ void FitFlags::add_to(CLI::App& command) {
           "share of the window's measure the data points carry in the quadrature (see docs/fit.md)")
       ->capture_default_str();
   command
-      .add_option("--near-births", near_birth_share,
+      .add_option("--near-births", near_births,
                   "share of birth proposals placed where the exemplar had a neighbour, in the "
-                  "fit's chains and every chain of the model (0: all uniform; see "
-                  "docs/mathematics.md)")
-      ->check(CLI::Range(0.0, 0.95))
+                  "fit's chains and every chain of the model (0: all uniform; auto: 0.5 where the "
+                  "chains grow a lattice as a crystal, else 0; see docs/mathematics.md)")
       ->capture_default_str();
   command
       .add_option("--estimator", estimator,
@@ -234,7 +233,13 @@ fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   if (!(data_weight >= 0 && data_weight < 1))
     throw core::UsageError("--data-weight must be in [0, 1)");
   o.data_weight = data_weight;
-  o.near_birth_share = near_birth_share;
+  if (near_births != "auto") {
+    const std::optional<double> share = io::parse_number(near_births);
+    if (!share || !(*share >= 0 && *share <= 0.95))
+      throw core::UsageError("--near-births must be a share in [0, 0.95] or auto, got '" +
+                             near_births + "'");
+    o.near_birth_share = *share;
+  }
   return o;
 }
 
@@ -252,7 +257,7 @@ nlohmann::json FitFlags::to_json() const {
           {"lines", lines},
           {"proxy_tolerance", proxy_tolerance},
           {"data_weight", data_weight},
-          {"near_births", near_birth_share}};
+          {"near_births", near_births}};
 }
 
 void add_fit_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {

@@ -36,7 +36,7 @@ struct FitFlags {
   bool lines = false;
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
-  double near_birth_share = fit::FitOptions{}.near_birth_share;
+  std::string near_births = "auto";  // a share in [0, 0.95], or auto (fit::kAutomaticNearBirths)
   std::string estimator = "mle";
   int mle_chains = fit::MleOptions{}.sampling.chains;
   long long mle_steps = fit::MleOptions{}.sampling.steps;
