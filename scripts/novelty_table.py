@@ -8,9 +8,12 @@ a user would (`shapeproc synthesize`, defaults, an output of 3 x 3 exemplars' si
   period (docs/metrics.md, "Novelty"); density against the exemplar's; the class mix's p; overlaps;
   order; seconds of the whole synthesize command (fit included); the report's failed checks.
 
-Usage: python3 scripts/novelty_table.py [--seeds 1,2,3,4] [--timeout 120] [--tile] [--flags F] OUT.md DIR...
-Folders of .svg files; --tile reads them as seamless tiles (Hero Patterns). The pictures of each
-output are kept in OUT's folder under novelty/ (PNG); with --flags, under novelty-FLAGS/.
+Usage: python3 scripts/novelty_table.py [--seeds 1,2,3,4] [--timeout 120] [--tile] [--flags F]
+       [--multiple N] [--only A,B,...] OUT.md DIR...
+Folders of .svg files; --tile reads them as seamless tiles (Hero Patterns); --only keeps the
+exemplars named; --multiple N makes outputs of N x N exemplars' size (default 3). The pictures of
+each output are kept in OUT's folder under novelty/ (PNG); with --flags or another multiple, under
+novelty-FLAGS/ or novelty-Nx/.
 """
 import argparse
 import datetime
@@ -78,7 +81,7 @@ def row(path, seed, args, pictures):
         out = os.path.join(work, "out.svg")
         png = os.path.join(pictures, f"{name}-seed{seed}.png")
         reader = ["--tile"] if args.tile else []
-        command = ["synthesize", path, *reader, "--size", ",".join(f"{3 * s:g}" for s in size),
+        command = ["synthesize", path, *reader, "--size", ",".join(f"{args.multiple * s:g}" for s in size),
                    "--seed", str(seed), "-o", out, "--png", png, "--force", *args.flags.split()]
         try:
             p, seconds = run(command, args.timeout)
@@ -118,6 +121,10 @@ def shown_arguments(args):
         shown.append("--tile")
     if args.flags:
         shown.append(f"--flags '{args.flags}'")
+    if args.multiple != 3:
+        shown.append(f"--multiple {args.multiple}")
+    if args.only:
+        shown.append(f"--only {args.only}")
     return " ".join(shown + [args.out] + ([args.name] if args.name else args.dirs))
 
 
@@ -149,10 +156,14 @@ def main():
     parser.add_argument("--name", help="how the header names the folders (default: as given)")
     parser.add_argument("--flags", default="",
                         help="further synthesize flags, e.g. '--near-births 0.5' (default: none)")
+    parser.add_argument("--multiple", type=int, default=3,
+                        help="outputs of N x N exemplars' size (default 3)")
+    parser.add_argument("--only", default="",
+                        help="the exemplars to keep, by name without .svg, comma-separated")
     args = parser.parse_args()
-    # Pictures of outputs made with further flags go to a folder of their own.
+    # Pictures of outputs made with further flags or another size go to a folder of their own.
     folder = "novelty" + ("-" + re.sub(r"[^a-z0-9.]+", "-", args.flags.lower()).strip("-")
-                          if args.flags else "")
+                          if args.flags else "") + (f"-{args.multiple}x" if args.multiple != 3 else "")
     pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), folder)
     os.makedirs(pictures, exist_ok=True)
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
@@ -163,7 +174,7 @@ def main():
         f"Command: `python3 scripts/novelty_table.py {shown_arguments(args)}` at commit {commit}, "
         f"{datetime.date.today().isoformat()}.",
         "",
-        "Each output: `shapeproc synthesize EXEMPLAR --size 3W,3H --seed S"
+        f"Each output: `shapeproc synthesize EXEMPLAR --size {args.multiple}W,{args.multiple}H --seed S"
         + (f" {args.flags}" if args.flags else "") + "` with every other flag at "
         "its default, judged by `shapeproc report` (docs/metrics.md). Chance levels in brackets: "
         "the same measure of the output's elements placed at random.",
@@ -177,6 +188,8 @@ def main():
     for folder in args.dirs:
         for file in sorted(os.listdir(folder)):
             if not file.endswith(".svg"):
+                continue
+            if args.only and file[:-4] not in args.only.split(","):
                 continue
             for seed in seeds:
                 try:
