@@ -145,6 +145,10 @@ void GrowthFlags::add_to(CLI::App& command) {
                   "davison: every element's bounding radius (default: half each exemplar "
                   "element's nearest distance, within its bounding circle)")
       ->check(non_negative_number());
+  command.add_flag("--no-calibrate", no_calibrate,
+                   "davison: keep the automatic bounding radii, however much denser than the "
+                   "exemplar the growth then comes out (default: scaled by pilot growths until "
+                   "it matches the exemplar's density; see docs/methods.md)");
   command.add_flag("--no-optimise", no_optimise,
                    "davison: grow without the least-squares relaxation of the front");
   command.add_option("--palette", palette,
@@ -171,6 +175,7 @@ methods::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
   o.patch_radius = patch_radius;
   o.bounding_radius = bounding_radius;
   o.optimise = !no_optimise;
+  o.calibrate_density = !no_calibrate;
   if (overlap == "none")
     throw core::UsageError("--overlap none: --method davison tests circles or shapes");
   o.exact_overlap = overlap == "shapes";

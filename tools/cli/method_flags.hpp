@@ -46,6 +46,7 @@ struct GrowthFlags {
   double patch_radius = methods::GrowthOptions{}.patch_radius;
   double bounding_radius = 0.0;
   bool no_optimise = false;
+  bool no_calibrate = false;
   std::string overlap;
   // A second exemplar grown beside the first (Davison's palette), with its own parameters.
   std::string palette;

@@ -10,6 +10,7 @@
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
 #include "libshapeproc/methods/common/element_reconstruction.hpp"
 #include "libshapeproc/methods/common/position_assignment.hpp"
+#include "libshapeproc/methods/davison2018/density_calibration.hpp"
 
 namespace shapeproc::methods {
 
@@ -345,36 +346,39 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
           {"growth.overlap", options_.exact_overlap ? "shapes" : "circles"}};
 }
 
-synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
-                                                     const synthesis::ChainControl& control) const {
-  Growth g{exemplar_,
-           domain_,
-           options_,
+namespace {
+
+// Algorithm 1 over `domain` until the horizon is empty: the grown output, its trace appended to
+// `trace` (may be null).
+Growth grow(const GrowthExemplar& exemplar, const geometry::Domain& domain,
+            const GrowthOptions& options, core::Random& random,
+            const synthesis::ChainControl& control, std::vector<synthesis::TracePoint>* trace) {
+  Growth g{exemplar,
+           domain,
+           options,
            {},
-           GrowthState(exemplar_, domain_),
+           GrowthState(exemplar, domain),
            {},
            {},
            {},
-           std::vector<char>(exemplar_.em.samples.size(), 0),
+           std::vector<char>(exemplar.em.samples.size(), 0),
            0,
            0,
            {},
            0};
-  const std::size_t parts = exemplar_.parts();
+  const std::size_t parts = exemplar.parts();
   std::vector<double> sum(parts, 0.0), count(parts, 0.0);
-  for (std::size_t s = 0; s < exemplar_.radius.size(); ++s) {
-    sum[static_cast<std::size_t>(exemplar_.part[s])] += exemplar_.radius[s];
-    count[static_cast<std::size_t>(exemplar_.part[s])] += 1.0;
+  for (std::size_t s = 0; s < exemplar.radius.size(); ++s) {
+    sum[static_cast<std::size_t>(exemplar.part[s])] += exemplar.radius[s];
+    count[static_cast<std::size_t>(exemplar.part[s])] += 1.0;
   }
   double expected = 0.0;
   for (std::size_t p = 0; p < parts; ++p) {
     g.settings.threshold.push_back(2.0 * sum[p] / count[p]);
-    expected += exemplar_.part_density[p] * domain_.measure() / static_cast<double>(parts);
+    expected += exemplar.part_density[p] * domain.measure() / static_cast<double>(parts);
   }
-
-  synthesis::SynthesisResult result;
   // One initial patch per palette exemplar, spread along the domain's longest axis.
-  const geometry::Box3& box = domain_.box();
+  const geometry::Box3& box = domain.box();
   int axis = 0;
   box.sizes().maxCoeff(&axis);
   for (std::size_t p = 0; p < parts; ++p) {
@@ -406,27 +410,47 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                        [&](int h) { return !g.in_horizon[static_cast<std::size_t>(h)]; }),
         g.horizon.end());
     ++g.rounds;
-    const double energy = options_.optimise && made > 0 ? optimise(g) : 0.0;
-    result.trace.push_back({g.rounds, static_cast<int>(g.state.size()), energy});
+    const double energy = options.optimise && made > 0 ? optimise(g) : 0.0;
+    if (trace) trace->push_back({g.rounds, static_cast<int>(g.state.size()), energy});
     if (control.progress)
       control.progress(static_cast<long long>(g.state.size()), static_cast<long long>(expected));
   }
+  return g;
+}
+
+}  // namespace
+
+synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
+                                                     const synthesis::ChainControl& control) const {
+  // The bounding radii's scale, from pilot growths on small tori (density_calibration.hpp).
+  synthesis::ChainControl quiet;
+  quiet.cancel = control.cancel;
+  const DensityCalibration calibration = calibrate_density(
+      exemplar_, options_, domain_, random,
+      [&](const GrowthExemplar& pilot, const geometry::Domain& where, core::Random& r) {
+        return grow(pilot, where, options_, r, quiet, nullptr).state.size();
+      });
+  const GrowthExemplar scaled =
+      calibration.scale == 1.0 ? GrowthExemplar{} : with_scaled_radii(exemplar_, calibration.scale);
+  const GrowthExemplar& used = calibration.scale == 1.0 ? exemplar_ : scaled;
+  synthesis::SynthesisResult result;
+  const Growth g = grow(used, domain_, options_, random, control, &result.trace);
 
   OutputSamples output;
   for (std::size_t e = 0; e < g.state.size(); ++e)
-    output.add(exemplar_.em, g.state.source(static_cast<int>(e)),
-               g.state.position(static_cast<int>(e)));
-  result.scene =
-      reconstruct(exemplar_.em, output, domain_, OrientationField{}, Reconstruction::rigid);
+    output.add(used.em, g.state.source(static_cast<int>(e)), g.state.position(static_cast<int>(e)));
+  result.scene = reconstruct(used.em, output, domain_, OrientationField{}, Reconstruction::rigid);
   result.record.set_domain(domain_);
   result.record.options = record_options();
+  result.record.options.emplace_back("growth.radius_scale", core::format_number(calibration.scale));
   result.record.iterations = std::to_string(g.rounds);
   result.record.steps = g.rounds;
   result.record.stationary = true;
   result.counters = {{"rounds", std::to_string(g.rounds)},
                      {"seeds abandoned", std::to_string(g.abandoned)},
                      {"patches", std::to_string(g.patches)},
-                     {"free-space points left", std::to_string(g.state.free_points())}};
+                     {"free-space points left", std::to_string(g.state.free_points())},
+                     {"bounding radii", calibration.summary()}};
   return result;
 }
 
