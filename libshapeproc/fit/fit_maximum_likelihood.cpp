@@ -178,9 +178,9 @@ void add_outcome_notes(const MleResult& mle, const MleOptions& options,
                     "hold fewer elements than the exemplar's density");
   } else if (mle.held_crystal) {
     notes.push_back("the maximum-likelihood fit stopped after " + std::to_string(mle.iterations) +
-                    " iterations at an iterate whose expected counts are within the tolerance, "
-                    "untested: its chains grow the lattice as a crystal and hold it, each worth "
-                    "about one observation");
+                    " iterations at an iterate whose expected counts are within the tolerance and "
+                    "within 5% of the exemplar's, untested: its chains grow the lattice as a "
+                    "crystal and hold it, each worth few independent observations");
   } else if (!mle.converged) {
     notes.push_back("the maximum-likelihood fit did not converge in " +
                     std::to_string(mle.iterations) +

@@ -115,9 +115,10 @@ struct MleResult {
   // Why the fit gave up (MleOptions::abandon_after_diverged, abandon_condensed_start); empty
   // when it did not.
   std::string abandoned;
-  // The chains grow a crystal (ChainsSetting::crystal) and hold it, each worth about one
-  // observation: the search stopped, not converged, at its first iterate within the tolerance,
-  // which more chains would only test at many times the cost.
+  // The chains grow a crystal (ChainsSetting::crystal) and hold it, each worth few
+  // observations: the search stopped, not converged, at its first iterate within the tolerance
+  // whose expected counts are all within 5% of the exemplar's, which more chains would only test
+  // at many times the cost.
   bool held_crystal = false;
 };
 
