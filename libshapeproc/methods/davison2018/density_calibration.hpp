@@ -2,7 +2,7 @@
 // circle fits, so the output's density is set by the bounding radii, not by the exemplar: with
 // the automatic radii (half each exemplar element's nearest distance) a sparse, irregular
 // exemplar grows about twice as dense, because its closest pairs give small circles that then
-// pack everywhere (Davison et al. 2018 §7: "if it is too small, it will lead to crowded output").
+// pack everywhere (Davison et al. 2018 §6.1: "if it is too small, it will lead to crowded output").
 // The calibration chooses the scale s ≥ 1 of the automatic radii at which the growth reproduces
 // the exemplar's density: pilot growths on a torus holding about kPilotElements elements of the
 // exemplar's density, each at the scale s·(ratio)^(1/d) of the one before (the density of
