@@ -26,21 +26,17 @@ geometry::Domain pilot_domain(const GrowthExemplar& exemplar, const geometry::Do
 }  // namespace
 
 std::string DensityCalibration::summary() const {
-  if (pilots.empty()) return "as given";
-  std::string s = "×" + core::format_general(scale, 3) + " (" + std::to_string(pilots.size()) +
-                  " pilot" + (pilots.size() == 1 ? "" : "s") + ":";
+  if (pilots.empty()) return "not calibrated";
+  const auto limit = [](double c) {
+    return std::isfinite(c) ? "×" + core::format_general(c, 3) : std::string("none");
+  };
+  std::string s = limit(crowding) + " (" + std::to_string(pilots.size()) + " pilot" +
+                  (pilots.size() == 1 ? "" : "s") + ":";
   for (std::size_t i = 0; i < pilots.size(); ++i)
     s += std::string(i ? "," : "") + " density ×" + core::format_general(pilots[i].ratio, 3) +
-         " at ×" + core::format_general(pilots[i].scale, 3);
+         (std::isfinite(pilots[i].crowding) ? " at ×" + core::format_general(pilots[i].crowding, 3)
+                                            : " without");
   return s + ")";
-}
-
-GrowthExemplar with_scaled_radii(const GrowthExemplar& exemplar, double scale) {
-  GrowthExemplar out = exemplar;
-  for (double& r : out.radius) r *= scale;
-  for (std::vector<FreeSpaceVector>& vectors : out.free)
-    for (FreeSpaceVector& v : vectors) v.radius *= scale;
-  return out;
 }
 
 DensityCalibration calibrate_density(const GrowthExemplar& exemplar, const GrowthOptions& options,
@@ -51,22 +47,20 @@ DensityCalibration calibrate_density(const GrowthExemplar& exemplar, const Growt
   const geometry::Domain pilot = pilot_domain(exemplar, output);
   const double expected = exemplar.part_density.front() * pilot.measure();
   core::Random pilots(random.index(std::numeric_limits<std::uint64_t>::max()));
-  const double d = output.dimension();
-  double scale = 1.0;
+  double crowding = std::numeric_limits<double>::infinity();
   for (int i = 0; i < kMostPilots; ++i) {
-    const GrowthExemplar scaled = with_scaled_radii(exemplar, scale);
-    const double ratio = static_cast<double>(grow(scaled, pilot, pilots)) / expected;
-    c.pilots.push_back({scale, ratio});
+    const double ratio = static_cast<double>(grow(crowding, pilot, pilots)) / expected;
+    c.pilots.push_back({crowding, ratio});
     if (std::abs(ratio - 1.0) <= kCalibrationTolerance) break;
-    if (ratio < 1.0 && scale == 1.0) break;  // as sparse as the exemplar: the radii stay
-    scale = std::clamp(scale * std::pow(ratio, 1.0 / d), 1.0, kLargestRadiusScale);
+    if (ratio < 1.0 && !std::isfinite(crowding)) break;  // as sparse as the exemplar: no limit
+    crowding = std::isfinite(crowding) ? std::max(kFewestNeighbours, crowding / ratio) : 1.0;
   }
   // The pilot closest to the exemplar's density, of those grown.
   const auto best = std::min_element(
       c.pilots.begin(), c.pilots.end(), [](const DensityCalibration::Pilot& a, const auto& b) {
         return std::abs(std::log(a.ratio)) < std::abs(std::log(b.ratio));
       });
-  c.scale = best->scale;
+  c.crowding = best->crowding;
   return c;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
@@ -18,9 +19,12 @@ namespace {
 
 constexpr int kAttempts = 2;
 
-// Per palette exemplar: the pairing threshold of generation, twice its mean bounding radius.
+// Per palette exemplar: the pairing threshold of generation, twice its mean bounding radius,
+// and the most elements a copy's neighbourhood may hold (density_calibration.hpp; infinite: no
+// limit).
 struct Settings {
   std::vector<double> threshold;
+  std::vector<double> most_neighbours;
 };
 
 // The growing output, its horizon and what one chain needs.
@@ -46,6 +50,17 @@ int add_element(Growth& g, int source, const Vec3& p, const Vec3& origin) {
     g.origin.resize(static_cast<std::size_t>(e) + 1, Vec3::Zero());
   g.origin[static_cast<std::size_t>(e)] = origin;
   return e;
+}
+
+// The measure of a ball of palette exemplar `part`'s neighbourhood radius (its first element's).
+double neighbourhood_measure(const GrowthExemplar& exemplar, std::size_t part, int dimension) {
+  double r = 0.0;
+  for (std::size_t s = 0; s < exemplar.part.size(); ++s)
+    if (static_cast<std::size_t>(exemplar.part[s]) == part) {
+      r = exemplar.reach[s];
+      break;
+    }
+  return dimension == 3 ? 4.0 / 3.0 * core::kPi * r * r * r : core::kPi * r * r;
 }
 
 // The candidates of element e: co(source) ∪ co(match), each once (k-coherence's gathering).
@@ -177,6 +192,12 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
     if (!g.state.in_domain(p) || !g.state.on_free_point(p, r) ||
         g.state.collides(near[i].element, p))
       continue;
+    const std::size_t part = static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)]);
+    if (std::isfinite(g.settings.most_neighbours[part]) &&
+        static_cast<double>(
+            g.state.elements_within(p, g.exemplar.reach_of(near[i].element)).size() + out.size() +
+            1) > g.settings.most_neighbours[part])
+      continue;          // the density calibration's limit
     bool clash = false;  // with the copies before it (bounding circles)
     for (const auto& [e, q] : out) {
       if (g.exemplar.exact) break;  // one exemplar neighbourhood's shapes do not overlap
@@ -351,7 +372,7 @@ namespace {
 // Algorithm 1 over `domain` until the horizon is empty: the grown output, its trace appended to
 // `trace` (may be null).
 Growth grow(const GrowthExemplar& exemplar, const geometry::Domain& domain,
-            const GrowthOptions& options, core::Random& random,
+            const GrowthOptions& options, double crowding, core::Random& random,
             const synthesis::ChainControl& control, std::vector<synthesis::TracePoint>* trace) {
   Growth g{exemplar,
            domain,
@@ -375,6 +396,8 @@ Growth grow(const GrowthExemplar& exemplar, const geometry::Domain& domain,
   double expected = 0.0;
   for (std::size_t p = 0; p < parts; ++p) {
     g.settings.threshold.push_back(2.0 * sum[p] / count[p]);
+    g.settings.most_neighbours.push_back(crowding * exemplar.part_density[p] *
+                                         neighbourhood_measure(exemplar, p, domain.dimension()));
     expected += exemplar.part_density[p] * domain.measure() / static_cast<double>(parts);
   }
   // One initial patch per palette exemplar, spread along the domain's longest axis.
@@ -422,19 +445,18 @@ Growth grow(const GrowthExemplar& exemplar, const geometry::Domain& domain,
 
 synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                                                      const synthesis::ChainControl& control) const {
-  // The bounding radii's scale, from pilot growths on small tori (density_calibration.hpp).
+  // The neighbourhoods' limit, from pilot growths on small tori (density_calibration.hpp).
   synthesis::ChainControl quiet;
   quiet.cancel = control.cancel;
   const DensityCalibration calibration = calibrate_density(
       exemplar_, options_, domain_, random,
-      [&](const GrowthExemplar& pilot, const geometry::Domain& where, core::Random& r) {
-        return grow(pilot, where, options_, r, quiet, nullptr).state.size();
+      [&](double crowding, const geometry::Domain& where, core::Random& r) {
+        return grow(exemplar_, where, options_, crowding, r, quiet, nullptr).state.size();
       });
-  const GrowthExemplar scaled =
-      calibration.scale == 1.0 ? GrowthExemplar{} : with_scaled_radii(exemplar_, calibration.scale);
-  const GrowthExemplar& used = calibration.scale == 1.0 ? exemplar_ : scaled;
+  const GrowthExemplar& used = exemplar_;
   synthesis::SynthesisResult result;
-  const Growth g = grow(used, domain_, options_, random, control, &result.trace);
+  const Growth g =
+      grow(used, domain_, options_, calibration.crowding, random, control, &result.trace);
 
   OutputSamples output;
   for (std::size_t e = 0; e < g.state.size(); ++e)
@@ -442,7 +464,9 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
   result.scene = reconstruct(used.em, output, domain_, OrientationField{}, Reconstruction::rigid);
   result.record.set_domain(domain_);
   result.record.options = record_options();
-  result.record.options.emplace_back("growth.radius_scale", core::format_number(calibration.scale));
+  result.record.options.emplace_back(
+      "growth.crowding",
+      std::isfinite(calibration.crowding) ? core::format_number(calibration.crowding) : "none");
   result.record.iterations = std::to_string(g.rounds);
   result.record.steps = g.rounds;
   result.record.stationary = true;
@@ -450,7 +474,7 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
                      {"seeds abandoned", std::to_string(g.abandoned)},
                      {"patches", std::to_string(g.patches)},
                      {"free-space points left", std::to_string(g.state.free_points())},
-                     {"bounding radii", calibration.summary()}};
+                     {"neighbourhood limit", calibration.summary()}};
   return result;
 }
 
