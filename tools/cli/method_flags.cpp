@@ -146,9 +146,9 @@ void GrowthFlags::add_to(CLI::App& command) {
                   "element's nearest distance, within its bounding circle)")
       ->check(non_negative_number());
   command.add_flag("--no-calibrate", no_calibrate,
-                   "davison: keep the automatic bounding radii, however much denser than the "
-                   "exemplar the growth then comes out (default: scaled by pilot growths until "
-                   "it matches the exemplar's density; see docs/methods.md)");
+                   "davison: grow as the paper does, however much denser than the exemplar "
+                   "(default: a copy's neighbourhood may hold at most c times the exemplar's "
+                   "mean count, c chosen by pilot growths; see docs/methods.md)");
   command.add_flag("--no-optimise", no_optimise,
                    "davison: grow without the least-squares relaxation of the front");
   command.add_option("--palette", palette,

@@ -24,8 +24,9 @@ struct GrowthOptions {
   double cluster_eps = 0.25;     // DBSCAN radius of free-space vectors, in d̄
   int cluster_min_points = 2;    // DBSCAN core size
   double bounding_radius = 0.0;  // > 0: every element's bounding radius (units of the exemplar)
-  // The automatic bounding radii scaled by pilot growths until the output's density is the
-  // exemplar's (density_calibration.hpp); false: as they are, as the paper.
+  // A copy's neighbourhood limited to c times the exemplar's mean count, c chosen by pilot
+  // growths until the output's density is the exemplar's (density_calibration.hpp); false: no
+  // limit, as the paper.
   bool calibrate_density = true;
   bool optimise = true;
   // Overlap test: bounding circles (spheres), as the paper; or, an option no published growth
