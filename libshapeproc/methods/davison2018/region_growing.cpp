@@ -453,15 +453,16 @@ synthesis::SynthesisResult RegionGrowing::synthesize(core::Random& random,
       [&](double crowding, const geometry::Domain& where, core::Random& r) {
         return grow(exemplar_, where, options_, crowding, r, quiet, nullptr).state.size();
       });
-  const GrowthExemplar& used = exemplar_;
   synthesis::SynthesisResult result;
   const Growth g =
-      grow(used, domain_, options_, calibration.crowding, random, control, &result.trace);
+      grow(exemplar_, domain_, options_, calibration.crowding, random, control, &result.trace);
 
   OutputSamples output;
   for (std::size_t e = 0; e < g.state.size(); ++e)
-    output.add(used.em, g.state.source(static_cast<int>(e)), g.state.position(static_cast<int>(e)));
-  result.scene = reconstruct(used.em, output, domain_, OrientationField{}, Reconstruction::rigid);
+    output.add(exemplar_.em, g.state.source(static_cast<int>(e)),
+               g.state.position(static_cast<int>(e)));
+  result.scene =
+      reconstruct(exemplar_.em, output, domain_, OrientationField{}, Reconstruction::rigid);
   result.record.set_domain(domain_);
   result.record.options = record_options();
   result.record.options.emplace_back(
