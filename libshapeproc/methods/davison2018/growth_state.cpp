@@ -169,6 +169,14 @@ geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
   return out;
 }
 
+std::size_t GrowthState::count_within(const Vec3& p, double distance) const {
+  std::size_t n = 0;
+  elements_.for_each_candidate(p, [&](int o) {
+    if (domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance) ++n;
+  });
+  return n;
+}
+
 std::vector<int> GrowthState::elements_within(const Vec3& p, double distance) const {
   std::vector<int> out;
   elements_.for_each_candidate(p, [&](int o) {

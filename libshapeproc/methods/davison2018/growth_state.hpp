@@ -78,6 +78,8 @@ class GrowthState {
   geometry::Neighbourhood neighbourhood(int e) const;
   // Indices of the elements within `distance` (at most the largest neighbourhood radius) of `p`.
   std::vector<int> elements_within(const Vec3& p, double distance) const;
+  // How many elements lie within `distance` of p (elements_within's size, without the list).
+  std::size_t count_within(const Vec3& p, double distance) const;
 
  private:
   struct FreePoint {

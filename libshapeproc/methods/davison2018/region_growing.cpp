@@ -194,9 +194,8 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
       continue;
     const std::size_t part = static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)]);
     if (std::isfinite(g.settings.most_neighbours[part]) &&
-        static_cast<double>(
-            g.state.elements_within(p, g.exemplar.reach_of(near[i].element)).size() + out.size() +
-            1) > g.settings.most_neighbours[part])
+        static_cast<double>(g.state.count_within(p, g.exemplar.reach_of(near[i].element)) +
+                            out.size() + 1) > g.settings.most_neighbours[part])
       continue;          // the density calibration's limit
     bool clash = false;  // with the copies before it (bounding circles)
     for (const auto& [e, q] : out) {
