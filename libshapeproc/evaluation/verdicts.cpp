@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/metrics/wasserstein_test.hpp"
 
 namespace shapeproc::evaluation {
 
@@ -107,6 +108,9 @@ Judged measure_for_verdicts(const geometry::Scene& exemplar, geometry::Boundary 
 
 namespace {
 
+// The spacing check's tolerance where the samples are large enough that chance moves W1 less.
+constexpr double kSpacingFloor = 0.15;
+
 // The shape mix: the chi-square test of the classes' counts, naming the class that drifted most.
 Verdict mix_verdict(const ShapeMix& mix) {
   Verdict v{"shape mix", mix.p_value, "p = " + number(mix.p_value, 3), "p ≥ 0.01", Outcome::pass,
@@ -188,12 +192,32 @@ Verdict order_verdict(const Judged& j) {
   return v;
 }
 
-// Spacing: W1 of the nearest-neighbour distributions.
+// Spacing: W1 of the nearest-neighbour distributions, against a fixed floor or, where the samples
+// are small, the W1 two samples of their sizes from one distribution exceed 1% of the time.
 Verdict spacing_verdict(const Judged& j) {
   const double w1 = j.comparison->all.nearest;
-  Verdict v{"spacing", w1, "W1 " + number(w1), "at most 0.15", Outcome::pass, "", ""};
+  const metrics::Distribution &out = j.output->all.nearest, &ref = j.exemplar->all.nearest;
+  double chance = 0.0;
+  metrics::WassersteinTest test;
+  if (!out.empty() && !ref.empty() && out.samples > 0 && ref.samples > 0) {
+    test = metrics::wasserstein_test(ref, out);
+    chance = test.critical / j.comparison->scale;
+  }
+  const double limit = std::max(kSpacingFloor, chance);
+  Verdict v{
+      "spacing",
+      w1,
+      "W1 " + number(w1),
+      "at most " + number(limit) + " (" +
+          (chance > kSpacingFloor ? "the 1% chance level of " + std::to_string(test.sizes[0]) +
+                                        " and " + std::to_string(test.sizes[1]) + " distances"
+                                  : "the floor; the 1% chance level is " + number(chance)) +
+          ")",
+      Outcome::pass,
+      "",
+      ""};
   v.brief = number(w1);
-  if (!(w1 <= 0.15)) {
+  if (!(w1 <= limit)) {
     v.outcome = Outcome::fail;
     v.problem = "nearest distances differ";
   }

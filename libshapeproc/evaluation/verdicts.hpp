@@ -13,7 +13,9 @@
 //   within
 //                  ±0.2 of the exemplar's ("loses the exemplar's lattice", "more regular");
 //   spacing        W1 of the nearest-neighbour distributions over the exemplar's mean nearest
-//                  distance: passes at most 0.15;
+//                  distance: passes at most 0.15, or at most the W1 two samples of their sizes
+//                  from one distribution exceed 1% of the time where that is larger
+//                  (metrics/wasserstein_test.hpp);
 //   model statistics  with a fitted model, its pairs per band and element against the
 //                  exemplar's (model_statistics.hpp): passes within the Bonferroni bound;
 //   novelty        copied neighbourhoods (metrics/novelty.hpp): fails ("repeats the exemplar")

@@ -28,6 +28,9 @@ constexpr double kShellJitter = 0.1;
 // and kShellPairs at least, repeat it (a lattice's nearest neighbours: about one pair per element).
 constexpr double kShellShare = 0.25;
 constexpr std::size_t kShellPairs = 4;
+// An axis's closest pair lies farther than the pair's closest over all axes by chance when its
+// pairs, drawn from the pooled distances, would all lie that far at least this often.
+constexpr double kHardCoreLevel = 0.05;
 
 // Quantile thresholds. Where several quantiles coincide, the distance d they share is a shell of
 // a lattice (hexagons gave [2.0155443424633040, 2.0155443424633073) for three quantiles): its
@@ -88,6 +91,28 @@ std::vector<double> thresholds_from(std::vector<double> distances,
     if (pairs_in(thresholds[k - 1], thresholds[k]) == 0)
       thresholds.erase(thresholds.begin() + static_cast<std::ptrdiff_t>(k));
   return thresholds;
+}
+
+// The hard core of an axis (its first threshold, a hair below its closest pair) comes down to the
+// pair's closest distance over all axes where the axis's own minimum is what chance gives: the
+// minimum of m distances lies well above the true lower end when m is small (two-kinds: 18.9 px
+// on one axis, 6.2 on the others, for one hard core of about 5), and a hard core set there bars
+// close pairs the exemplar merely did not show along that axis. Under "the axis's distances are
+// m draws from the pair's pooled ones", all m lie at or above the axis's minimum with probability
+// (1 − F(min))^m, F the pooled share below it; below kHardCoreLevel the axis keeps its own hard
+// core (rows, whose gap across is wider than along: tens of pairs that all keep clear).
+void pool_hard_core(std::vector<double>& thresholds, const std::vector<double>& axis_distances,
+                    const std::vector<double>& pooled, double w) {
+  if (thresholds.empty() || axis_distances.empty() || pooled.empty()) return;
+  const double own = *std::min_element(axis_distances.begin(), axis_distances.end());
+  const double lowest = *std::min_element(pooled.begin(), pooled.end());
+  // Only a plain hard core (a hair below the closest pair), not a shell's band.
+  if (!(lowest < own) || thresholds.front() < own - 2 * kDegenerate * w) return;
+  const auto below = std::count_if(pooled.begin(), pooled.end(), [&](double d) { return d < own; });
+  const double share = static_cast<double>(below) / static_cast<double>(pooled.size());
+  const double chance = std::pow(1.0 - share, static_cast<double>(axis_distances.size()));
+  if (chance < kHardCoreLevel) return;
+  thresholds.front() = std::max(0.0, lowest - kDegenerate * w);
 }
 
 }  // namespace
@@ -241,6 +266,8 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
           }
           axis.thresholds =
               thresholds_from(*source, options.quantiles, shell_jitter, exemplar.elements.size());
+          if (source != &pooled && source != &all_distances)
+            pool_hard_core(axis.thresholds, *source, pooled, shell_jitter);
         }
         const std::size_t bands = axis.thresholds.size() - 1;
         axis.gammas.assign(bands, 1.0);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "libshapeproc/core/random.hpp"
@@ -128,6 +130,49 @@ TEST(Verdicts, ALatticeTurnedIntoAScatterLosesItsOrder) {
   // A random scatter of squares at this density overlaps, and its spacing spreads.
   EXPECT_EQ(j["overlaps"].outcome, Outcome::fail);
   EXPECT_EQ(j.line.rfind("fails ", 0), 0u) << j.line;
+}
+
+// `n` squares of sides 6, 10 and 14 at random in a torus of side `side`, their centres at least
+// `core` apart (random sequential adsorption; 0: a Poisson scatter).
+geometry::Scene hard_core(int n, double side, double core, std::uint64_t seed) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(Vec3(0, 0, 0), Vec3(side, side, 0));
+  scene.categories = {{"a"}};
+  for (const double a : {6.0, 10.0, 14.0}) scene.shapes.push_back(testing::rectangle(a, a));
+  core::Random random(seed);
+  while (static_cast<int>(scene.elements.size()) < n) {
+    const Vec3 p(random.uniform(0, side), random.uniform(0, side), 0);
+    bool clear = true;
+    for (const geometry::Element& e : scene.elements) {
+      Vec3 d = (p - e.position).cwiseAbs();
+      d.x() = std::min(d.x(), side - d.x());
+      d.y() = std::min(d.y(), side - d.y());
+      clear = clear && d.norm() >= core;
+    }
+    if (clear) scene.elements.push_back({static_cast<int>(random.index(3)), 0, p});
+  }
+  return scene;
+}
+
+// A small exemplar's nearest distances vary by chance more than the floor of 0.15 allows: a piece
+// of 34 elements of a hard-core process against an output of four times its area from the same
+// process stands at W1 0.09–0.23. The check compares W1 with what two samples of those sizes from
+// one distribution exceed 1% of the time: 10 of 10 such outputs pass, and a Poisson scatter of
+// the same density, whose nearest distances fall to 0, fails.
+TEST(Verdicts, SpacingAllowsWhatChanceGivesSmallSamples) {
+  const geometry::Scene exemplar = hard_core(34, 220.0, 19.0, 1);
+  int passed = 0, above_floor = 0;
+  for (std::uint64_t seed = 2; seed < 12; ++seed) {
+    const Judgement j = judge_against(exemplar, hard_core(136, 440.0, 19.0, seed));
+    passed += j["spacing"].outcome == Outcome::pass;
+    above_floor += j["spacing"].value > 0.15;
+    EXPECT_NE(j["spacing"].rule.find("the 1% chance level of"), std::string::npos)
+        << j["spacing"].rule;
+  }
+  EXPECT_EQ(passed, 10);
+  EXPECT_EQ(above_floor, 2);  // W1 0.17 and 0.23: the floor alone would fail them
+  const Judgement scatter = judge_against(exemplar, hard_core(136, 440.0, 0.0, 2));
+  EXPECT_EQ(scatter["spacing"].outcome, Outcome::fail) << scatter["spacing"].shown;
 }
 
 TEST(Verdicts, TheModelsPairCountsPerBandAgainstTheExemplars) {
