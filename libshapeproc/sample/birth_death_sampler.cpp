@@ -251,6 +251,14 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                                                     ", standard error of the change " +
                                                     core::format_general(t.standard_error, 3));
   }
+  if (options_.iterations <= 0 && sampled.spacing_trend.first > 0) {
+    const CountTrend& t = sampled.spacing_trend;
+    record.options.emplace_back("spacing stationarity",
+                                "mean nearest distances " + core::format_general(t.first, 6) +
+                                    " then " + core::format_general(t.second, 6) +
+                                    ", standard error of the change " +
+                                    core::format_general(t.standard_error, 3));
+  }
   if (options_.compression.enabled) {
     record.options.emplace_back("burn_in", crystal_ ? "crystal" : "compressing");
     out.counters.emplace_back("compressing burn-in steps",

@@ -103,6 +103,9 @@ struct SampleResult {
   // The automatic rule's last check: the mean counts of the two quarters it compared and the
   // standard error of their difference (zero with --iterations).
   CountTrend trend;
+  // A decomposed run's second test: its elements' mean nearest distance, once per sweep, whose
+  // quarters must agree as well (zero otherwise).
+  CountTrend spacing_trend;
   // A decomposed run: its cells, its sweeps and the pilot chain's density (0 otherwise). Its
   // trace has one point per sweep, without a log density; its `statistics` stay empty.
   int cells = 0, sweeps = 0;

@@ -8,6 +8,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/parallel_for.hpp"
+#include "libshapeproc/geometry/nearest_neighbours.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
 #include "libshapeproc/sample/cell_layout.hpp"
@@ -21,8 +22,9 @@ constexpr double kElementsPerCell = 64;  // the cells' size at the pilot's densi
 constexpr double kStepsPerElement = 10;  // steps of a visit per expected element of its cell
 constexpr long long kLeastVisitSteps = 50;
 constexpr int kLeastSweeps = 20;
-constexpr int kMostSweeps = 200;          // about 2,000 steps per element (automatic rule)
-constexpr std::size_t kLeastCounts = 24;  // the stationarity test's counts (one per colour visit)
+constexpr int kMostSweeps = 200;            // about 2,000 steps per element (automatic rule)
+constexpr std::size_t kLeastCounts = 24;    // the stationarity test's counts (one per colour visit)
+constexpr std::size_t kLeastSpacings = 10;  // its mean nearest distances (one per sweep)
 // The pilot torus's side in reaches (2D, 3D): a few hundred elements at the shipped exemplars'
 // densities; a 3D torus of 6 reaches held 2,800 pebbles and took minutes.
 constexpr double kPilotReaches2 = 6, kPilotReaches3 = 2.5;
@@ -220,6 +222,20 @@ CellLayout plan_cells(const geometry::Domain& domain, const ChainTables& tables,
   return *layout;
 }
 
+// The elements' mean distance to their nearest neighbour (reference positions, the nearest image
+// on a torus): a pair statistic of the whole output, cheap beside a sweep (one grid pass), that
+// moves where the count alone may not (elements that rearrange at a constant count).
+double mean_nearest_distance(const std::vector<Element>& elements, const geometry::Domain& domain) {
+  if (elements.size() < 2) return 0.0;
+  std::vector<geometry::Vec3> points;
+  points.reserve(elements.size());
+  for (const Element& e : elements) points.push_back(e.position);
+  double sum = 0.0;
+  for (const auto& nearest : geometry::nearest_neighbours(points, domain, 1))
+    if (!nearest.empty()) sum += nearest.front().offset.norm();
+  return sum / static_cast<double>(points.size());
+}
+
 }  // namespace
 
 SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainTables& tables,
@@ -280,9 +296,15 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   const bool automatic = options.iterations <= 0;
   const long long total = automatic ? 0 : options.iterations;
   int done = 0;
+  std::vector<double> spacings;  // the mean nearest distance after each sweep
   for (int number = 1;; ++number) {
     sweep(number, false);
     done = number;
+    // The test reads the second half of the values only, and checks from kLeastSweeps on: the
+    // sweeps before half of that are never read (a placeholder keeps the count).
+    if (automatic)
+      spacings.push_back(2 * number > kLeastSweeps ? mean_nearest_distance(cells.all(), domain)
+                                                   : 0.0);
     if (options.trace_every > 0)
       result.trace.push_back(
           {steps, static_cast<int>(cells.size()), std::numeric_limits<double>::quiet_NaN()});
@@ -293,7 +315,8 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     }
     if (number >= kLeastSweeps && counts.size() >= 2 * kLeastCounts) {
       result.trend = count_trend(counts, kLeastCounts);
-      if (result.trend.stationary) break;
+      result.spacing_trend = value_trend(spacings, kLeastSpacings);
+      if (result.trend.stationary && result.spacing_trend.stationary) break;
     }
     if (number >= kMostSweeps) {
       result.stationary = false;

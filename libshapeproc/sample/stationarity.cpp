@@ -5,17 +5,19 @@
 
 namespace shapeproc::sample {
 
+namespace {
+
 // The means of the second half's two quarters, a quarter of the run apart: a trend that would
-// move the count by max(1, 1%) over as many steps again keeps the chain going (packed exemplars
-// creep up by an element every few ten thousand steps, with little noise).
-CountTrend count_trend(const std::vector<int>& counts, std::size_t least) {
-  const std::size_t half = counts.size() / 2, length = counts.size() - half;
+// move the statistic by max(floor, 1%) over as many steps again keeps the chain going (packed
+// exemplars creep up by an element every few ten thousand steps, with little noise).
+CountTrend quarter_trend(const std::vector<double>& values, std::size_t least, double floor) {
+  const std::size_t half = values.size() / 2, length = values.size() - half;
   if (length < std::max<std::size_t>(least, 10)) return {};
   constexpr int kBatches = 10;
   std::vector<double> batch(kBatches, 0.0);
   const std::size_t per_batch = length / kBatches;
   for (int b = 0; b < kBatches; ++b) {
-    for (std::size_t i = 0; i < per_batch; ++i) batch[b] += counts[half + b * per_batch + i];
+    for (std::size_t i = 0; i < per_batch; ++i) batch[b] += values[half + b * per_batch + i];
     batch[b] /= static_cast<double>(per_batch);
   }
   double first = 0.0, second = 0.0, mean = 0.0;
@@ -26,8 +28,19 @@ CountTrend count_trend(const std::vector<int>& counts, std::size_t least) {
   double variance = 0.0;
   for (double m : batch) variance += (m - mean) * (m - mean) / (kBatches - 1);
   const double standard_error = std::sqrt(variance * (2.0 / (kBatches / 2)));
-  return {std::abs(second - first) <= 0.25 * std::max(1.0, 0.01 * mean) + 2.0 * standard_error,
+  return {std::abs(second - first) <=
+              0.25 * std::max(floor, 0.01 * std::abs(mean)) + 2.0 * standard_error,
           first, second, standard_error};
+}
+
+}  // namespace
+
+CountTrend count_trend(const std::vector<int>& counts, std::size_t least) {
+  return quarter_trend(std::vector<double>(counts.begin(), counts.end()), least, 1.0);
+}
+
+CountTrend value_trend(const std::vector<double>& values, std::size_t least) {
+  return quarter_trend(values, least, 0.0);
 }
 
 StationarityRule::Verdict StationarityRule::after_step(long long step, int elements) {

@@ -19,6 +19,10 @@ struct CountTrend {
   double first = 0.0, second = 0.0, standard_error = 0.0;
 };
 CountTrend count_trend(const std::vector<int>& counts, std::size_t least = 100);
+// The same test on any statistic recorded at even intervals (a decomposed run's mean nearest
+// distance, once per sweep): its quarters agree within a quarter of 1% of its mean plus two
+// standard errors (no floor of one, which suits a count only).
+CountTrend value_trend(const std::vector<double>& values, std::size_t least = 100);
 inline bool is_stationary(const std::vector<int>& counts, std::size_t least = 100) {
   return count_trend(counts, least).stationary;
 }

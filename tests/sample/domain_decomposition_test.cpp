@@ -106,6 +106,10 @@ TEST(DomainDecomposition, SameSeedSameOutputWithAnyThreadsAndNoHardCoreBroken) {
   EXPECT_TRUE(one.stationary);
   EXPECT_TRUE(one.trend.stationary);
   EXPECT_GT(one.trend.first, 0.0);
+  // Its elements' mean nearest distance, once per sweep, passed the same test.
+  EXPECT_TRUE(one.spacing_trend.stationary);
+  EXPECT_GT(one.spacing_trend.first, 0.0);
+  EXPECT_GE(one.sweeps, 20);
   ASSERT_GT(one.scene.elements.size(), 50U);
   ASSERT_EQ(one.scene.elements.size(), two.scene.elements.size());
   for (std::size_t i = 0; i < one.scene.elements.size(); ++i)

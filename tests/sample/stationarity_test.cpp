@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace shapeproc::sample {
 namespace {
@@ -36,6 +37,26 @@ TEST(Stationarity, ARisingCountKeepsTheChainGoingUntilItLevelsOff) {
   EXPECT_GT(at, 60000);
   StationarityRule from_empty(5000000, true);
   EXPECT_EQ(stopping_step(from_empty, rising, 5000000), 2 * at);
+}
+
+// A statistic other than a count has no floor of one: a mean nearest distance of about 2 whose
+// quarters differ by 0.04 (a drift of 0.004 per value) is not stationary, where a count's floor,
+// a quarter of one, would have passed it; the same values without the drift are stationary; with
+// fewer than `least` values in the second half there is no verdict.
+TEST(Stationarity, AValuesTrendHasNoFloorOfOne) {
+  std::vector<double> drifting, level;
+  for (int i = 0; i < 40; ++i) {
+    const double noise = 0.0005 * ((i * 7) % 5 - 2);
+    drifting.push_back(2.0 + 0.004 * i + noise);
+    level.push_back(2.0 + noise);
+  }
+  const CountTrend drift = value_trend(drifting, 10);
+  EXPECT_FALSE(drift.stationary);
+  EXPECT_LT(drift.second - drift.first, 0.25);
+  EXPECT_TRUE(value_trend(level, 10).stationary);
+  EXPECT_NEAR(value_trend(level, 10).first, 2.0, 0.002);
+  EXPECT_FALSE(value_trend(level, 30).stationary);
+  EXPECT_EQ(value_trend(level, 30).first, 0.0);
 }
 
 TEST(Stationarity, TheStepLimitCapsTheRunOn) {
