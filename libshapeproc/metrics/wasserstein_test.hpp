@@ -22,7 +22,9 @@ struct WassersteinTestOptions {
 
 struct WassersteinTest {
   double critical = 0.0;  // W1 that a same-distribution pair exceeds with probability `level`
-  int sizes[2] = {0, 0};  // the sample sizes drawn (the distributions' samples, capped)
+  // The sample sizes drawn: each distribution's distinct values (a distance two elements measure
+  // of each other counts once), at most its samples, capped at largest_sample.
+  int sizes[2] = {0, 0};
 };
 
 // Throws core::ArgumentError when either distribution is empty or its `samples` is below 1.
