@@ -1,6 +1,7 @@
 #include "libshapeproc/sample/output_estimate.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "libshapeproc/core/format.hpp"
 
@@ -43,6 +44,10 @@ core::ResourceEstimate estimate_output(const model::ShapeProcessModel& model,
   estimate.basis = "the model's beta " + core::format_general(beta, 3) + " per unit " + unit +
                    " times the domain's " + unit + " " + core::format_general(measure, 3);
   return with_bytes(estimate, chains_at_once);
+}
+
+bool falls_short(double count, double wanted) {
+  return wanted > 0 && count < 0.9 * wanted && wanted - count > 3.0 * std::sqrt(wanted);
 }
 
 }  // namespace shapeproc::sample

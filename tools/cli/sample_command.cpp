@@ -348,7 +348,7 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
           << "; the output may not be at equilibrium (give --iterations)\n";
     }
     const double wanted = exemplar_density * result.scene.window_measure();
-    if (wanted > 0 && static_cast<double>(result.scene.elements.size()) < 0.9 * wanted) {
+    if (sample::falls_short(static_cast<double>(result.scene.elements.size()), wanted)) {
       out << "warning: the chain reached " << result.scene.elements.size() << " elements where "
           << "the exemplar's density gives " << core::format_general(wanted, 4) << " (x"
           << core::format_fixed(static_cast<double>(result.scene.elements.size()) / wanted, 2)
