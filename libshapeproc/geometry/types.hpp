@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "libshapeproc/core/constants.hpp"
+
 namespace shapeproc::geometry {
 
 using Vec2 = Eigen::Vector2d;
@@ -24,6 +26,11 @@ inline Box3 lift(const Box2& box) {
 inline double measure(const Box3& box, int dimension) {
   const Vec3 sides = box.sizes();
   return dimension == 2 ? sides.x() * sides.y() : sides.x() * sides.y() * sides.z();
+}
+
+// Area (dimension 2) or volume (dimension 3) of a ball of radius r.
+inline double ball_measure(double r, int dimension) {
+  return dimension == 3 ? 4.0 / 3.0 * core::kPi * r * r * r : core::kPi * r * r;
 }
 
 }  // namespace shapeproc::geometry

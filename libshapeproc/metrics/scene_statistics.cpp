@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "libshapeproc/core/check.hpp"
-#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
 
@@ -16,30 +15,6 @@ namespace shapeproc::metrics {
 using geometry::Vec3;
 
 namespace {
-
-// Area (2D) or volume (3D) of a ball of radius r.
-double ball_measure(int dimension, double r) {
-  return dimension == 2 ? core::kPi * r * r : 4.0 / 3.0 * core::kPi * r * r * r;
-}
-
-// Sorts (value, weight) pairs by value, merges equal values and normalises the weights.
-Distribution make_distribution(std::vector<std::pair<double, double>> samples, int count) {
-  Distribution d;
-  d.samples = count;
-  std::sort(samples.begin(), samples.end());
-  double total = 0.0;
-  for (const auto& s : samples) total += s.second;
-  if (!(total > 0)) return d;
-  for (const auto& s : samples) {
-    if (!d.values.empty() && d.values.back() == s.first) {
-      d.weights.back() += s.second / total;
-    } else {
-      d.values.push_back(s.first);
-      d.weights.push_back(s.second / total);
-    }
-  }
-  return d;
-}
 
 // #{j : borders[j] >= t} from the sorted borders.
 class AtRisk {
@@ -84,7 +59,8 @@ std::vector<double> offset_measure(const geometry::Scene& scene,
     points = points && measurer.radius(static_cast<int>(s)) == 0.0;
   if (points) {
     for (int k = 0; k < bins; ++k)
-      measure[k] = ball_measure(dim, (k + 1) * width) - ball_measure(dim, k * width);
+      measure[k] =
+          geometry::ball_measure((k + 1) * width, dim) - geometry::ball_measure(k * width, dim);
     return measure;
   }
   const std::size_t n = scene.elements.size();
@@ -110,12 +86,30 @@ std::vector<double> offset_measure(const geometry::Scene& scene,
       if (d >= range) continue;
       k = std::min(bins - 1, static_cast<int>(std::max(0.0, d) / width));  // overlaps: 0
     }
-    measure[k] += ball_measure(dim, reach) / samples;
+    measure[k] += geometry::ball_measure(reach, dim) / samples;
   }
   return measure;
 }
 
 }  // namespace
+
+Distribution make_distribution(std::vector<std::pair<double, double>> samples, int count) {
+  Distribution d;
+  d.samples = count;
+  std::sort(samples.begin(), samples.end());
+  double total = 0.0;
+  for (const auto& s : samples) total += s.second;
+  if (!(total > 0)) return d;
+  for (const auto& s : samples) {
+    if (!d.values.empty() && d.values.back() == s.first) {
+      d.weights.back() += s.second / total;
+    } else {
+      d.values.push_back(s.first);
+      d.weights.push_back(s.second / total);
+    }
+  }
+  return d;
+}
 
 double Distribution::mean() const {
   double m = 0.0;

@@ -55,6 +55,10 @@ struct Distribution {
   double cdf(double r) const;
 };
 
+// The distribution of weighted samples (value, weight): sorted by value, equal values merged,
+// weights normalised; `count` is recorded as its samples.
+Distribution make_distribution(std::vector<std::pair<double, double>> samples, int count);
+
 // Wasserstein-1 distance between two distributions on the line (the area between their CDFs).
 double wasserstein1(const Distribution& a, const Distribution& b);
 

@@ -36,23 +36,13 @@ struct Pooled {
 
   // `count` draws by the inverse of the cumulative table, as an empirical distribution.
   Distribution draw(int count, core::Random& random) const {
-    std::vector<double> drawn(static_cast<std::size_t>(count));
-    for (double& x : drawn) {
+    std::vector<std::pair<double, double>> drawn(static_cast<std::size_t>(count));
+    for (auto& [x, weight] : drawn) {
       const auto at = std::upper_bound(cumulative.begin(), cumulative.end(), random.uniform());
       x = values[std::min<std::size_t>(at - cumulative.begin(), values.size() - 1)];
+      weight = 1.0;
     }
-    std::sort(drawn.begin(), drawn.end());
-    Distribution d;
-    d.samples = count;
-    for (const double x : drawn) {
-      if (!d.values.empty() && d.values.back() == x) {
-        d.weights.back() += 1.0 / count;
-      } else {
-        d.values.push_back(x);
-        d.weights.push_back(1.0 / count);
-      }
-    }
-    return d;
+    return make_distribution(std::move(drawn), count);
   }
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/sample/ball_offset.hpp"
 
@@ -44,8 +43,7 @@ std::unique_ptr<const NeighbourBirths> NeighbourBirths::make(const model::ShapeP
   }
   for (double r : offsets.radii) {
     births->radii_.push_back(r);
-    births->ball_measure_.push_back(model.dimension == 3 ? 4.0 / 3.0 * core::kPi * r * r * r
-                                                         : core::kPi * r * r);
+    births->ball_measure_.push_back(geometry::ball_measure(r, model.dimension));
   }
   return births;
 }

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/geometry/element_neighbourhood.hpp"
@@ -60,7 +59,7 @@ double neighbourhood_measure(const GrowthExemplar& exemplar, std::size_t part, i
       r = exemplar.reach[s];
       break;
     }
-  return dimension == 3 ? 4.0 / 3.0 * core::kPi * r * r * r : core::kPi * r * r;
+  return geometry::ball_measure(r, dimension);
 }
 
 // The candidates of element e: co(source) ∪ co(match), each once (k-coherence's gathering).
