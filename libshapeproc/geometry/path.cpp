@@ -110,17 +110,8 @@ double signed_area(const std::vector<Vec2>& polygon) {
 int winding_number(const std::vector<Vec2>& polygon, const Vec2& point) {
   int winding = 0;
   const std::size_t n = polygon.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % n];
-    const double cross =
-        (b.x() - a.x()) * (point.y() - a.y()) - (point.x() - a.x()) * (b.y() - a.y());
-    if (a.y() <= point.y()) {
-      if (b.y() > point.y() && cross > 0.0) ++winding;
-    } else if (b.y() <= point.y() && cross < 0.0) {
-      --winding;
-    }
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    winding += winding_crossing(polygon[i], polygon[(i + 1) % n], point);
   return winding;
 }
 

@@ -52,6 +52,16 @@ double signed_area(const std::vector<Vec2>& polygon);
 // Winding number of `polygon` (implicitly closed) around `point`.
 int winding_number(const std::vector<Vec2>& polygon, const Vec2& point);
 
+// The edge (a, b)'s share of a winding number around `point`: +1 or -1 where it crosses the
+// horizontal line through the point (a half-open crossing, upwards or downwards) on the point's
+// right, else 0. Edges that do not reach the point's height give 0.
+inline int winding_crossing(const Vec2& a, const Vec2& b, const Vec2& point) {
+  const double cross =
+      (b.x() - a.x()) * (point.y() - a.y()) - (point.x() - a.x()) * (b.y() - a.y());
+  if (a.y() <= point.y()) return b.y() > point.y() && cross > 0.0 ? 1 : 0;
+  return b.y() <= point.y() && cross < 0.0 ? -1 : 0;
+}
+
 // True when the outlines of two polylines (closed when the flags say so) cross, or run together
 // along a piece of positive length; touching at isolated points does not count.
 bool polylines_overlap(const std::vector<Vec2>& a, bool a_closed, const std::vector<Vec2>& b,

@@ -46,6 +46,7 @@ struct Proxy2 {
   std::vector<Polyline> polylines;
   std::vector<Region> regions;
   std::vector<Vec2> segment_start, segment_end;  // every proxy segment (points: zero length)
+  std::vector<int> segment_polyline;             // the polyline each segment belongs to
   BoxTree<2> segment_tree;
   Box2 box;
   // The mass whose gravitation gives the relative orientation: the filled regions, plus strips

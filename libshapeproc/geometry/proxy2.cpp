@@ -190,9 +190,30 @@ MassModel2 sample_mass(const Proxy2& proxy, double cell, const Vec2& lattice, in
 
 bool Proxy2::inside(const Vec2& p) const {
   if (regions.empty() || !box.contains(p)) return false;
+  // Each ring's winding number, from the segments that reach the point's height only (the
+  // others add nothing): the same sum as winding_number's, found through the segment tree.
+  thread_local std::vector<int> winding_of;
+  winding_of.assign(polylines.size(), 0);
+  thread_local std::vector<int> stack;
+  stack.assign(1, 0);
+  while (!stack.empty()) {
+    const BoxTree<2>::Node& node = segment_tree.nodes[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (p.y() < node.box.min().y() || p.y() > node.box.max().y()) continue;
+    if (node.count == 0) {
+      stack.push_back(node.first);
+      stack.push_back(node.first + 1);
+      continue;
+    }
+    for (int k = node.first; k < node.first + node.count; ++k) {
+      const auto s = static_cast<std::size_t>(segment_tree.order[static_cast<std::size_t>(k)]);
+      winding_of[static_cast<std::size_t>(segment_polyline[s])] +=
+          winding_crossing(segment_start[s], segment_end[s], p);
+    }
+  }
   for (const Region& region : regions) {
     int winding = 0;
-    for (int ring : region.rings) winding += winding_number(polylines[ring].points, p);
+    for (int ring : region.rings) winding += winding_of[static_cast<std::size_t>(ring)];
     if (region.rule == FillRule::nonzero ? winding != 0 : (winding % 2) != 0) return true;
   }
   return false;
@@ -235,12 +256,14 @@ Proxy2 make_proxy2(const Shape& shape, const ProxyOptions& options) {
     }
     if (!region.rings.empty()) proxy.regions.push_back(std::move(region));
   }
-  for (const Proxy2::Polyline& polyline : proxy.polylines) {
+  for (std::size_t k = 0; k < proxy.polylines.size(); ++k) {
+    const Proxy2::Polyline& polyline = proxy.polylines[k];
     const std::size_t n = polyline.points.size();
     const std::size_t count = polyline.closed ? n : (n >= 2 ? n - 1 : n);
     for (std::size_t i = 0; i < count; ++i) {
       proxy.segment_start.push_back(polyline.points[i]);
       proxy.segment_end.push_back(polyline.points[(i + 1) % n]);
+      proxy.segment_polyline.push_back(static_cast<int>(k));
     }
   }
   std::vector<Box2> boxes;
