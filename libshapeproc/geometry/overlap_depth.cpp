@@ -61,17 +61,19 @@ double point_to_surface(const Proxy3& proxy, const Vec3& p) {
       });
 }
 
-double overlap_depth(const Proxy2& a, const Proxy2& b, const Vec2& offset) {
+double overlap_depth(const Proxy2& a, const Proxy2& b, const Vec2& offset, bool any) {
   if (!a.box.intersects(b.box.translated(offset))) return 0.0;
   double depth = 0.0;
   for (const auto& polyline : b.polylines) {
     for (const Vec2& p : polyline.points) {
       if (a.inside(p + offset)) depth = std::max(depth, point_to_outline(a, p + offset));
+      if (any && depth > 0.0) return depth;
     }
   }
   for (const auto& polyline : a.polylines) {
     for (const Vec2& p : polyline.points) {
       if (b.inside(p - offset)) depth = std::max(depth, point_to_outline(b, p - offset));
+      if (any && depth > 0.0) return depth;
     }
   }
   if (depth > 0.0) return depth;
@@ -81,17 +83,19 @@ double overlap_depth(const Proxy2& a, const Proxy2& b, const Vec2& offset) {
   return 0.0;
 }
 
-double overlap_depth(const Proxy3& a, const Proxy3& b, const Vec3& offset) {
+double overlap_depth(const Proxy3& a, const Proxy3& b, const Vec3& offset, bool any) {
   if (!a.box.intersects(b.box.translated(offset))) return 0.0;
   double depth = 0.0;
   if (a.closed) {
     for (const Vec3& p : b.vertices) {
       if (a.inside(p + offset)) depth = std::max(depth, point_to_surface(a, p + offset));
+      if (any && depth > 0.0) return depth;
     }
   }
   if (b.closed) {
     for (const Vec3& p : a.vertices) {
       if (b.inside(p - offset)) depth = std::max(depth, point_to_surface(b, p - offset));
+      if (any && depth > 0.0) return depth;
     }
   }
   return depth;

@@ -18,8 +18,10 @@ double point_to_outline(const Proxy2& proxy, const Vec2& p);
 double point_to_surface(const Proxy3& proxy, const Vec3& p);
 
 // Depth of the overlap of shape a at the origin and shape b at `offset`; 0 when their filled
-// regions (2D) or solids (closed meshes, 3D) do not overlap with positive measure.
-double overlap_depth(const Proxy2& a, const Proxy2& b, const Vec2& offset);
-double overlap_depth(const Proxy3& a, const Proxy3& b, const Vec3& offset);
+// regions (2D) or solids (closed meshes, 3D) do not overlap with positive measure. Where the
+// depth itself does not matter, only whether there is one, `any` stops at the first vertex found
+// inside the other shape and returns its depth (positive, at most the overlap's).
+double overlap_depth(const Proxy2& a, const Proxy2& b, const Vec2& offset, bool any = false);
+double overlap_depth(const Proxy3& a, const Proxy3& b, const Vec3& offset, bool any = false);
 
 }  // namespace shapeproc::geometry

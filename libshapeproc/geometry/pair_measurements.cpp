@@ -166,6 +166,10 @@ double PairMeasurer::outline_bracket(int a, int b, const Vec2& offset, double cu
 
 double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff,
                                     const std::vector<double>* breakpoints) const {
+  // With no breakpoint below 0, every overlap's depth lies in one interval: the first vertex found
+  // inside gives a value of it.
+  const bool any_depth =
+      breakpoints != nullptr && !breakpoints->empty() && breakpoints->front() >= 0;
   if (dimension_ == 2) {
     const Proxy2& pa = proxies2_[a];
     const Proxy2& pb = proxies2_[b];
@@ -219,16 +223,16 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
       }
     }
     // Outlines that meet: touching (0) or overlapping (minus the overlap's depth).
-    if (outline <= contact) return -overlap_depth(pa, pb, t);
+    if (outline <= contact) return -overlap_depth(pa, pb, t, any_depth);
     // One shape inside the other's filled region (their outlines apart): one vertex of every
     // polyline decides. Needed only when a negative distance lies in another interval than the
     // outlines' gap, i.e. some breakpoint is at most the gap.
     if (outline >= first_mark && pa.box.intersects(moved)) {
       for (const auto& polyline : pb.polylines) {
-        if (pa.inside(polyline.points.front() + t)) return -overlap_depth(pa, pb, t);
+        if (pa.inside(polyline.points.front() + t)) return -overlap_depth(pa, pb, t, any_depth);
       }
       for (const auto& polyline : pa.polylines) {
-        if (pb.inside(polyline.points.front() - t)) return -overlap_depth(pa, pb, t);
+        if (pb.inside(polyline.points.front() - t)) return -overlap_depth(pa, pb, t, any_depth);
       }
     }
     return outline;
@@ -239,7 +243,7 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
   if (std::sqrt(pa.box.squaredExteriorDistance(moved)) >= cutoff) return cutoff;
   if (pa.box.intersects(moved)) {
     if (pa.inside(pb.vertices.front() + offset) || pb.inside(pa.vertices.front() - offset))
-      return -overlap_depth(pa, pb, offset);
+      return -overlap_depth(pa, pb, offset, any_depth);
   }
   auto corner = [](const Proxy3& p, int t, int k) -> const Vec3& {
     return p.point ? p.vertices[0] : p.vertices[p.triangles[t][k]];
@@ -250,7 +254,7 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
                                           corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
                                           corner(pb, j, 2) + offset);
       });
-  return surfaces <= 0.0 ? -overlap_depth(pa, pb, offset) : surfaces;
+  return surfaces <= 0.0 ? -overlap_depth(pa, pb, offset, any_depth) : surfaces;
 }
 
 double PairMeasurer::hausdorff_distance(int a, int b, const Vec3& offset) const {

@@ -60,40 +60,58 @@ const GaussRule kRules[4] = {rule(1), rule(2), rule(4), rule(8)};
 // does not depend on the width of the vector registers the compiler uses.
 constexpr std::size_t kLanes = 4;
 
+// Edges per cluster, and the distance (in cluster radii, beyond the edge's length) from which an
+// edge sees a cluster's expansion: its error is then below about (1/4)⁴ of the cluster's share.
+constexpr std::size_t kClusterEdges = 16;
+constexpr double kClusterFar = 4.0;
+
 // For the edge i of A with Gauss points x0, x1, midpoint m and length ℓ_i (in B's frame): the sum
 // over B's edges j apart from it (midpoints more than ℓ_i + ℓ_j apart) of the two-point Gauss
 // product rule for the mean along edge i of ∫_edge_j h_j(x)/|y − x| ds_y, where
 // h_j(x) = (y − x)·n_j = n_j·start_j − n_j·x. The entries of the edges j not apart go to `near`.
-// (|h_j| ≤ |y − x|, and squared distances are kept above 1e-300, so no term is infinite.)
-double apart_sum(const MassBoundary2::EdgeRule& b, double x0x, double x0y, double x1x, double x1y,
-                 double mx, double my, double length_i, std::vector<std::size_t>& near) {
+// (|h_j| ≤ |y − x|, and squared distances are kept above 1e-300, so no term is infinite.) When
+// `clustered`, the edges of a cluster far from edge i (every such edge is apart from it) count
+// through the cluster's expansion, at both Gauss points, instead.
+double apart_sum(const MassBoundary2& boundary, bool clustered, double x0x, double x0y, double x1x,
+                 double x1y, double mx, double my, double length_i,
+                 std::vector<std::size_t>& near) {
   using Lanes = Eigen::Array<double, kLanes, 1>;
   using Load = Eigen::Map<const Lanes>;
   using R = MassBoundary2::EdgeRule;
+  const MassBoundary2::EdgeRule& b = boundary.rule;
   Lanes sum = Lanes::Zero();
+  double far = 0.0;
   const Lanes tiny = Lanes::Constant(1e-300);
-  for (std::size_t j = 0; j < b.edge.size(); j += kLanes) {
-    const Lanes dx = Load(b[R::mx] + j) - mx, dy = Load(b[R::my] + j) - my;
-    const Lanes reach = Load(b[R::length] + j) + length_i;
-    const auto apart = dx * dx + dy * dy > reach * reach;
-    const Lanes nx = Load(b[R::nx] + j), ny = Load(b[R::ny] + j), c = Load(b[R::c] + j);
-    const Lanes h0 = c - (nx * x0x + ny * x0y), h1 = c - (nx * x1x + ny * x1y);
-    const Lanes y0x = Load(b[R::y0x] + j), y0y = Load(b[R::y0y] + j);
-    const Lanes y1x = Load(b[R::y1x] + j), y1y = Load(b[R::y1y] + j);
-    const Lanes r00 = ((y0x - x0x).square() + (y0y - x0y).square()).max(tiny).sqrt();
-    const Lanes r01 = ((y1x - x0x).square() + (y1y - x0y).square()).max(tiny).sqrt();
-    const Lanes r10 = ((y0x - x1x).square() + (y0y - x1y).square()).max(tiny).sqrt();
-    const Lanes r11 = ((y1x - x1x).square() + (y1y - x1y).square()).max(tiny).sqrt();
-    // 1/r + 1/r' as (r + r')/(r r'): two divisions instead of four.
-    const Lanes term = h0 * (r00 + r01) / (r00 * r01) + h1 * (r10 + r11) / (r10 * r11);
-    sum += apart.select(Load(b[R::quarter] + j) * term, 0.0);
-    if (!apart.all()) {
-      for (std::size_t k = 0; k < kLanes; ++k) {
-        if (!apart[static_cast<Eigen::Index>(k)]) near.push_back(j + k);
+  for (const EdgeCluster& cluster : boundary.clusters) {
+    const double cx = cluster.centre.x() - mx, cy = cluster.centre.y() - my;
+    const double reach = kClusterFar * cluster.radius + length_i;
+    if (clustered && cx * cx + cy * cy > reach * reach) {
+      far += 0.5 * (cluster.potential(Vec2(x0x, x0y)) + cluster.potential(Vec2(x1x, x1y)));
+      continue;
+    }
+    for (std::size_t j = cluster.begin; j < cluster.end; j += kLanes) {
+      const Lanes dx = Load(b[R::mx] + j) - mx, dy = Load(b[R::my] + j) - my;
+      const Lanes reach_j = Load(b[R::length] + j) + length_i;
+      const auto apart = dx * dx + dy * dy > reach_j * reach_j;
+      const Lanes nx = Load(b[R::nx] + j), ny = Load(b[R::ny] + j), c = Load(b[R::c] + j);
+      const Lanes h0 = c - (nx * x0x + ny * x0y), h1 = c - (nx * x1x + ny * x1y);
+      const Lanes y0x = Load(b[R::y0x] + j), y0y = Load(b[R::y0y] + j);
+      const Lanes y1x = Load(b[R::y1x] + j), y1y = Load(b[R::y1y] + j);
+      const Lanes r00 = ((y0x - x0x).square() + (y0y - x0y).square()).max(tiny).sqrt();
+      const Lanes r01 = ((y1x - x0x).square() + (y1y - x0y).square()).max(tiny).sqrt();
+      const Lanes r10 = ((y0x - x1x).square() + (y0y - x1y).square()).max(tiny).sqrt();
+      const Lanes r11 = ((y1x - x1x).square() + (y1y - x1y).square()).max(tiny).sqrt();
+      // 1/r + 1/r' as (r + r')/(r r'): two divisions instead of four.
+      const Lanes term = h0 * (r00 + r01) / (r00 * r01) + h1 * (r10 + r11) / (r10 * r11);
+      sum += apart.select(Load(b[R::quarter] + j) * term, 0.0);
+      if (!apart.all()) {
+        for (std::size_t k = 0; k < kLanes; ++k) {
+          if (!apart[static_cast<Eigen::Index>(k)]) near.push_back(j + k);
+        }
       }
     }
   }
-  return (sum[0] + sum[1]) + (sum[2] + sum[3]);
+  return ((sum[0] + sum[1]) + (sum[2] + sum[3])) + far;
 }
 
 // ∫_0^ℓ dt / sqrt((t − s)^2 + h^2) for h > 0, in a form stable when x is near the edge's line.
@@ -268,19 +286,34 @@ void MassBoundary2::finish() {
     for (std::size_t k = 0; k < values.size(); ++k) rule.columns[k].push_back(values[k]);
     rule.edge.push_back(edge);
   };
-  for (std::size_t i = 0; i < start.size(); ++i) {
-    if (length[i] == 0.0) continue;
-    const Vec2 y0 = start[i] + kRules[1].x[0] * (end[i] - start[i]),
-               y1 = start[i] + kRules[1].x[1] * (end[i] - start[i]);
-    const Vec2 m = 0.5 * (start[i] + end[i]);
-    push({y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(),
-          start[i].dot(normal[i]), 0.25 * length[i], length[i]},
-         static_cast<int>(i));
+  clusters.clear();
+  std::vector<int> edges;
+  for (std::size_t i = 0; i < start.size(); ++i)
+    if (length[i] > 0.0) edges.push_back(static_cast<int>(i));
+  for (const std::vector<int>& group : group_nearby_edges(start, end, edges, kClusterEdges)) {
+    EdgeCluster cluster;
+    cluster.begin = rule.edge.size();
+    Box2 box;
+    for (const int j : group)
+      box.extend(start[static_cast<std::size_t>(j)]).extend(end[static_cast<std::size_t>(j)]);
+    cluster.centre = box.center();
+    for (const int j : group) {
+      const auto i = static_cast<std::size_t>(j);
+      const Vec2 y0 = start[i] + kRules[1].x[0] * (end[i] - start[i]),
+                 y1 = start[i] + kRules[1].x[1] * (end[i] - start[i]);
+      const Vec2 m = 0.5 * (start[i] + end[i]);
+      push({y0.x(), y0.y(), y1.x(), y1.y(), m.x(), m.y(), normal[i].x(), normal[i].y(),
+            start[i].dot(normal[i]), 0.25 * length[i], length[i]},
+           j);
+      cluster.add_edge(start[i], end[i], normal[i]);
+    }
+    // Padding: far away, no normal and no weight, so that its terms are exactly 0 and never near.
+    constexpr double kAway = 1e100;
+    while (rule.edge.size() % kLanes != 0)
+      push({kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0}, -1);
+    cluster.end = rule.edge.size();
+    clusters.push_back(cluster);
   }
-  // Padding: far away, no normal and no weight, so that its terms are exactly 0 and never near.
-  constexpr double kAway = 1e100;
-  while (rule.edge.size() % kLanes != 0)
-    push({kAway, kAway, kAway, kAway, kAway, kAway, 0, 0, 0, 0, 0}, -1);
   // M_kl = ∫ z^k z̄^l dA = 1/(2(l + 1)) ∮ n z^k z̄^{l+1} ds (complex Green's theorem with
   // dz = i n ds on the positively oriented boundary); the edge integrands are polynomials of
   // degree ≤ kMomentOrder + 1, integrated exactly.
@@ -444,8 +477,8 @@ Vec2 force(const MassBoundary2& a, const MassBoundary2& b, const Vec2& offset,
                  mid_i = ai + 0.5 * edge_i;
       thread_local std::vector<std::size_t> near;
       near.clear();
-      integral =
-          apart_sum(b.rule, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(), length_i, near);
+      integral = apart_sum(b, expansions, x0.x(), x0.y(), x1.x(), x1.y(), mid_i.x(), mid_i.y(),
+                           length_i, near);
       for (const std::size_t e : near) {
         using R = MassBoundary2::EdgeRule;
         const double dx = b.rule[R::mx][e] - mid_i.x(), dy = b.rule[R::my][e] - mid_i.y();

@@ -21,6 +21,7 @@
 #include <complex>
 #include <vector>
 
+#include "libshapeproc/geometry/edge_cluster.hpp"
 #include "libshapeproc/geometry/types.hpp"
 
 namespace shapeproc::geometry {
@@ -60,6 +61,9 @@ struct MassBoundary2 {
     std::vector<int> edge;
     const double* operator[](Column k) const { return columns[static_cast<std::size_t>(k)].data(); }
   } rule;
+  // The rule's entries in clusters of nearby edges (each a run of whole groups of 4 entries):
+  // an edge far from a cluster sees the cluster's expansion instead of its edges.
+  std::vector<EdgeCluster> clusters;
 
   // Adds an edge with its outward normal (the side away from the mass), updating area and
   // centroid; call finish() after the last edge.

@@ -98,5 +98,53 @@ TEST(GravitationExpansion, PotentialExpansionAlongEdgesOfLargePolygons) {  // NO
   }
 }
 
+TEST(GravitationExpansion, ClusterPotentialMatchesItsEdgesFarAway) {  // NOLINT
+  // A cluster of 16 edges of a star's boundary, seen from 4 to 20 radii: the expansion against
+  // the edges' own integrals (closed form along each edge, exact up to rounding).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(0, 2 * core::kPi), distance(4.0, 20.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const MassBoundary2 star_edges = star(rng, 16, 1.0, 4);
+    EdgeCluster cluster;
+    Box2 box;
+    for (int j = 0; j < 16; ++j) box.extend(star_edges.start[j]).extend(star_edges.end[j]);
+    cluster.centre = box.center();
+    double total_length = 0.0;
+    for (int j = 0; j < 16; ++j) {
+      cluster.add_edge(star_edges.start[j], star_edges.end[j], star_edges.normal[j]);
+      total_length += star_edges.length[j];
+    }
+    const double phi = angle(rng), ratio = distance(rng);
+    const Vec2 x = cluster.centre + ratio * cluster.radius * Vec2(std::cos(phi), std::sin(phi));
+    double exact = 0.0;  // Σ_j ∫ n_j·(y − x)/|y − x| ds by 2000 midpoints per edge
+    for (int j = 0; j < 16; ++j) {
+      const Vec2 a = star_edges.start[j], b = star_edges.end[j];
+      for (int k = 0; k < 2000; ++k) {
+        const Vec2 y = a + (k + 0.5) / 2000 * (b - a);
+        exact += star_edges.normal[j].dot(y - x) / (y - x).norm() * star_edges.length[j] / 2000;
+      }
+    }
+    // The truncation is of the fourth order in radius / distance.
+    EXPECT_LT(std::abs(cluster.potential(x) - exact), 2.0 * total_length * std::pow(ratio, -4))
+        << trial;
+  }
+}
+
+TEST(GravitationExpansion, ClustersKeepTheForceOfTouchingDetailedShapes) {  // NOLINT
+  // Two 640-edge stars nearly touching: most of each boundary is far from most of the other's
+  // clusters. The force with the clusters' expansions against the edge pairs alone.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> angle(0, 2 * core::kPi), gap(0.02, 0.3);
+  double worst = 0.0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const MassBoundary2 a = star(rng, 40, 1.0, 16), b = star(rng, 40, 1.0, 16);
+    const double phi = angle(rng);
+    const Vec2 offset = (2.0 + gap(rng)) * Vec2(std::cos(phi), std::sin(phi));
+    const Vec2 reference = gravitation_force_edges(a, b, offset);
+    worst = std::max(worst, relative(gravitation_force(a, b, offset), reference));
+  }
+  EXPECT_LT(worst, 2e-4);
+}
+
 }  // namespace
 }  // namespace shapeproc::geometry

@@ -65,11 +65,11 @@ bool GrowthState::collides(int source, const Vec3& p, int skip) const {
     const Vec3 offset = domain_.minimum_image(position(o) - p);
     const double reach = exemplar_.shape_radius[shape] + exemplar_.shape_radius[other];
     if (offset.squaredNorm() >= reach * reach) return;
-    hit =
-        domain_.dimension() == 3
-            ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset) > 0
-            : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
-                                      geometry::Vec2(offset.x(), offset.y())) > 0;
+    hit = domain_.dimension() == 3
+              ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset,
+                                        true) > 0
+              : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
+                                        geometry::Vec2(offset.x(), offset.y()), true) > 0;
   });
   return hit;
 }
