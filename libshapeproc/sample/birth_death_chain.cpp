@@ -52,19 +52,28 @@ ChainGeometry::ChainGeometry(const model::ShapeProcessModel& model,
                              const geometry::Domain& domain) {
   shape_space = model.shape_space();
   shape_space.window = domain.box();
-  measurer = std::make_unique<const geometry::PairMeasurer>(
+  measurer = std::make_shared<const geometry::PairMeasurer>(
       shape_space, model.measurement_options(domain.periodic()));
   guard = std::make_unique<const OverlapGuard>(interaction, shape_space, *measurer);
 }
 
+ChainGeometry::ChainGeometry(const ChainGeometry& same_shapes,
+                             const model::Interaction& interaction)
+    : shape_space(same_shapes.shape_space),
+      measurer(same_shapes.measurer),
+      guard(std::make_unique<const OverlapGuard>(*same_shapes.guard, interaction)) {}
+
 ChainGeometry::~ChainGeometry() = default;
 
 ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                         std::shared_ptr<const ChainGeometry> given)
+                         std::shared_ptr<const ChainGeometry> given, bool other_thresholds)
     : dimension(model.dimension),
       interaction(std::make_unique<const model::Interaction>(model)),
       geometry(std::move(given)) {
-  if (!geometry) geometry = std::make_shared<const ChainGeometry>(model, *interaction, domain);
+  if (!geometry)
+    geometry = std::make_shared<const ChainGeometry>(model, *interaction, domain);
+  else if (other_thresholds)
+    geometry = std::make_shared<const ChainGeometry>(*geometry, *interaction);
   const geometry::Scene& shape_space = geometry->shape_space;
   SHAPEPROC_ASSERT((model.shapes.empty() || shape_space.shapes.size() == model.shapes.size()) &&
                        shape_space.window.min() == domain.box().min() &&

@@ -26,10 +26,13 @@ struct ChainGeometry {
   // `interaction`: the model's (its thresholds: the guard's breakpoints).
   ChainGeometry(const model::ShapeProcessModel& model, const model::Interaction& interaction,
                 const geometry::Domain& domain);
+  // The geometry of `same_shapes` for a model that differs in its thresholds only (a growth
+  // stage's hard cores): the proxies are shared, the guard takes the new breakpoints.
+  ChainGeometry(const ChainGeometry& same_shapes, const model::Interaction& interaction);
   ~ChainGeometry();
 
   geometry::Scene shape_space;  // the model's shapes, the domain's box as window
-  std::unique_ptr<const geometry::PairMeasurer> measurer;
+  std::shared_ptr<const geometry::PairMeasurer> measurer;
   std::unique_ptr<const OverlapGuard> guard;  // the drawn outlines kept apart
 };
 
@@ -37,8 +40,11 @@ struct ChainGeometry {
 // `geometry` when given: built for a model with the same shapes, measurement and thresholds on
 // the same domain), the shapes of each category and their probabilities, log β per category.
 struct ChainTables {
+  // With `other_thresholds`, `geometry` is of a model whose shapes and measurement are the same
+  // but not its thresholds: its proxies are shared and a guard is made for the new ones.
   ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-              std::shared_ptr<const ChainGeometry> geometry = nullptr);
+              std::shared_ptr<const ChainGeometry> geometry = nullptr,
+              bool other_thresholds = false);
   ~ChainTables();
 
   int dimension = 2;

@@ -109,8 +109,8 @@ void ShapeProcessSampler::prepare_growth() {
   growth_region_ = std::make_unique<const ChainRegion>(std::move(local));
   for (int k = 0; k < c.stages && !crystal_; ++k) {
     const double scale = c.start_scale + (1.0 - c.start_scale) * k / c.stages;
-    growth_.push_back(
-        std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale), domain_));
+    growth_.push_back(std::make_unique<const ChainTables>(with_scaled_hard_cores(model_, scale),
+                                                          domain_, tables_->geometry, true));
   }
 }
 

@@ -31,16 +31,29 @@ bool same_outline(const geometry::Proxy3& a, const geometry::Proxy3& b) {
   return true;
 }
 
+std::vector<std::vector<double>> breakpoints_of(const model::Interaction& interaction) {
+  std::vector<std::vector<double>> breakpoints;
+  const int categories = interaction.category_count();
+  for (int a = 0; a < categories; ++a)
+    for (int b = 0; b < categories; ++b)
+      breakpoints.push_back(interaction.interacts(a, b) ? interaction.breakpoints(a, b)
+                                                        : std::vector<double>{});
+  return breakpoints;
+}
+
 }  // namespace
+
+OverlapGuard::OverlapGuard(const OverlapGuard& same_shapes, const model::Interaction& interaction)
+    : breakpoints_(breakpoints_of(interaction)),
+      categories_(interaction.category_count()),
+      outlines_(same_shapes.outlines_),
+      error_(same_shapes.error_) {}
 
 OverlapGuard::OverlapGuard(const model::Interaction& interaction,
                            const geometry::Scene& shape_space,
                            const geometry::PairMeasurer& proxies)
     : categories_(interaction.category_count()) {
-  for (int a = 0; a < categories_; ++a)
-    for (int b = 0; b < categories_; ++b)
-      breakpoints_.push_back(interaction.interacts(a, b) ? interaction.breakpoints(a, b)
-                                                         : std::vector<double>{});
+  breakpoints_ = breakpoints_of(interaction);
   const geometry::MeasurementOptions& options = proxies.options();
   if (options.distance != geometry::DistanceKind::shape ||
       !(options.proxy.tolerance > geometry::kOutlineTolerance) || shape_space.shapes.empty())
@@ -48,7 +61,7 @@ OverlapGuard::OverlapGuard(const model::Interaction& interaction,
   geometry::MeasurementOptions fine = options;
   fine.proxy.tolerance = geometry::kOutlineTolerance;
   fine.direction = geometry::DirectionKind::centroid;  // distances only: no gravitation tables
-  outlines_ = std::make_unique<const geometry::PairMeasurer>(shape_space, fine);
+  outlines_ = std::make_shared<const geometry::PairMeasurer>(shape_space, fine);
   bool finer = false;
   for (std::size_t s = 0; s < shape_space.shapes.size() && !finer; ++s)
     finer = outlines_->dimension() == 2

@@ -27,6 +27,9 @@ class OverlapGuard {
   // flatten, nothing the simplification drops at either tolerance).
   OverlapGuard(const model::Interaction& interaction, const geometry::Scene& shape_space,
                const geometry::PairMeasurer& proxies);
+  // The guard of `same_shapes` (the same shapes and measurement) for other thresholds: its fine
+  // proxies are shared, not built again.
+  OverlapGuard(const OverlapGuard& same_shapes, const model::Interaction& interaction);
   ~OverlapGuard();
 
   bool active() const { return outlines_ != nullptr; }
@@ -42,7 +45,7 @@ class OverlapGuard {
   // where it does not interact.
   std::vector<std::vector<double>> breakpoints_;
   int categories_ = 0;
-  std::unique_ptr<const geometry::PairMeasurer> outlines_;  // null when inactive
+  std::shared_ptr<const geometry::PairMeasurer> outlines_;  // null when inactive
   // Per shape: how far its proxy and its fine proxy may stray from the drawn outline together
   // (the sum of their tolerances times its diagonal, with the curves' flattening and a margin).
   std::vector<double> error_;
