@@ -53,6 +53,29 @@ void BM_Direction2D(benchmark::State& state, bool apart) {
 BENCHMARK_CAPTURE(BM_Direction2D, near, false)->Arg(8)->Arg(50)->Arg(500);
 BENCHMARK_CAPTURE(BM_Direction2D, apart, true)->Arg(8)->Arg(50)->Arg(500);
 
+// Two gears of n corners (radius 1 and 0.9 alternating, like a stamp's perforations: not round, so
+// no circle decides), 0.15 apart: the edge pairs near the contact, the other shape's edge clusters
+// further away.
+Scene two_gears(int n) {
+  std::vector<Vec2> a;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * 3.14159265358979323846 * k / n, radius = k % 2 == 0 ? 1.0 : 0.9;
+    a.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+  }
+  return fixtures::scene_of(
+      {fixtures::planar({fixtures::polygon(a)}), fixtures::planar({fixtures::polygon(a)})},
+      {{0, 0}, {2.15, 0.0}});
+}
+
+void BM_DirectionGears(benchmark::State& state) {
+  const Scene scene = two_gears(static_cast<int>(state.range(0)));
+  const PairMeasurer measurer(scene, exact_proxies());
+  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+}
+BENCHMARK(BM_DirectionGears)->Arg(50)->Arg(500)->Arg(2000);
+
 // UV spheres of radius 1, 0.2 apart: 50 triangles (5 x 6) or 500 (25 x 11).
 Scene two_spheres(int triangles) {
   const TriangleMesh mesh =
