@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/constants.hpp"
 #include "libshapeproc/geometry/overlap_depth.hpp"
+#include "libshapeproc/geometry/path.hpp"
 #include "libshapeproc/geometry/segment_distance.hpp"
 #include "libshapeproc/geometry/triangle_distance.hpp"
 #include "tests/geometry/measurement_fixtures.hpp"
@@ -87,6 +88,29 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
   EXPECT_NEAR(measured({ell, ell}, {{0, 0}, {1.5, 1.5}}), 0.5, 1e-12);
 }
 
+TEST(ShapeDistance, InsideThroughTheSegmentTreeIsTheWindingNumber) {  // NOLINT
+  // 24 random star polygons of 5 to 34 corners, probed on a grid and at their vertices' heights.
+  const auto [shapes, positions] = scatter_polygons(4, 24, 5, 30, 2.0, -6, 6);
+  const Scene scene = scene_of(shapes, positions);
+  MeasurementOptions options;
+  options.proxy.tolerance = 0.0;
+  const PairMeasurer measurer(scene, options);
+  int inside = 0;
+  for (const Proxy2& proxy : measurer.proxies2()) {
+    const auto& ring = proxy.polylines[0].points;
+    std::vector<Vec2> probes;
+    for (int gx = -40; gx <= 40; ++gx)
+      for (int gy = -40; gy <= 40; ++gy) probes.emplace_back(0.1 * gx, 0.1 * gy);
+    for (const Vec2& v : ring) probes.emplace_back(v.x() - 0.05, v.y());  // at a vertex's height
+    for (const Vec2& p : probes) {
+      const bool expected = winding_number(ring, p) != 0;
+      EXPECT_EQ(proxy.inside(p), expected) << p.transpose();
+      inside += expected ? 1 : 0;
+    }
+  }
+  EXPECT_GT(inside, 100);  // the probes do reach inside
+}
+
 TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
   const auto [shapes, positions] = scatter_polygons(9, 24, 5, 30, 2.0, -6, 6);
   const Scene scene = scene_of(shapes, positions);
@@ -112,6 +136,10 @@ TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
       if (brute == 0.0) {  // overlapping (random polygons do not touch exactly)
         EXPECT_LT(d, 0.0) << i << " " << j;
         EXPECT_DOUBLE_EQ(d, -overlap_depth(pa, pb, t)) << i << " " << j;
+        // Asked only whether they overlap: the first vertex inside, positive, at most the depth.
+        const double any = overlap_depth(pa, pb, t, true);
+        EXPECT_GT(any, 0.0) << i << " " << j;
+        EXPECT_LE(any, -d) << i << " " << j;
       } else {
         EXPECT_NEAR(d, brute, 1e-12) << i << " " << j;
       }
