@@ -24,6 +24,13 @@ MeasurementOptions fine() {
   return options;
 }
 
+// Proxies that keep every segment: the proxy is the polygon itself.
+MeasurementOptions exact() {
+  MeasurementOptions options;
+  options.proxy.tolerance = 0.0;
+  return options;
+}
+
 double measured(const std::vector<Shape>& shapes, const std::vector<Vec2>& positions,
                 const MeasurementOptions& options = fine()) {
   const Scene scene = scene_of(shapes, positions);
@@ -91,10 +98,7 @@ TEST(ShapeDistance, FilledRegionsHoldWhatIsInsideThem) {
 TEST(ShapeDistance, InsideThroughTheSegmentTreeIsTheWindingNumber) {  // NOLINT
   // 24 random star polygons of 5 to 34 corners, probed on a grid and at their vertices' heights.
   const auto [shapes, positions] = scatter_polygons(4, 24, 5, 30, 2.0, -6, 6);
-  const Scene scene = scene_of(shapes, positions);
-  MeasurementOptions options;
-  options.proxy.tolerance = 0.0;
-  const PairMeasurer measurer(scene, options);
+  const PairMeasurer measurer(scene_of(shapes, positions), exact());
   int inside = 0;
   for (const Proxy2& proxy : measurer.proxies2()) {
     const auto& ring = proxy.polylines[0].points;
@@ -114,9 +118,7 @@ TEST(ShapeDistance, InsideThroughTheSegmentTreeIsTheWindingNumber) {  // NOLINT
 TEST(ShapeDistance, BvhAgreesWithBruteForceOnRandomShapes) {  // NOLINT
   const auto [shapes, positions] = scatter_polygons(9, 24, 5, 30, 2.0, -6, 6);
   const Scene scene = scene_of(shapes, positions);
-  MeasurementOptions options;
-  options.proxy.tolerance = 0.0;
-  const PairMeasurer measurer(scene, options);
+  const PairMeasurer measurer(scene, exact());
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     for (std::size_t j = 0; j < scene.elements.size(); ++j) {
       if (i == j) continue;
