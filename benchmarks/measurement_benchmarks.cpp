@@ -40,15 +40,20 @@ void BM_Distance2D(benchmark::State& state) {
 }
 BENCHMARK(BM_Distance2D)->Arg(8)->Arg(50)->Arg(500);
 
+// The direction between the scene's two shapes, the second at `offset` from the first.
+void time_direction(benchmark::State& state, const Scene& scene, const Vec3& offset) {
+  const PairMeasurer measurer(scene, exact_proxies());
+  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
+  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+}
+
 // Near: the polygons 0.2 apart. Apart: their centres 5 apart (2.5 times the sum of their radii),
 // the pair's multipole expansion (its table built on the first call).
 void BM_Direction2D(benchmark::State& state, bool apart) {
   const Scene scene = two_polygons(static_cast<int>(state.range(0)));
-  const PairMeasurer measurer(scene, exact_proxies());
-  const Vec3 offset =
-      apart ? Vec3(4.0, 3.0, 0.0) : Vec3(scene.elements[1].position - scene.elements[0].position);
-  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
-  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+  time_direction(
+      state, scene,
+      apart ? Vec3(4.0, 3.0, 0.0) : Vec3(scene.elements[1].position - scene.elements[0].position));
 }
 BENCHMARK_CAPTURE(BM_Direction2D, near, false)->Arg(8)->Arg(50)->Arg(500);
 BENCHMARK_CAPTURE(BM_Direction2D, apart, true)->Arg(8)->Arg(50)->Arg(500);
@@ -69,10 +74,7 @@ Scene two_gears(int n) {
 
 void BM_DirectionGears(benchmark::State& state) {
   const Scene scene = two_gears(static_cast<int>(state.range(0)));
-  const PairMeasurer measurer(scene, exact_proxies());
-  const Vec3 offset = scene.elements[1].position - scene.elements[0].position;
-  for (auto _ : state) benchmark::DoNotOptimize(measurer.direction(0, 1, offset));
-  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+  time_direction(state, scene, scene.elements[1].position - scene.elements[0].position);
 }
 BENCHMARK(BM_DirectionGears)->Arg(50)->Arg(500)->Arg(2000);
 

@@ -52,8 +52,7 @@ OverlapGuard::OverlapGuard(const OverlapGuard& same_shapes, const model::Interac
 OverlapGuard::OverlapGuard(const model::Interaction& interaction,
                            const geometry::Scene& shape_space,
                            const geometry::PairMeasurer& proxies)
-    : categories_(interaction.category_count()) {
-  breakpoints_ = breakpoints_of(interaction);
+    : breakpoints_(breakpoints_of(interaction)), categories_(interaction.category_count()) {
   const geometry::MeasurementOptions& options = proxies.options();
   if (options.distance != geometry::DistanceKind::shape ||
       !(options.proxy.tolerance > geometry::kOutlineTolerance) || shape_space.shapes.empty())
