@@ -164,6 +164,23 @@ double PairMeasurer::outline_bracket(int a, int b, const Vec2& offset, double cu
   return interval(lo) == interval(hi) ? lo : kUndecided;
 }
 
+namespace {
+
+// The prune of a closest-pair search that needs only the interval between `marks` holding the
+// distance: nothing below the mark under the best distance so far can move the result into
+// another interval.
+auto interval_floor(const std::vector<double>& marks) {
+  return [&marks](double best_squared) {
+    const double best = std::sqrt(best_squared);
+    const auto above = std::upper_bound(marks.begin(), marks.end(), best);
+    if (above == marks.begin()) return 0.0;
+    const double low = *(above - 1);
+    return low * low;
+  };
+}
+
+}  // namespace
+
 double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff,
                                     const std::vector<double>* breakpoints) const {
   // With no breakpoint below 0, every overlap's depth lies in one interval: the first vertex found
@@ -202,17 +219,8 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
     } else {
       const std::vector<double>& marks = *breakpoints;
       first_mark = marks.front();
-      // Prune below the breakpoint under the best distance so far: nothing there can move the
-      // result into another interval.
-      auto floor = [&](double best_squared) {
-        const double best = std::sqrt(best_squared);
-        const auto above = std::upper_bound(marks.begin(), marks.end(), best);
-        if (above == marks.begin()) return 0.0;
-        const double low = *(above - 1);
-        return low * low;
-      };
-      outline = std::sqrt(closest_pair_squared_distance<2>(pa.segment_tree, pb.segment_tree, t,
-                                                           cutoff * cutoff, segments, floor));
+      outline = std::sqrt(closest_pair_squared_distance<2>(
+          pa.segment_tree, pb.segment_tree, t, cutoff * cutoff, segments, interval_floor(marks)));
       // The search stops once the interval is known; with a breakpoint at or below 0, outlines
       // that meet (0 or below) are in another interval than a small gap: look for contact alone.
       if (first_mark <= 0.0 && contact > 0.0 && outline > contact && outline < kNoCutoff) {
@@ -248,12 +256,36 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
   auto corner = [](const Proxy3& p, int t, int k) -> const Vec3& {
     return p.point ? p.vertices[0] : p.vertices[p.triangles[t][k]];
   };
-  const double surfaces = closest_pair_distance<3>(
-      pa.triangle_tree, pb.triangle_tree, offset, cutoff, [&](int i, int j) {
-        return triangle_triangle_distance(corner(pa, i, 0), corner(pa, i, 1), corner(pa, i, 2),
-                                          corner(pb, j, 0) + offset, corner(pb, j, 1) + offset,
-                                          corner(pb, j, 2) + offset);
-      });
+  auto triangles = [&](int i, int j, double bound) {
+    const Vec3 &a0 = corner(pa, i, 0), &a1 = corner(pa, i, 1), &a2 = corner(pa, i, 2);
+    const Vec3 b0 = corner(pb, j, 0) + offset, b1 = corner(pb, j, 1) + offset,
+               b2 = corner(pb, j, 2) + offset;
+    // The gap between the triangles' boxes first: most pairs of a leaf are not nearer.
+    const Vec3 gap = (b0.cwiseMin(b1).cwiseMin(b2) - a0.cwiseMax(a1).cwiseMax(a2))
+                         .cwiseMax(a0.cwiseMin(a1).cwiseMin(a2) - b0.cwiseMax(b1).cwiseMax(b2))
+                         .cwiseMax(0.0);
+    if (gap.squaredNorm() >= bound) return kNoCutoff;
+    const double d = triangle_triangle_distance(a0, a1, a2, b0, b1, b2);
+    return d * d;
+  };
+  double surfaces;  // distance between the surfaces (or a value of its interval)
+  if (breakpoints == nullptr || breakpoints->empty()) {
+    surfaces = std::sqrt(closest_pair_squared_distance<3>(pa.triangle_tree, pb.triangle_tree,
+                                                          offset, cutoff * cutoff, triangles));
+  } else {
+    surfaces = std::sqrt(closest_pair_squared_distance<3>(pa.triangle_tree, pb.triangle_tree,
+                                                          offset, cutoff * cutoff, triangles,
+                                                          interval_floor(*breakpoints)));
+    // With a breakpoint at or below 0, surfaces that meet are in another interval than a small
+    // gap: look for contact alone.
+    const double contact =
+        1e-12 * (radii_[static_cast<std::size_t>(a)] + radii_[static_cast<std::size_t>(b)]);
+    if (breakpoints->front() <= 0.0 && surfaces > 0.0 && surfaces < cutoff) {
+      if (closest_pair_squared_distance<3>(pa.triangle_tree, pb.triangle_tree, offset,
+                                           contact * contact, triangles) <= 0.0)
+        surfaces = 0.0;
+    }
+  }
   return surfaces <= 0.0 ? -overlap_depth(pa, pb, offset, any_depth) : surfaces;
 }
 

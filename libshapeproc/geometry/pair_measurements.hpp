@@ -67,7 +67,7 @@ class PairMeasurer {
   // With `breakpoints` (ascending distances, the cut-off among them), callers say that only the
   // interval [b_k, b_k+1) holding d matters (a model's thresholds): the result is then a value of
   // that interval, not necessarily d itself, and the closest-pair search stops as soon as the
-  // interval is decided. Shape distances in 2D use them; other kinds return d.
+  // interval is decided. Shape distances (2D and 3D) use them; other kinds return d.
   double distance(int a, int b, const Vec3& offset, double cutoff = kNoCutoff,
                   const std::vector<double>* breakpoints = nullptr) const;
   // Unit direction of the relative orientation, exactly antisymmetric:

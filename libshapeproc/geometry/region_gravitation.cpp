@@ -572,8 +572,11 @@ MassSurface3 MassSurface3::from_closed_mesh(const std::vector<Vec3>& vertices,
     s.centroid = first / s.volume;
     s.moments = second - s.volume * s.centroid * s.centroid.transpose();
   }
-  for (const auto& t : s.triangles)
+  for (const auto& t : s.triangles) {
     for (const Vec3& v : t) s.radius = std::max(s.radius, (v - s.centroid).norm());
+    s.centre.push_back((t[0] + t[1] + t[2]) / 3.0);
+    s.size.push_back(std::max({(t[0] - t[1]).norm(), (t[1] - t[2]).norm(), (t[2] - t[0]).norm()}));
+  }
   return s;
 }
 
@@ -583,34 +586,31 @@ Vec3 gravitation_force(const MassSurface3& a, const MassSurface3& b, const Vec3&
   if (distance > 5.0 * (a.radius + b.radius) && distance > 0) {
     return far_field_force<3>(a.volume, a.moments, b.volume, b.moments, between);
   }
-  std::vector<Vec3> b_centre(b.triangles.size());
-  std::vector<double> b_size(b.triangles.size());
-  for (std::size_t j = 0; j < b.triangles.size(); ++j) {
-    const auto& t = b.triangles[j];
-    b_centre[j] = (t[0] + t[1] + t[2]) / 3.0 + offset;
-    b_size[j] = std::max({(t[0] - t[1]).norm(), (t[1] - t[2]).norm(), (t[2] - t[0]).norm()});
-  }
   Vec3 total = Vec3::Zero();
   std::array<Vec3, 12> pa, pb;
   for (std::size_t i = 0; i < a.triangles.size(); ++i) {
-    const auto& ti = a.triangles[i];
-    const Vec3 ci = (ti[0] + ti[1] + ti[2]) / 3.0;
-    const double size_i =
-        std::max({(ti[0] - ti[1]).norm(), (ti[1] - ti[2]).norm(), (ti[2] - ti[0]).norm()});
+    const Vec3 ci = a.centre[i] - offset;  // in b's frame: b's triangles stay where they are
+    const double size_i = a.size[i];
     double integral = 0.0;
     for (std::size_t j = 0; j < b.triangles.size(); ++j) {
-      const double ratio = (b_centre[j] - ci).norm() / (size_i + b_size[j]);
-      const int level = ratio > 2.0 ? 0 : ratio > 0.5 ? 1 : 2;
+      const Vec3 r = b.centre[j] - ci;
+      const double length = r.norm();
+      const double reach = size_i + b.size[j];
+      if (length > 2.0 * reach) {  // far apart for their sizes: one point each, the centres
+        integral += r.dot(b.normal[j]) / length * b.area[j];
+        continue;
+      }
+      const int level = length > 0.5 * reach ? 1 : 2;
+      std::array<Vec3, 3> ti = a.triangles[i];
+      for (Vec3& v : ti) v -= offset;
       const int na = triangle_points(ti, level, pa);
-      std::array<Vec3, 3> tj = b.triangles[j];
-      for (Vec3& v : tj) v += offset;
-      const int nb = triangle_points(tj, level, pb);
+      const int nb = triangle_points(b.triangles[j], level, pb);
       double sum = 0.0;
       for (int p = 0; p < na; ++p) {
         for (int q = 0; q < nb; ++q) {
-          const Vec3 r = pb[q] - pa[p];
-          const double length = r.norm();
-          if (length > 0) sum += r.dot(b.normal[j]) / length;
+          const Vec3 d = pb[q] - pa[p];
+          const double l = d.norm();
+          if (l > 0) sum += d.dot(b.normal[j]) / l;
         }
       }
       integral += sum * b.area[j] / (na * nb);

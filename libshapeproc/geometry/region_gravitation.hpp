@@ -106,6 +106,8 @@ struct MassSurface3 {
   std::vector<std::array<Vec3, 3>> triangles;  // oriented outwards
   std::vector<Vec3> normal;                    // unit outward normals
   std::vector<double> area;
+  std::vector<Vec3> centre;  // of each triangle
+  std::vector<double> size;  // each triangle's longest edge
   double volume = 0.0;
   Vec3 centroid = Vec3::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // ∫ (x − c)(x − c)^T dV
