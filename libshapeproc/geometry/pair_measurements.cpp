@@ -280,7 +280,7 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
     // gap: look for contact alone.
     const double contact =
         1e-12 * (radii_[static_cast<std::size_t>(a)] + radii_[static_cast<std::size_t>(b)]);
-    if (breakpoints->front() <= 0.0 && surfaces > 0.0 && surfaces < cutoff) {
+    if (breakpoints->front() <= 0.0 && contact > 0.0 && surfaces > 0.0 && surfaces < cutoff) {
       if (closest_pair_squared_distance<3>(pa.triangle_tree, pb.triangle_tree, offset,
                                            contact * contact, triangles) <= 0.0)
         surfaces = 0.0;
