@@ -179,6 +179,21 @@ auto interval_floor(const std::vector<double>& marks) {
   };
 }
 
+// A lower bound of the squared distance between triangles (a0, a1, a2) and (b0, b1, b2): the
+// squared distance from the plane of the first to the nearest corner of the second when all three
+// lie strictly on one side of it, else 0 (also for a degenerate first triangle).
+double plane_gap_squared(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
+                         const Vec3& b1, const Vec3& b2) {
+  const Vec3 normal = (a1 - a0).cross(a2 - a0);
+  const double area2 = normal.squaredNorm();
+  if (!(area2 > 0.0)) return 0.0;
+  const double h0 = normal.dot(b0 - a0), h1 = normal.dot(b1 - a0), h2 = normal.dot(b2 - a0);
+  const double nearest = h0 > 0.0 && h1 > 0.0 && h2 > 0.0   ? std::min({h0, h1, h2})
+                         : h0 < 0.0 && h1 < 0.0 && h2 < 0.0 ? -std::max({h0, h1, h2})
+                                                            : 0.0;
+  return nearest * nearest / area2;
+}
+
 }  // namespace
 
 double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cutoff,
@@ -265,6 +280,10 @@ double PairMeasurer::shape_distance(int a, int b, const Vec3& offset, double cut
                          .cwiseMax(a0.cwiseMin(a1).cwiseMin(a2) - b0.cwiseMax(b1).cwiseMax(b2))
                          .cwiseMax(0.0);
     if (gap.squaredNorm() >= bound) return kNoCutoff;
+    // Then the plane of either triangle, where the other lies wholly on one side of it.
+    if (plane_gap_squared(a0, a1, a2, b0, b1, b2) >= bound ||
+        plane_gap_squared(b0, b1, b2, a0, a1, a2) >= bound)
+      return kNoCutoff;
     const double d = triangle_triangle_distance(a0, a1, a2, b0, b1, b2);
     return d * d;
   };

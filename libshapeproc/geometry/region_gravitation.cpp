@@ -576,6 +576,11 @@ MassSurface3 MassSurface3::from_closed_mesh(const std::vector<Vec3>& vertices,
     for (const Vec3& v : t) s.radius = std::max(s.radius, (v - s.centroid).norm());
     s.centre.push_back((t[0] + t[1] + t[2]) / 3.0);
     s.size.push_back(std::max({(t[0] - t[1]).norm(), (t[1] - t[2]).norm(), (t[2] - t[0]).norm()}));
+    std::array<Vec3, 12> points;
+    triangle_points(t, 1, points);
+    s.points3.push_back({points[0], points[1], points[2]});
+    triangle_points(t, 2, points);
+    s.points12.push_back(points);
   }
   return s;
 }
@@ -587,7 +592,6 @@ Vec3 gravitation_force(const MassSurface3& a, const MassSurface3& b, const Vec3&
     return far_field_force<3>(a.volume, a.moments, b.volume, b.moments, between);
   }
   Vec3 total = Vec3::Zero();
-  std::array<Vec3, 12> pa, pb;
   for (std::size_t i = 0; i < a.triangles.size(); ++i) {
     const Vec3 ci = a.centre[i] - offset;  // in b's frame: b's triangles stay where they are
     const double size_i = a.size[i];
@@ -600,20 +604,23 @@ Vec3 gravitation_force(const MassSurface3& a, const MassSurface3& b, const Vec3&
         integral += r.dot(b.normal[j]) / length * b.area[j];
         continue;
       }
-      const int level = length > 0.5 * reach ? 1 : 2;
-      std::array<Vec3, 3> ti = a.triangles[i];
-      for (Vec3& v : ti) v -= offset;
-      const int na = triangle_points(ti, level, pa);
-      const int nb = triangle_points(b.triangles[j], level, pb);
-      double sum = 0.0;
-      for (int p = 0; p < na; ++p) {
-        for (int q = 0; q < nb; ++q) {
-          const Vec3 d = pb[q] - pa[p];
-          const double l = d.norm();
-          if (l > 0) sum += d.dot(b.normal[j]) / l;
+      // (y − x)·n_B is y·n_B − x·n_B: the second term once per point of A.
+      const Vec3& n = b.normal[j];
+      const auto mean = [&](const auto& pa, const auto& pb) {
+        double sum = 0.0;
+        for (const Vec3& p : pa) {
+          const Vec3 x = p - offset;
+          const double xn = x.dot(n);
+          for (const Vec3& y : pb) {
+            const double l = (y - x).norm();
+            if (l > 0) sum += (y.dot(n) - xn) / l;
+          }
         }
-      }
-      integral += sum * b.area[j] / (na * nb);
+        return sum / static_cast<double>(pa.size() * pb.size());
+      };
+      integral += (length > 0.5 * reach ? mean(a.points3[i], b.points3[j])
+                                        : mean(a.points12[i], b.points12[j])) *
+                  b.area[j];
     }
     total += (0.5 * integral * a.area[i]) * a.normal[i];
   }

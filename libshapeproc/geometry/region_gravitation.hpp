@@ -108,6 +108,10 @@ struct MassSurface3 {
   std::vector<double> area;
   std::vector<Vec3> centre;  // of each triangle
   std::vector<double> size;  // each triangle's longest edge
+  // Each triangle's quadrature points for near pairs: the degree-2 rule's 3 and the 12 of that
+  // rule on its four midpoint sub-triangles.
+  std::vector<std::array<Vec3, 3>> points3;
+  std::vector<std::array<Vec3, 12>> points12;
   double volume = 0.0;
   Vec3 centroid = Vec3::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // ∫ (x − c)(x − c)^T dV
