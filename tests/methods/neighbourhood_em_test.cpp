@@ -38,6 +38,19 @@ TEST(NeighbourhoodEm, ASquareLatticeGivesALattice) {
   EXPECT_EQ(off, 0) << "of " << result.scene.elements.size() << " elements";
 }
 
+// crescents-grid (5 x 5 jittered crescents, 250 px, open) at 500 x 500: its 10 x 10 lattice
+// whole, where its seams used to crowd a row and drop 8 to 13 elements or hold too many.
+TEST(NeighbourhoodEm, CrescentsGridKeepsItsLatticeAcrossSeams) {  // NOLINT
+  const geometry::Scene exemplar =
+      io::read_scene(testing::data_path("svg/crescents-grid.svg"), io::ReaderOptions{});
+  const Domain domain = Domain::from_sizes({500, 500}, Boundary::open);
+  const NeighbourhoodEm em(exemplar, Boundary::open, domain, EmOptions{});
+  for (const std::uint64_t seed : {1u, 3u, 5u}) {
+    const synthesis::SynthesisResult result = run(em, seed);
+    EXPECT_EQ(result.scene.elements.size(), 100u) << "seed " << seed;
+  }
+}
+
 TEST(NeighbourhoodEm, EnergyNeverIncreases) {
   const geometry::Scene exemplar =
       io::read_scene(testing::data_path("svg/dots-random.svg"), io::ReaderOptions{});

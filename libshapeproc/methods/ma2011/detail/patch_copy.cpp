@@ -47,6 +47,69 @@ Placement patch_at(const EmExemplar& exemplar, const geometry::Domain& domain, c
   return out;
 }
 
+// Whether exemplar sample `sample` could have a neighbour at `offset` (exemplar frame): always on
+// a torus; in an open exemplar, only where the offset stays inside its window. Eq. 1 between an
+// output neighbourhood and an exemplar one truncated by the window's edge judges only what the
+// exemplar saw.
+bool visible(const EmExemplar& exemplar, std::size_t sample, const Vec3& offset) {
+  if (exemplar.boundary == geometry::Boundary::torus) return true;
+  const Vec3 p = exemplar.samples.positions[sample] + offset;
+  const geometry::Box3& window = exemplar.scene.window;
+  for (int a = 0; a < exemplar.scene.dimension; ++a)
+    if (p[a] < window.min()[a] || p[a] > window.max()[a]) return false;
+  return true;
+}
+
+// Offsets at which the exemplar shows a neighbour sample of another element, by the neighbour's
+// key, pooled over all its samples' neighbourhoods (radius r).
+using PooledOffsets = std::vector<std::vector<Vec3>>;
+
+PooledOffsets pooled_sample_offsets(const EmExemplar& exemplar) {
+  PooledOffsets out;
+  const std::vector<int>& element = exemplar.samples.element;
+  for (std::size_t sample = 0; sample < exemplar.near.size(); ++sample) {
+    for (const geometry::Neighbour& n : exemplar.near[sample]) {
+      // Not the sample's own element: its other samples are no neighbour an output sample has.
+      if (n.key < 0 || element[static_cast<std::size_t>(n.element)] == element[sample]) continue;
+      const auto key = static_cast<std::size_t>(n.key);
+      if (out.size() <= key) out.resize(key + 1);
+      out[key].push_back(n.offset);
+    }
+  }
+  return out;
+}
+
+// Eq. 1's cost for an output neighbour of `key` at `offset` that the partner's own neighbourhood
+// cannot show: its squared distance to the nearest pooled offset of that key, at most r².
+double pooled_cost(const PooledOffsets& pooled, int key, const Vec3& offset, double r2) {
+  double best = r2;
+  if (key >= 0 && static_cast<std::size_t>(key) < pooled.size())
+    for (const Vec3& v : pooled[static_cast<std::size_t>(key)])
+      best = std::min(best, (v - offset).squaredNorm());
+  return best;
+}
+
+// The placement moved by `offset` (wrapped), without the elements that leave the domain.
+Placement translated(Placement patch, const geometry::Domain& domain, const Vec3& offset) {
+  for (auto& [element, position] : patch) position = domain.wrap(position + offset);
+  patch.erase(
+      std::remove_if(patch.begin(), patch.end(),
+                     [&](const std::pair<int, Vec3>& e) { return inside(domain, e.second) < 0.5; }),
+      patch.end());
+  return patch;
+}
+
+// Every offset from an exemplar element to a neighbour within 1.5 mean nearest distances: what
+// the exemplar's elements see around them, pooled over the whole exemplar.
+std::vector<Vec3> pooled_offsets(const EmExemplar& exemplar) {
+  const geometry::Domain domain(exemplar.scene.window, exemplar.scene.dimension, exemplar.boundary);
+  const geometry::NeighbourhoodIndex index(exemplar.scene.elements, domain, 1.5 * exemplar.spacing);
+  std::vector<Vec3> out;
+  for (std::size_t e = 0; e < exemplar.scene.elements.size(); ++e)
+    for (const geometry::Neighbour& n : index.of(e)) out.push_back(n.offset);
+  return out;
+}
+
 // How badly a patch fits the samples already placed: eq. 1 over its samples' neighbourhoods
 // made of placed samples only (within a patch the exemplar's own arrangement holds), plus r² for
 // every exemplar neighbour that would fall where elements are already placed but finds no
@@ -55,6 +118,9 @@ Placement patch_at(const EmExemplar& exemplar, const geometry::Domain& domain, c
 // the patch's samples, plus r² for every neighbour their sources have inside the cell (`in_cell`)
 // that the patch leaves without a partner, so that sparse or empty patches do not win; and the
 // translation of the patch that best closes the seam (the mean move its paired samples ask for).
+// With `pooled` (an open exemplar that leaves the patch's origin less than a mean spacing of room
+// along every axis), a neighbour the partner's window cannot show (`visible`) is judged by the
+// pooled offsets (`pooled_cost`) instead of eq. 1's pairing with a neighbourhood cut short there.
 struct Seam {
   double cost = 0.0;
   Vec3 shift = Vec3::Zero();
@@ -64,7 +130,7 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
                const InitialOutput& placed, const geometry::NeighbourGrid& grid,
                const Placement& patch, double radians, double alpha,
                const std::function<bool(const Vec3&)>& filled, const std::vector<int>& bordering,
-               const std::function<bool(const Vec3&)>& in_cell) {
+               const std::function<bool(const Vec3&)>& in_cell, const PooledOffsets* pooled) {
   const ElementSamples& samples = placed.output.samples;
   const double r2 = exemplar.radius * exemplar.radius;
   Seam seam;
@@ -86,9 +152,12 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
       grid.for_each_candidate(at, [&](int id) {
         const auto s = static_cast<std::size_t>(id);
         const Vec3 t = domain.minimum_image(samples.positions[s] - at);
-        if (t.norm() < exemplar.radius)
-          hood.push_back(
-              {turn_about_z(t, -radians), samples.key[s], id, placed.output.attribute[s]});
+        const Vec3 seen = turn_about_z(t, -radians);
+        if (t.norm() >= exemplar.radius) return;
+        if (!pooled || visible(exemplar, source, seen))
+          hood.push_back({seen, samples.key[s], id, placed.output.attribute[s]});
+        else
+          seam.cost += pooled_cost(*pooled, samples.key[s], seen, r2);
       });
       const geometry::PairingNeighbourhood& partner = exemplar.wide[source];
       seam.cost += geometry::neighbourhood_distance(hood, partner, exemplar.radius, alpha);
@@ -112,16 +181,20 @@ Seam seam_cost(const EmExemplar& exemplar, const geometry::Domain& domain,
     const auto s = static_cast<std::size_t>(id);
     const Vec3 at = samples.positions[s];
     hood.clear();
+    const auto from = static_cast<std::size_t>(placed.copied_from[s]);
     for (std::size_t i = 0; i < patch_samples.size(); ++i) {
       const Vec3 t = domain.minimum_image(patch_samples[i].first - at);
       const std::size_t e = patch_samples[i].second;
-      if (t.norm() < exemplar.radius)
-        hood.push_back({turn_about_z(t, -radians), exemplar.samples.key[e], static_cast<int>(i),
-                        exemplar.sample_attribute[e]});
+      const Vec3 seen = turn_about_z(t, -radians);
+      if (t.norm() >= exemplar.radius) continue;
+      if (!pooled || visible(exemplar, from, seen))
+        hood.push_back(
+            {seen, exemplar.samples.key[e], static_cast<int>(i), exemplar.sample_attribute[e]});
+      else
+        seam.cost += pooled_cost(*pooled, exemplar.samples.key[e], seen, r2);
     }
     expected.clear();
-    for (const geometry::Neighbour& n :
-         exemplar.near[static_cast<std::size_t>(placed.copied_from[s])])
+    for (const geometry::Neighbour& n : exemplar.near[from])
       if (in_cell(domain.wrap(at + turn_about_z(n.offset, radians)))) expected.push_back(n);
     const auto matched = geometry::match_neighbourhoods(hood, expected, exemplar.radius);
     for (const auto& [a, b] : matched)
@@ -152,11 +225,18 @@ class PatchCopy {
         grid_(domain.box(), dim_, exemplar.radius, domain.periodic()),
         gap_(0.5 * smallest_gap(exemplar)),
         elements_(domain.box(), dim_, exemplar.radius, domain.periodic()) {
+    double room = 0.0;  // the most an open exemplar's patch origin can move along an axis
     for (int a = 0; a < dim_; ++a) {
       const double side =
           wraps_ ? 2.0 * exemplar.radius : std::min(2.0 * exemplar.radius, period_[a]);
       cell_[a] = side;
       counts_[a] = std::max(1, static_cast<int>(std::ceil(domain.sizes()[a] / side - 1e-9)));
+      room = std::max(room, period_[a] - side);
+    }
+    cramped_ = !wraps_ && room < exemplar.spacing;
+    if (cramped_) {
+      pooled_ = pooled_sample_offsets(exemplar);
+      offsets_ = pooled_offsets(exemplar);
     }
   }
 
@@ -175,6 +255,18 @@ class PatchCopy {
   std::vector<int> bordering(const Vec3& lo, const Vec3& extent) const;
   // Places the chosen patch.
   void place(const Placement& patch, double radians);
+  // The move that puts the patch's elements near placed ones where the exemplar's pooled element
+  // offsets say they belong: the mean, over the patch elements within 1.5 mean nearest distances
+  // of a placed element, of the gap between their offset from the nearest placed element and the
+  // pooled offset nearest to it (zero when none is near).
+  Vec3 seam_step(const Placement& patch, double radians) const;
+  // The seam cost of a placement in this cell (seam_cost).
+  Seam seam_of(const Placement& patch, double radians,
+               const std::function<bool(const Vec3&)>& filled, const std::vector<int>& near,
+               const std::function<bool(const Vec3&)>& in_cell) const {
+    return seam_cost(exemplar_, domain_, out_, grid_, patch, radians, alpha_, filled, near, in_cell,
+                     cramped_ ? &pooled_ : nullptr);
+  }
 
   const EmExemplar& exemplar_;
   const geometry::Domain& domain_;
@@ -191,6 +283,13 @@ class PatchCopy {
   geometry::NeighbourGrid elements_;  // the elements placed
   std::vector<Vec3> placed_;
   std::vector<std::pair<Eigen::Vector3i, Vec3>> shifts_;
+  // An open exemplar that leaves the patch's origin less than a mean spacing of room along every
+  // axis: every seam then joins the exemplar's own edges, which no exemplar neighbourhood
+  // crosses, and no choice of origin can bring a seam into phase. Its seams are judged with the
+  // pooled offsets, of samples (seam_cost) and of elements (seam_step).
+  bool cramped_ = false;
+  PooledOffsets pooled_;
+  std::vector<Vec3> offsets_;
 };
 
 Placement PatchCopy::uncrowded(Placement patch) const {
@@ -232,6 +331,31 @@ std::vector<int> PatchCopy::bordering(const Vec3& lo, const Vec3& extent) const 
     if (near_cell) out.push_back(static_cast<int>(s));
   }
   return out;
+}
+
+Vec3 PatchCopy::seam_step(const Placement& patch, double radians) const {
+  Vec3 sum = Vec3::Zero();
+  int count = 0;
+  const double near = 1.5 * exemplar_.spacing;
+  for (const auto& [element, position] : patch) {
+    Vec3 gap = Vec3::Zero();
+    double nearest = near;
+    elements_.for_each_candidate(position, [&](int id) {
+      const Vec3 d = domain_.minimum_image(position - placed_[static_cast<std::size_t>(id)]);
+      if (d.norm() < nearest) {
+        nearest = d.norm();
+        gap = d;
+      }
+    });
+    if (nearest >= near || offsets_.empty()) continue;
+    const Vec3 seen = turn_about_z(gap, -radians);  // in the exemplar's frame
+    const Vec3* best = &offsets_.front();
+    for (const Vec3& v : offsets_)
+      if ((v - seen).squaredNorm() < (*best - seen).squaredNorm()) best = &v;
+    sum += turn_about_z(*best - seen, radians);
+    ++count;
+  }
+  return count > 0 ? Vec3(sum / count) : Vec3::Zero();
 }
 
 void PatchCopy::place(const Placement& patch, double radians) {
@@ -288,15 +412,15 @@ void PatchCopy::fill(const Eigen::Vector3i& at, const OrientationField& orientat
     for (int a = 0; a < dim_; ++a)
       origin[a] = wraps_ ? window_min_[a] + random.uniform() * period_[a]
                          : window_min_[a] + random.uniform() * std::max(0.0, period_[a] - cell_[a]);
-    Placement patch = uncrowded(patch_at(exemplar_, domain_, origin, lo, extent, radians));
+    const Placement drawn = patch_at(exemplar_, domain_, origin, lo, extent, radians);
+    Placement patch = uncrowded(drawn);
     if (first_cell) {
       best = std::move(patch);
       best_shift = lo - origin;
       break;
     }
     // The patch as drawn, and moved to close its seam.
-    const Seam seam =
-        seam_cost(exemplar_, domain_, out_, grid_, patch, radians, alpha_, filled, near, in_cell);
+    const Seam seam = seam_of(patch, radians, filled, near, in_cell);
     // The same cell filled from the exemplar patch moved the other way, so that its elements
     // move by the shift and the cell stays covered.
     Vec3 moved_origin = origin - turn_about_z(seam.shift, -radians);
@@ -304,9 +428,16 @@ void PatchCopy::fill(const Eigen::Vector3i& at, const OrientationField& orientat
       moved_origin[a] = std::clamp(moved_origin[a], window_min_[a],
                                    window_min_[a] + std::max(0.0, period_[a] - cell_[a]));
     Placement moved = uncrowded(patch_at(exemplar_, domain_, moved_origin, lo, extent, radians));
-    const double moved_cost =
-        seam_cost(exemplar_, domain_, out_, grid_, moved, radians, alpha_, filled, near, in_cell)
-            .cost;
+    const double moved_cost = seam_of(moved, radians, filled, near, in_cell).cost;
+    // A cramped exemplar's patch, as drawn, moved in the output by what the pooled offsets ask
+    // (its origin has no room to move that far).
+    const Vec3 step = cramped_ ? seam_step(drawn, radians) : Vec3::Zero();
+    Placement stepped;
+    double stepped_cost = std::numeric_limits<double>::infinity();
+    if (step.squaredNorm() > 0.0) {
+      stepped = uncrowded(translated(drawn, domain_, step));
+      stepped_cost = seam_of(stepped, radians, filled, near, in_cell).cost;
+    }
     if (seam.cost < best_cost && !continues_neighbour(at, lo - origin)) {
       best_cost = seam.cost;
       best = std::move(patch);
@@ -316,6 +447,11 @@ void PatchCopy::fill(const Eigen::Vector3i& at, const OrientationField& orientat
       best_cost = moved_cost;
       best = std::move(moved);
       best_shift = lo - moved_origin;
+    }
+    if (stepped_cost < best_cost && !continues_neighbour(at, lo - origin + step)) {
+      best_cost = stepped_cost;
+      best = std::move(stepped);
+      best_shift = lo - origin + step;
     }
   }
   shifts_.emplace_back(at, best_shift);
