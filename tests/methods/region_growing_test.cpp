@@ -55,7 +55,9 @@ TEST(RegionGrowing, ALatticeGrowsIntoALattice) {
 TEST(RegionGrowing, FillsAnOpenDomainWithoutOverlapsAndRepeats) {
   const geometry::Scene exemplar = testing::rectangle_scatter(40, 100.0, 4.0, 8.0, 7);
   const Domain domain = Domain::from_sizes({220, 160}, Boundary::open);
-  const RegionGrowing growth(exemplar, Boundary::open, domain, GrowthOptions{});
+  GrowthOptions circles;  // the paper's overlap test
+  circles.exact_overlap = false;
+  const RegionGrowing growth(exemplar, Boundary::open, domain, circles);
   const auto a = run(growth, 5), b = run(growth, 5), c = run(growth, 6);
   // Grown to the domain's edges: at least the exemplar's density over most of it.
   EXPECT_GT(a.scene.elements.size(), 0.8 * 40 * (220.0 * 160.0) / (100.0 * 100.0));
@@ -103,9 +105,11 @@ TEST(RegionGrowing, TheCalibrationKeepsASparseExemplarsDensity) {
   const Domain domain = Domain::from_sizes({800, 800}, Boundary::torus);
   const double expected = 30.0 * 16.0;
   GrowthOptions paper;
+  paper.exact_overlap = false;  // the paper's bounding circles, in both
+  GrowthOptions circles = paper;
   paper.calibrate_density = false;
   const auto as_paper = run(RegionGrowing(exemplar, Boundary::open, domain, paper), 2);
-  const auto calibrated = run(RegionGrowing(exemplar, Boundary::open, domain, GrowthOptions{}), 2);
+  const auto calibrated = run(RegionGrowing(exemplar, Boundary::open, domain, circles), 2);
   EXPECT_GT(static_cast<double>(as_paper.scene.elements.size()), 1.6 * expected);
   EXPECT_NEAR(static_cast<double>(calibrated.scene.elements.size()), expected,
               4.0 * std::sqrt(expected));
@@ -210,12 +214,50 @@ TEST(RegionGrowing, RefusesBadOptions) {
 namespace shapeproc::methods {
 namespace {
 
+// The overlap test chosen for the exemplar: on dots-random (irregular) the shapes, so that its
+// close pairs grow too; on a lattice the circles, which hold its spacing. The paper's circles of
+// half each nearest distance forbid close pairs: measured by the share of output elements whose
+// nearest neighbour is nearer than the exemplar's first quartile of nearest distances (a quarter
+// in the exemplar, with a binomial standard error of about 0.04 over the output's 120 elements).
+TEST(RegionGrowing, OverlapTestFollowsTheExemplar) {  // NOLINT
+  const geometry::Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
+  std::vector<double> own = nearest_distances(dots, Domain(dots.window, 2, Boundary::open));
+  std::sort(own.begin(), own.end());
+  const double quartile = own[own.size() / 4];
+  const Domain domain = Domain::from_sizes({400, 400}, Boundary::torus);
+  const auto close_share = [&](const geometry::Scene& scene) {
+    const std::vector<double> d = nearest_distances(scene, domain);
+    return static_cast<double>(
+               std::count_if(d.begin(), d.end(), [&](double x) { return x < quartile; })) /
+           static_cast<double>(d.size());
+  };
+  const auto overlap = [](const synthesis::SynthesisResult& r) {
+    for (const auto& [key, value] : r.record.options)
+      if (key == "growth.overlap") return value;
+    return std::string();
+  };
+  GrowthOptions circles;
+  circles.exact_overlap = false;
+  const synthesis::SynthesisResult a =
+      run(RegionGrowing(dots, Boundary::open, domain, GrowthOptions{}), 1);
+  const synthesis::SynthesisResult c = run(RegionGrowing(dots, Boundary::open, domain, circles), 1);
+  EXPECT_EQ(overlap(a), "shapes");
+  EXPECT_EQ(overlap(c), "circles");
+  EXPECT_NEAR(close_share(a.scene), 0.25, 0.1);
+  EXPECT_LT(close_share(c.scene), 0.15);
+  const geometry::Scene lattice = testing::rectangle_lattice(6, 10.0, 3.0, 3.0);
+  const Domain square = Domain::from_sizes({100, 100}, Boundary::torus);
+  EXPECT_EQ(overlap(run(RegionGrowing(lattice, Boundary::torus, square, GrowthOptions{}), 1)),
+            "circles");
+}
+
 TEST(RegionGrowing, ExactOverlapsKeepLongShapesApart) {
   // Bars much longer than half their nearest distance: bounding circles let them overlap, the
   // shapes' own distance does not.
   const geometry::Scene exemplar = testing::bar_scatter(60, 4);
   const Domain domain = Domain::from_sizes({400, 400}, Boundary::torus);
   GrowthOptions options;
+  options.exact_overlap = false;
   const RegionGrowing circles(exemplar, Boundary::torus, domain, options);
   options.exact_overlap = true;
   const RegionGrowing shapes(exemplar, Boundary::torus, domain, options);

@@ -120,10 +120,10 @@ methods::EmOptions EmFlags::options(const geometry::Domain& domain, long long it
 void GrowthFlags::add_overlap_to(CLI::App& command) {
   command
       .add_option("--overlap", overlap,
-                  "davison, ijiri: overlap test of new elements: bounding circles (spheres; "
-                  "davison's default, as the paper; half each exemplar element's nearest "
-                  "distance), none (ijiri's default, as the paper) or the shapes themselves "
-                  "(ijiri: turns then snap to 0.5 degrees)")
+                  "davison, ijiri: overlap test of new elements: the shapes themselves (ijiri: "
+                  "turns then snap to 0.5 degrees), bounding circles (spheres, of half each "
+                  "exemplar element's nearest distance, as davison's paper) or none (ijiri's "
+                  "default, as the paper); davison's default: shapes, circles for a lattice")
       ->check(CLI::IsMember({"circles", "shapes", "none"}));
 }
 
@@ -178,7 +178,7 @@ methods::GrowthOptions GrowthFlags::options(const EmFlags& shared) const {
   o.calibrate_density = !no_calibrate;
   if (overlap == "none")
     throw core::UsageError("--overlap none: --method davison tests circles or shapes");
-  o.exact_overlap = overlap == "shapes";
+  if (!overlap.empty()) o.exact_overlap = overlap == "shapes";
   return o;
 }
 

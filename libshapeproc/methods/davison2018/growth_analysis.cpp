@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/methods/davison2018/detail/growth_palette.hpp"
+#include "libshapeproc/metrics/novelty.hpp"
 
 namespace shapeproc::methods {
 
@@ -62,7 +63,7 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
   g.radius = bounding_radii(g.em, options.bounding_radius);
   g.free = free_space_vectors(g.em, g.sets, g.radius, options.cluster_eps * g.em.spacing,
                               std::min(options.cluster_min_points, options.k));
-  g.exact = options.exact_overlap;
+  g.exact = options.exact_overlap.value_or(!metrics::is_lattice_exemplar(exemplar));
   geometry::ProxyOptions proxy;
   proxy.tolerance = geometry::kOutlineTolerance;  // as `stats` judges collisions
   for (const geometry::Shape& shape : g.em.scene.shapes) {
@@ -84,13 +85,19 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
 GrowthExemplar analyse_growth_palette(const std::vector<GrowthSource>& sources,
                                       const GrowthOptions& options, int dimension) {
   if (sources.empty()) throw core::ArgumentError("region growing", "no exemplar to grow from");
+  GrowthOptions shared = options;
+  if (!shared.exact_overlap) {
+    shared.exact_overlap = false;
+    for (const GrowthSource& source : sources)
+      if (!metrics::is_lattice_exemplar(source.scene)) shared.exact_overlap = true;
+  }
   std::vector<GrowthExemplar> parts;
   for (const GrowthSource& source : sources) {
     if (source.scene.dimension != dimension)
       throw core::ArgumentError("region growing",
                                 "an exemplar is " + std::to_string(source.scene.dimension) +
                                     "D but the domain is " + std::to_string(dimension) + "D");
-    GrowthOptions own = options;
+    GrowthOptions own = shared;
     if (source.rings > 0) own.rings = source.rings;
     if (source.bounding_radius >= 0) own.bounding_radius = source.bounding_radius;
     parts.push_back(analyse_growth_exemplar(source.scene, source.boundary, own));

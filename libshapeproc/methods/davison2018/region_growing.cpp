@@ -362,7 +362,7 @@ std::vector<std::pair<std::string, std::string>> RegionGrowing::record_options()
            options_.bounding_radius > 0 ? number(options_.bounding_radius) : "auto"},
           {"growth.optimise", options_.optimise ? "yes" : "no"},
           {"growth.patch_radius", number(options_.patch_radius)},
-          {"growth.overlap", options_.exact_overlap ? "shapes" : "circles"}};
+          {"growth.overlap", exemplar_.exact ? "shapes" : "circles"}};
 }
 
 namespace {
