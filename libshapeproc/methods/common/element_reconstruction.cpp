@@ -183,7 +183,10 @@ geometry::Shape bounded_spline_shape(const geometry::Shape& shape, const ThinPla
   const Eigen::VectorXd spreads = principal_spreads(points, dimension);
   double share = 1.0;
   for (int halving = 0; halving < 6; ++halving, share /= 2) {
-    const auto blended = [&](const Vec3& x) { return rigid(x) + share * (spline(x) - rigid(x)); };
+    // (An Eigen expression of temporaries must not outlive the return: the lambda returns a Vec3.)
+    const auto blended = [&](const Vec3& x) -> Vec3 {
+      return rigid(x) + share * (spline(x) - rigid(x));
+    };
     std::vector<Vec3> mapped;
     mapped.reserve(points.size());
     for (const Vec3& p : points) mapped.push_back(blended(p));
