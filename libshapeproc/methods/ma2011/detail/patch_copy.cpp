@@ -337,7 +337,8 @@ Vec3 PatchCopy::seam_step(const Placement& patch, double radians) const {
   Vec3 sum = Vec3::Zero();
   int count = 0;
   const double near = 1.5 * exemplar_.spacing;
-  for (const auto& [element, position] : patch) {
+  for (const auto& placement : patch) {
+    const Vec3& position = placement.second;  // (a lambda may not capture a structured binding)
     Vec3 gap = Vec3::Zero();
     double nearest = near;
     elements_.for_each_candidate(position, [&](int id) {
