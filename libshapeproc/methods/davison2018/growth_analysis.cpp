@@ -63,7 +63,9 @@ GrowthExemplar analyse_growth_exemplar(const geometry::Scene& exemplar, geometry
   g.radius = bounding_radii(g.em, options.bounding_radius);
   g.free = free_space_vectors(g.em, g.sets, g.radius, options.cluster_eps * g.em.spacing,
                               std::min(options.cluster_min_points, options.k));
-  g.exact = options.exact_overlap.value_or(!metrics::is_lattice_exemplar(exemplar));
+  // (Not value_or: its argument, the lattice test, would run even when the option decides.)
+  g.exact =
+      options.exact_overlap ? *options.exact_overlap : !metrics::is_lattice_exemplar(exemplar);
   geometry::ProxyOptions proxy;
   proxy.tolerance = geometry::kOutlineTolerance;  // as `stats` judges collisions
   for (const geometry::Shape& shape : g.em.scene.shapes) {
@@ -87,9 +89,9 @@ GrowthExemplar analyse_growth_palette(const std::vector<GrowthSource>& sources,
   if (sources.empty()) throw core::ArgumentError("region growing", "no exemplar to grow from");
   GrowthOptions shared = options;
   if (!shared.exact_overlap) {
-    shared.exact_overlap = false;
-    for (const GrowthSource& source : sources)
-      if (!metrics::is_lattice_exemplar(source.scene)) shared.exact_overlap = true;
+    shared.exact_overlap = std::any_of(sources.begin(), sources.end(), [](const GrowthSource& s) {
+      return !metrics::is_lattice_exemplar(s.scene);
+    });
   }
   std::vector<GrowthExemplar> parts;
   for (const GrowthSource& source : sources) {
