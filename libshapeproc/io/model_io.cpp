@@ -450,9 +450,12 @@ void parse_shapes(const json& document, const Reader& r, ShapeProcessModel& mode
     if (shapes[s].contains("name")) shape.shape.name = r.text(shapes[s]["name"], where + ".name");
     if (shapes[s].contains("class"))
       shape.shape_class = r.integer(shapes[s]["class"], where + ".class");
-    // Shapes are stored centred on their bounding box; hand-written ones are centred here.
+    // Shapes are stored centred on their bounding box; hand-written ones are centred here. One
+    // centred already (to within rounding) is left as written, so that reading a model written
+    // from a model read gives it back bit for bit (the sampler follows every bit).
     const geometry::Box3 box = geometry::bounding_box(shape.shape);
-    if (!box.isEmpty()) geometry::translate(shape.shape, -box.center());
+    if (!box.isEmpty() && box.center().norm() > 1e-12 * box.sizes().norm())
+      geometry::translate(shape.shape, -box.center());
     model.shapes.push_back(std::move(shape));
   }
   if (!document.contains("shape_classes")) return;

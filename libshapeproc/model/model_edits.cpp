@@ -95,6 +95,16 @@ void set_intensity(ShapeProcessModel& model, std::size_t category, double beta) 
   check_valid(model, "beta");
 }
 
+void set_class_weight(ShapeProcessModel& model, std::size_t shape_class, double weight) {
+  if (shape_class >= model.shape_classes.size())
+    throw core::ArgumentError("class", "no shape class " + std::to_string(shape_class));
+  if (!(weight > 0) || !std::isfinite(weight))
+    throw core::ArgumentError(
+        "class", "the weight must be positive and finite, got " + core::format_general(weight, 6));
+  model.shape_classes[shape_class].weight = weight;
+  check_valid(model, "class");
+}
+
 void set_gamma(ShapeProcessModel& model, std::size_t pair, std::size_t axis, std::size_t band,
                double gamma) {
   AxisParameters& a = axis_of(model, pair, axis);

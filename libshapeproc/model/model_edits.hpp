@@ -29,6 +29,9 @@ void set_intensity(ShapeProcessModel& model, std::size_t category, double beta);
 void set_gamma(ShapeProcessModel& model, std::size_t pair, std::size_t axis, std::size_t band,
                double gamma);
 
+// The share `weight` > 0 (finite) of shape class `shape_class` in its category's β.
+void set_class_weight(ShapeProcessModel& model, std::size_t shape_class, double weight);
+
 // Threshold δ_index of axis `axis` of interaction `pair` set to `value`; the thresholds must stay
 // finite, >= 0 and in order (validate).
 void set_threshold(ShapeProcessModel& model, std::size_t pair, std::size_t axis, std::size_t index,

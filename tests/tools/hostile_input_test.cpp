@@ -272,6 +272,21 @@ std::vector<HostileCase> model_cases() {
        {file("m.svg", dots())},
        {"sample", "@m.svg", "--size", "100,100", "-o", "@out.svg"},
        "not a model"},
+      {"studio_missing_export_dir",
+       "studio with an export directory that does not exist",
+       {file("m.json", model())},
+       {"studio", "@m.json", "--size", "100,100", "--export-dir", "@missing"},
+       "is not a directory"},
+      {"studio_no_window",
+       "studio on a model without a window, --size in multiples",
+       {file("m.json", model())},
+       {"studio", "@m.json", "--export-dir", "@"},
+       "--size"},
+      {"studio_bad_size",
+       "studio with --size -5,10",
+       {file("m.json", model())},
+       {"studio", "@m.json", "--size", "-5,10", "--export-dir", "@"},
+       "--size"},
   };
 }
 

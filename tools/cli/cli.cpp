@@ -81,6 +81,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add_stats_command(app, action);
   add_report_command(app, action, arguments);
   add_compare_command(app, action, arguments);
+  add_studio_command(app, action, arguments);
 
   // CLI11 only says "a subcommand is required" for a misspelt one: name it.
   const std::vector<CLI::App*> subcommands = app.get_subcommands({});

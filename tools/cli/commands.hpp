@@ -24,6 +24,7 @@ void add_stats_command(CLI::App& app, Action& action);
 void add_report_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_compare_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_measure_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
+void add_studio_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 void add_fidelity_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments);
 
 }  // namespace shapeproc::cli

@@ -66,14 +66,12 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
                             geometry::Scene* fitted,
                             const std::function<void(const geometry::Scene&)>& check_read) {
-  fit::ExemplarFitOptions options;
-  options.fit = flags.options(reader);  // its own checks, before reading
+  fit::ExemplarFitOptions options = flags.exemplar_options(reader);  // checked before reading
   verbosity.stage("reading " + input);
   const geometry::Scene read = io::read_scene(input, reader.options());
   core::check_budget(fit::estimate_fit(read, options.fit).resources, budget, "the fit of " + input,
                      "--quadrature, --directions or the thresholds");
   if (check_read) check_read(read);
-  options.tile = reader.tile;
   // Stages on standard error with --verbose; a bar over the quadrature (the long stage) and one
   // over the maximum likelihood's iterations on a terminal.
   ProgressBar quadrature("fitting: quadrature", verbosity.show_progress());
@@ -87,8 +85,8 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
     quadrature.update(done, total);
   };
   ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
-  if (flags.estimator == "mle") {
-    fit::MleOptions& mle = options.likelihood.emplace(flags.mle_options());
+  if (options.likelihood) {
+    fit::MleOptions& mle = *options.likelihood;
     mle.progress = [&](const fit::MleProgress& at) {
       quadrature.finish();
       verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
@@ -98,8 +96,6 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                       core::format_general(at.seconds, 3) + " s");
       iterations.update(at.iteration, mle.max_iterations);
     };
-  } else {
-    options.likelihood.reset();
   }
   fit::ExemplarFit fit;
   try {
@@ -109,15 +105,7 @@ fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
   }
   quadrature.finish();
   iterations.finish();
-  model::FitRecord& record = *fit.result.model.fit;
-  record.exemplar = input;
-  record.arguments = arguments;
-  record.options = flatten_options("reader", reader.to_json());
-  nlohmann::json flag_values = flags.to_json();
-  flag_values["edge"] = flags.edge_for(reader);
-  flag_values["directions"] = fit.result.model.measurement.directions;
-  for (auto& option : flatten_options("fit", flag_values))
-    record.options.push_back(std::move(option));
+  flags.record(fit.result.model, input, reader, arguments);
   if (fitted) *fitted = std::move(fit.exemplar);
   return std::move(fit.result);
 }
@@ -208,6 +196,30 @@ fit::MleOptions FitFlags::mle_options() const {
 std::string FitFlags::edge_for(const ReaderFlags& reader) const {
   if (edge != "auto") return edge;
   return reader.tile ? "periodic" : "none";
+}
+
+fit::ExemplarFitOptions FitFlags::exemplar_options(const ReaderFlags& reader) const {
+  fit::ExemplarFitOptions options;
+  options.fit = this->options(reader);
+  options.tile = reader.tile;
+  if (estimator == "mle")
+    options.likelihood = mle_options();
+  else
+    options.likelihood.reset();
+  return options;
+}
+
+void FitFlags::record(model::ShapeProcessModel& model, const std::string& input,
+                      const ReaderFlags& reader, const std::vector<std::string>& arguments) const {
+  model::FitRecord& record = *model.fit;
+  record.exemplar = input;
+  record.arguments = arguments;
+  record.options = flatten_options("reader", reader.to_json());
+  nlohmann::json flag_values = to_json();
+  flag_values["edge"] = edge_for(reader);
+  flag_values["directions"] = model.measurement.directions;
+  for (auto& option : flatten_options("fit", flag_values))
+    record.options.push_back(std::move(option));
 }
 
 fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {

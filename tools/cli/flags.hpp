@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/fit/fit_exemplar.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
@@ -50,6 +52,13 @@ struct FitFlags {
   std::string edge_for(const ReaderFlags& reader) const;
   fit::FitOptions options(const ReaderFlags& reader) const;  // throws core::UsageError
   fit::MleOptions mle_options() const;
+  // The whole fit's options (the pseudo-likelihood's, the tile, the maximum likelihood's with
+  // --estimator mle), without progress reports.
+  fit::ExemplarFitOptions exemplar_options(const ReaderFlags& reader) const;
+  // Fills the fitted model's record: the exemplar's file, the command line, the reader's and the
+  // fit's options.
+  void record(model::ShapeProcessModel& model, const std::string& input, const ReaderFlags& reader,
+              const std::vector<std::string>& arguments) const;
   nlohmann::json to_json() const;
 };
 
@@ -99,13 +108,12 @@ struct SampleFlags {
   std::vector<std::string> files_written(const std::string& output) const;
   // Chains that run at the same time (--chains, --threads and the machine's cores).
   int chains_at_once() const;
-  // Outputs expected to hold at least this many elements are sampled by domain decomposition
-  // under --decompose auto.
-  static constexpr double kDecomposeFrom = 10'000;
   // Steps a run may take: some hours at the sampler's fraction of a microsecond per step.
   static constexpr long long kMaxIterations = 10'000'000'000;
   // The sampler's options from --iterations, --shift-probability, --shift-radius and --trace.
   sample::SamplerOptions sampler_options() const;
+  // The same, with --decompose and --threads, for fit::output_sampler_options.
+  fit::OutputSampling output_sampling() const;
   // Samples `model` into `output` (suffixed per chain); `record` holds the command's part of the
   // outputs' record (command, arguments, inputs, options). Prints a line per chain. Returns the
   // exit code.

@@ -11,6 +11,7 @@
 #include "libshapeproc/core/interruption.hpp"
 #include "libshapeproc/core/parallel_for.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
@@ -243,24 +244,15 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
   const core::ResourceEstimate estimate =
       sample::estimate_output(model, where, io::recorded_exemplar_density(model), chains_at_once());
   core::check_budget(estimate, budget.budget(), "the output", "--size");
-  sample::SamplerOptions options = sampler_options();
-  options.decompose =
-      decompose == "on" || (decompose == "auto" && estimate.elements >= kDecomposeFrom);
-  // The threads left to each chain of those that run at once.
-  options.threads = std::max(1, core::loop_threads(threads, 1 << 20) / chains_at_once());
+  fit::OutputSampling sampling = output_sampling();
+  sampling.exemplar_density = io::recorded_exemplar_density(model);
+  sampling.chains_at_once = chains_at_once();
+  sampling.compress = !start_tile;
+  sample::SamplerOptions options = fit::output_sampler_options(model, where, sampling);
   if (start_tile) {
     options.start = geometry::tile_over(*start_tile, where.box());
     out << "start: the exemplar tiled over the output (" << options.start.size()
         << " elements): the output begins as a copy of the exemplar, which the chain then moves\n";
-  } else {
-    options.compression = fit::output_compression(model);
-    if (options.compression.enabled && options.iterations > 0) {
-      if (options.iterations < 8)
-        throw core::UsageError(
-            "--iterations: this model's outputs start with the compressing burn-in (its fit "
-            "found a packed exemplar), which needs at least 8 steps");
-      options.compression.release_steps = options.iterations / 4;
-    }
   }
   const sample::ShapeProcessSampler sampler(model, where, options);
   if (sampler.torus_smaller_than_reach())
@@ -273,6 +265,19 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
                              ? io::recorded_exemplar_density(model).value_or(0.0)
                              : 0.0;
   return run(sampler, output, std::move(record), out, density);
+}
+
+fit::OutputSampling SampleFlags::output_sampling() const {
+  fit::OutputSampling sampling;
+  sampling.iterations = iterations;
+  sampling.shift_probability = shift_probability;
+  sampling.shift_radius = shift_radius;
+  sampling.trace_every = sampler_options().trace_every;
+  sampling.decompose = decompose == "on"    ? fit::Decomposition::on
+                       : decompose == "off" ? fit::Decomposition::off
+                                            : fit::Decomposition::automatic;
+  sampling.threads = threads;
+  return sampling;
 }
 
 sample::SamplerOptions SampleFlags::sampler_options() const {
