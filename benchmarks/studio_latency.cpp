@@ -5,7 +5,9 @@
 // (γ of the first band of pair 0, every axis, up and down by ×2; β ×1.25 and back), each waited
 // for to its final preview. Prints per edit the seconds to the first picture (a draft continued
 // from the one on screen) and to the final one (the chain `sample` runs, and the verdicts), and
-// a summary line: "median draft S max draft S median final S max final S elements N".
+// a summary line: "median draft S max draft S median final S max final S elements N draft/final
+// R" (R: the median ratio of the draft's element count to the final picture's, how near the
+// draft comes to the edited model's equilibrium).
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -27,19 +29,27 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+struct Timing {
+  double draft = -1, final = 0;  // seconds from the edit
+  int draft_elements = 0, elements = 0;
+};
+
 // The draft's and the final picture's seconds after an edit of revision `revision`.
-std::pair<double, double> wait_for(const studio::StudioSession& session, long long revision,
-                                   long long& after, int& elements) {
-  double draft = -1;
+Timing wait_for(const studio::StudioSession& session, long long revision, long long& after) {
+  Timing t;
   for (;;) {
     const auto p = session.wait_preview(after, 120'000ms);
     if (!p) throw std::runtime_error("no preview within two minutes");
     after = p->sequence;
     if (p->revision != revision) continue;
-    if (draft < 0) draft = p->seconds;
+    if (t.draft < 0) {
+      t.draft = p->seconds;
+      t.draft_elements = p->elements;
+    }
     if (p->stage == studio::PreviewStage::final) {
-      elements = p->elements;
-      return {draft, p->seconds};
+      t.final = p->seconds;
+      t.elements = p->elements;
+      return t;
     }
   }
 }
@@ -70,11 +80,11 @@ int main(int argc, char** argv) {
     input.export_directory = "/nonexistent";  // never written
     studio::StudioSession session(std::move(input));
     long long after = 0;
-    int elements = 0;
-    const auto [unused, first] = wait_for(session, 1, after, elements);
-    std::printf("first picture %.3f s, %d elements\n", first, elements);
+    const Timing first = wait_for(session, 1, after);
+    std::printf("first picture %.3f s, %d elements\n", first.final, first.elements);
     const double beta = session.state().model->categories[0].beta;
-    std::vector<double> drafts, finals;
+    std::vector<double> drafts, finals, ratios;
+    int elements = 0;
     for (int e = 0; e < 12; ++e) {
       studio::ModelEdit edit;
       if (e % 4 < 2) {
@@ -84,16 +94,19 @@ int main(int argc, char** argv) {
         edit = {studio::EditKind::beta, 0, 0, 0, false, e % 4 == 2 ? beta * 1.25 : beta};
       }
       session.edit(edit);
-      const auto [draft, final_seconds] =
-          wait_for(session, session.state().revision, after, elements);
-      std::printf("edit %2d: draft %.3f s, final %.3f s, %d elements\n", e + 1, draft,
-                  final_seconds, elements);
-      drafts.push_back(draft);
-      finals.push_back(final_seconds);
+      const Timing t = wait_for(session, session.state().revision, after);
+      std::printf("edit %2d: draft %.3f s (%d elements), final %.3f s (%d elements)\n", e + 1,
+                  t.draft, t.draft_elements, t.final, t.elements);
+      drafts.push_back(t.draft);
+      finals.push_back(t.final);
+      ratios.push_back(t.elements > 0 ? static_cast<double>(t.draft_elements) / t.elements : 0.0);
+      elements = t.elements;
     }
-    std::printf("median draft %.3f max draft %.3f median final %.3f max final %.3f elements %d\n",
-                median(drafts), *std::max_element(drafts.begin(), drafts.end()), median(finals),
-                *std::max_element(finals.begin(), finals.end()), elements);
+    std::printf(
+        "median draft %.3f max draft %.3f median final %.3f max final %.3f elements %d "
+        "draft/final %.2f\n",
+        median(drafts), *std::max_element(drafts.begin(), drafts.end()), median(finals),
+        *std::max_element(finals.begin(), finals.end()), elements, median(ratios));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "studio_latency: %s\n", e.what());
     return 2;

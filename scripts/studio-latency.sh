@@ -18,9 +18,9 @@ for entry in "dots-random:" "dashes-rows:" "crescents-grid:" "two-kinds:--catego
   # shellcheck disable=SC2086
   "$bench" "$work/$name.json" "data/svg/$name.svg" $flags > "$work/$name.log"
   line=$(tail -n 1 "$work/$name.log")
-  read -r _ _ draft _ _ max_draft _ _ final _ _ max_final _ elements <<< "$line"
+  read -r _ _ draft _ _ max_draft _ _ final _ _ max_final _ elements _ ratio <<< "$line"
   first=$(sed -n 's/^first picture \([0-9.]*\) s.*/\1/p' "$work/$name.log")
-  rows+="| $name | $elements | $first | $draft | $max_draft | $final | $max_final |"$'\n'
+  rows+="| $name | $elements | $first | $draft | $max_draft | $ratio | $final | $max_final |"$'\n'
 done
 {
   echo "# Studio preview latency"
@@ -33,10 +33,13 @@ done
     "exemplar's width and height, and 12 edits one after another (γ of pair 0's first band on" \
     "every axis ×2 and back, β of the first category ×1.25 and back). Seconds from the edit to" \
     "the first picture (a draft: the picture on screen continued under the edited model) and to" \
-    "the final one (the chain \`shapeproc sample\` runs from empty, and the verdicts)."
+    "the final one (the chain \`shapeproc sample\` runs from empty, and the verdicts)." \
+    "draft/final elements: the median ratio of the draft's element count to the final" \
+    "picture's (1: the draft has reached the edited model's density). elements: the last" \
+    "final picture's."
   echo
-  echo "| exemplar | elements | first picture (s) | draft median (s) | draft max (s) | final median (s) | final max (s) |"
-  echo "|---|---|---|---|---|---|---|"
+  echo "| exemplar | elements | first picture (s) | draft median (s) | draft max (s) | draft/final elements | final median (s) | final max (s) |"
+  echo "|---|---|---|---|---|---|---|---|"
   printf '%s' "$rows"
 } > "$out"
 cat "$out"

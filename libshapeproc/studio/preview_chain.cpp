@@ -36,9 +36,10 @@ synthesis::SynthesisResult sample_output(const model::ShapeProcessModel& model,
 }
 
 long long draft_steps(std::size_t start_count) {
-  // 60 steps per element (a third of them shifts: some 20 moves each), at least 6,000 and at most
-  // 60,000 (some 0.3 s at the sampler's few microseconds per step).
-  return std::clamp<long long>(60 * static_cast<long long>(start_count), 6'000, 60'000);
+  // 200 steps per element (a third of them shifts: some 65 moves each), at least 20,000 and at
+  // most 120,000 (about 0.2 s at the sampler's one to two microseconds per step on the shipped
+  // exemplars' previews).
+  return std::clamp<long long>(200 * static_cast<long long>(start_count), 20'000, 120'000);
 }
 
 synthesis::SynthesisResult sample_draft(const model::ShapeProcessModel& model,
