@@ -4,7 +4,8 @@
 studio_browser_test.py SHAPEPROC DATA_DIR SCREENSHOT
 
 Starts `shapeproc studio` on two-kinds.svg, waits for the fit, drags the first gamma bar of
-pair 0 up, checks that the preview and its verdicts were recomputed, exports, and checks that the
+pair 0 up, checks that the preview and its verdicts were recomputed, raises it again with the
+keyboard, undoes and redoes, exports, and checks that the
 exported model holds the new gamma and that `shapeproc sample` makes the exported output again,
 byte for byte after its record. Then: a request without the token and a malformed edit are
 refused with a clear error, the studio still answers, and Ctrl-C stops it cleanly.
@@ -24,6 +25,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
 
@@ -107,6 +109,23 @@ def main():
         edits = driver.find_element(By.ID, "edits").text
         if "gamma 0:0:1=" not in edits:
             fail("the edit is not listed: " + edits)
+        # The keyboard: a focused handle's Up arrow raises γ by a quarter, and focus stays.
+        revision = int(preview.get_attribute("data-revision"))
+        driver.execute_script("arguments[0].focus()", driver.find_element(By.ID, "gamma-0-0-0"))
+        driver.switch_to.active_element.send_keys(Keys.ARROW_UP)
+        wait.until(lambda d: int(preview.get_attribute("data-revision")) > revision and
+                   preview.get_attribute("data-stage") == "final")
+        if driver.switch_to.active_element.get_attribute("id") != "gamma-0-0-0":
+            fail("the keyboard edit lost the handle's focus")
+        # Undo and redo: the edit list follows.
+        for button, count in (("undo", 1), ("redo", 2)):
+            revision = int(preview.get_attribute("data-revision"))
+            driver.find_element(By.ID, button).click()
+            WebDriverWait(driver, 60).until(
+                lambda d: int(preview.get_attribute("data-revision")) > revision and
+                len(d.find_elements(By.CSS_SELECTOR, "#edits li")) == count,
+                f"after {button}, the preview and a list of {count} edits")
+        wait.until(lambda d: preview.get_attribute("data-stage") == "final")
         # The whole page in one picture, from its top.
         height = driver.execute_script("return document.documentElement.scrollHeight")
         driver.set_window_size(1500, min(max(height, 900), 2400))
@@ -146,7 +165,7 @@ def main():
         status, _ = request(base + "/api/state", headers=headers)
         if status != 200:
             fail("the studio stopped answering after a malformed edit")
-        print(f"ok: fitted gamma {fitted_gamma:.4g} dragged to {gamma:.4g}; exported "
+        print(f"ok: fitted gamma {fitted_gamma:.4g} dragged and raised to {gamma:.4g}; exported "
               f"{', '.join(sorted(os.listdir(exports)))}; screenshot {screenshot}")
     finally:
         driver.quit()
