@@ -247,6 +247,18 @@ Verdict model_verdict(const ModelStatistics& m) {
 
 }  // namespace
 
+const char* to_string(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::pass:
+      return "pass";
+    case Outcome::fail:
+      return "fail";
+    case Outcome::shown:
+      break;
+  }
+  return "shown";
+}
+
 std::vector<Verdict> judge(const Judged& j) {
   std::vector<Verdict> out;
   const metrics::SceneStatistics& ex = *j.exemplar;

@@ -40,6 +40,7 @@
 namespace shapeproc::evaluation {
 
 enum class Outcome { pass, fail, shown };
+const char* to_string(Outcome outcome);  // "pass", "fail", "shown"
 
 struct Verdict {
   std::string metric;  // "density", "density: red", "shape mix", …

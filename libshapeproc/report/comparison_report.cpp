@@ -144,9 +144,7 @@ void write_metrics_json(const ComparisonRequest& request, const evaluation::Metr
                                    {"value", v.value},
                                    {"shown", v.shown},
                                    {"rule", v.rule},
-                                   {"outcome", v.outcome == evaluation::Outcome::pass   ? "pass"
-                                               : v.outcome == evaluation::Outcome::fail ? "fail"
-                                                                                        : "shown"},
+                                   {"outcome", evaluation::to_string(v.outcome)},
                                    {"problem", v.problem}});
     metrics["outputs"].push_back(std::move(entry));
   }

@@ -71,18 +71,6 @@ std::string text(const json& value) {
   return value.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-const char* name_of(evaluation::Outcome outcome) {
-  switch (outcome) {
-    case evaluation::Outcome::pass:
-      return "pass";
-    case evaluation::Outcome::fail:
-      return "fail";
-    case evaluation::Outcome::shown:
-      break;
-  }
-  return "shown";
-}
-
 json model_json(const model::ShapeProcessModel& m) {
   json categories = json::array(), pairs = json::array(), classes = json::array();
   for (const auto& c : m.categories)
@@ -188,7 +176,7 @@ std::string preview_json(const Preview& p) {
     verdicts.push_back({{"metric", v.metric},
                         {"shown", v.shown},
                         {"rule", v.rule},
-                        {"outcome", name_of(v.outcome)},
+                        {"outcome", evaluation::to_string(v.outcome)},
                         {"problem", v.problem}});
   return text(json{{"sequence", p.sequence},
                    {"revision", p.revision},
