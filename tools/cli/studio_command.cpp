@@ -104,14 +104,18 @@ int run_studio(const StudioArguments& args, const std::vector<std::string>& argu
               : std::string())
       << "exports go to " << std::filesystem::absolute(args.export_dir).string()
       << "; Ctrl-C stops the studio" << std::endl;
-  // Ctrl-C: the section's flag is set, and the watcher stops the server.
+  // Ctrl-C: the section's flag is set, and the watcher stops the server (again until it has
+  // stopped: a stop before the server runs would be lost).
   const core::CancellableSection interrupt;
   std::atomic<bool> served{false};
   std::thread watcher([&] {
-    while (!served && !interrupt.flag()->load())
+    while (!served) {
+      if (interrupt.flag()->load()) {
+        session.close();  // wakes the requests that wait for a picture
+        server.stop();
+      }
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    session.close();  // wakes the requests that wait for a picture
-    server.stop();
+    }
   });
   server.run();
   served = true;
