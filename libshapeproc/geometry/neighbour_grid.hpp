@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "libshapeproc/geometry/types.hpp"
@@ -40,6 +41,32 @@ class NeighbourGrid {
           visited[static_cast<std::size_t>(visited_count++)] = index;
           for (int id : cells_[index]) f(id);
         }
+  }
+
+  // Calls f(id) for every id in the cells that the box of half-side `distance` around `position`
+  // meets: a superset of the ids within `distance` of `position`, each once. Thread-safe.
+  template <class F>
+  void for_each_candidate_within(const geometry::Vec3& position, double distance, F&& f) const {
+    const Eigen::Vector3i centre = cell_of(position);
+    std::array<int, 3> low{}, high{};
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto a = static_cast<std::size_t>(axis);
+      const int reach = axis < dimension_ ? static_cast<int>(std::ceil(distance / cell_[axis])) : 0;
+      low[a] = centre[axis] - reach;
+      high[a] = centre[axis] + reach;
+      if (!periodic_[a] || high[a] - low[a] + 1 >= counts_[axis]) {
+        // Open, or the range covers the whole period: every cell once, in order.
+        low[a] = periodic_[a] ? 0 : std::max(low[a], 0);
+        high[a] = periodic_[a] ? counts_[axis] - 1 : std::min(high[a], counts_[axis] - 1);
+      }
+    }
+    const auto cell = [this](int c, int axis) {
+      return (c % counts_[axis] + counts_[axis]) % counts_[axis];
+    };
+    for (int z = low[2]; z <= high[2]; ++z)
+      for (int y = low[1]; y <= high[1]; ++y)
+        for (int x = low[0]; x <= high[0]; ++x)
+          for (int id : cells_[linear({cell(x, 0), cell(y, 1), cell(z, 2)})]) f(id);
   }
 
  private:

@@ -12,9 +12,10 @@
 namespace shapeproc::geometry {
 namespace {
 
-// For random points, every point within the cell size of a query (minimum image on a torus) is
-// a candidate, and no candidate is reported twice.
-void expect_superset(int dimension, bool periodic, double cell_size) {
+// For random points, every point within `distance` of a query (minimum image on a torus) is a
+// candidate, and no candidate is reported twice: for_each_candidate at the cell size (distance
+// 0), for_each_candidate_within at `distance`.
+void expect_superset(int dimension, bool periodic, double cell_size, double distance = 0.0) {
   const Vec3 max = dimension == 2 ? Vec3(30, 20, 0) : Vec3(12, 10, 8);
   const Box3 window(Vec3::Zero(), max);
   const Domain domain(window, dimension, periodic ? Boundary::torus : Boundary::open);
@@ -31,10 +32,13 @@ void expect_superset(int dimension, bool periodic, double cell_size) {
     Vec3 at = Vec3::Zero();
     for (int axis = 0; axis < dimension; ++axis) at[axis] = random.uniform(0, max[axis]);
     std::map<int, int> seen;
-    grid.for_each_candidate(at, [&](int id) { ++seen[id]; });
+    if (distance > 0)
+      grid.for_each_candidate_within(at, distance, [&](int id) { ++seen[id]; });
+    else
+      grid.for_each_candidate(at, [&](int id) { ++seen[id]; });
     for (const auto& [id, times] : seen) EXPECT_EQ(times, 1) << id;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (domain.minimum_image(points[i] - at).norm() < cell_size) {
+      if (domain.minimum_image(points[i] - at).norm() < (distance > 0 ? distance : cell_size)) {
         EXPECT_TRUE(seen.count(static_cast<int>(i)))
             << "point " << i << " missed (dimension " << dimension << ")";
       }
@@ -46,6 +50,14 @@ TEST(NeighbourGrid, CandidatesHoldEveryPointWithinTheCellSize) {
   for (int dimension : {2, 3})
     for (bool periodic : {false, true})
       for (double cell : {1.5, 4.0, 11.0}) expect_superset(dimension, periodic, cell);
+}
+
+TEST(NeighbourGrid, CandidatesWithinADistanceHoldEveryPointThatNear) {
+  // Distances of a fraction of a cell, several cells, and more than a period (each id once).
+  for (int dimension : {2, 3})
+    for (bool periodic : {false, true})
+      for (double distance : {0.7, 3.9, 9.0, 40.0})
+        expect_superset(dimension, periodic, 1.5, distance);
 }
 
 TEST(NeighbourGrid, RemovedIdsAreNoLongerCandidates) {

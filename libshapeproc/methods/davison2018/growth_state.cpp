@@ -31,7 +31,10 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
       // of 256³ cells.
       contacts_(domain.box(), domain.dimension(), std::max(contact_, 0.25 * reach_),
                 domain.periodic()),
-      free_(domain.box(), domain.dimension(), reach_, domain.periodic()) {}
+      // Free-space points are asked for at contact distance (on_free_point, consume), and only
+      // the horizon's pruning asks farther.
+      free_(domain.box(), domain.dimension(), std::max(contact_, 0.25 * reach_),
+            domain.periodic()) {}
 
 bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
 
@@ -86,7 +89,7 @@ bool GrowthState::on_free_point(const Vec3& p, double radius) const {
 
 bool GrowthState::free_point_within(const Vec3& p, double distance) const {
   bool hit = false;
-  free_.for_each_candidate(p, [&](int i) {
+  free_.for_each_candidate_within(p, distance, [&](int i) {
     const FreePoint& v = points_[static_cast<std::size_t>(i)];
     hit = hit ||
           (v.alive && domain_.minimum_image(v.position - p).squaredNorm() < distance * distance);
@@ -114,7 +117,9 @@ void GrowthState::move(int e, const Vec3& p) {
   position_[i] = domain_.wrap(p);
   elements_.insert(e, position_[i]);
   contacts_.insert(e, position_[i]);
-  for (const int v : owned_[i]) kill(static_cast<std::size_t>(v));
+  // A point already covered may have lent its slot to another element's.
+  for (const int v : owned_[i])
+    if (points_[static_cast<std::size_t>(v)].owner == e) kill(static_cast<std::size_t>(v));
   owned_[i].clear();
   consume_free_points(e);
   add_free_points(e);
@@ -124,16 +129,42 @@ void GrowthState::kill(std::size_t point) {
   if (!points_[point].alive) return;
   points_[point].alive = false;
   --alive_;
-  free_.remove(static_cast<int>(point), points_[point].position);  // queries skip the dead
+  free_.remove(static_cast<int>(point), points_[point].position);
+  unused_.push_back(static_cast<int>(point));
 }
 
 void GrowthState::add_free_points(int e) {
   const auto i = static_cast<std::size_t>(e);
-  for (const FreeSpaceVector& v : exemplar_.free[static_cast<std::size_t>(source(e))]) {
+  const std::vector<FreeSpaceVector>& vectors = exemplar_.free[static_cast<std::size_t>(source(e))];
+  if (vectors.empty()) return;
+  // The elements that could overlap one of e's points, found once as offsets from e (not one
+  // grid walk per point): those within the farthest point's reach of e.
+  double far = 0.0;
+  for (const FreeSpaceVector& v : vectors) far = std::max(far, v.offset.norm() + v.radius);
+  far += largest_radius_;
+  near_.clear();
+  contacts_.for_each_candidate_within(position_[i], far, [&](int o) {
+    const Vec3 offset = domain_.minimum_image(position(o) - position_[i]);
+    if (offset.squaredNorm() < far * far)
+      near_.push_back({offset, exemplar_.radius[static_cast<std::size_t>(source(o))]});
+  });
+  for (const FreeSpaceVector& v : vectors) {
     const Vec3 q = domain_.wrap(position_[i] + v.offset);
-    if (!in_domain(q) || overlaps(q, v.radius)) continue;
-    const int id = static_cast<int>(points_.size());
-    points_.push_back({q, v.radius, e, true});
+    if (!in_domain(q)) continue;
+    // As overlaps(q, v.radius), over the elements found.
+    const bool covered = std::any_of(near_.begin(), near_.end(), [&](const Nearby& n) {
+      const double reach = (v.radius + n.radius) * (1.0 - kTouching);
+      return domain_.minimum_image(n.offset - v.offset).squaredNorm() < reach * reach;
+    });
+    if (covered) continue;
+    int id = static_cast<int>(points_.size());
+    if (!unused_.empty()) {  // a dead point's slot
+      id = unused_.back();
+      unused_.pop_back();
+      points_[static_cast<std::size_t>(id)] = {q, v.radius, e, true};
+    } else {
+      points_.push_back({q, v.radius, e, true});
+    }
     ++alive_;
     free_.insert(id, q);
     owned_[i].push_back(id);

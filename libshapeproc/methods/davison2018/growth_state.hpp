@@ -88,6 +88,10 @@ class GrowthState {
     int owner;
     bool alive;
   };
+  struct Nearby {
+    Vec3 offset;
+    double radius;
+  };
   void add_free_points(int e);
   void consume_free_points(int e);
   void kill(std::size_t point);
@@ -101,6 +105,8 @@ class GrowthState {
   std::vector<int> source_, match_;
   std::vector<std::vector<int>> owned_;  // per element: its free-space points
   std::vector<FreePoint> points_;
+  std::vector<int> unused_;   // slots of dead points, for new ones
+  std::vector<Nearby> near_;  // add_free_points' scratch
   std::size_t alive_ = 0;
   // Elements by neighbourhood radius (neighbourhoods) and by contact distance (overlap tests,
   // which then visit a few elements, not a neighbourhood's worth); free-space points.
