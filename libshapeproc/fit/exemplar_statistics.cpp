@@ -42,8 +42,14 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
         interaction.band(a.category, b.category, p.measurement.axis, p.measurement.distance);
     if (band == Interaction::kHardCore) {
       std::ostringstream text;
-      text << "elements " << p.i << " and " << p.j << " are " << p.measurement.distance
-           << " apart, below the hard-core distance d0 of their axis: lower the thresholds";
+      text << "elements " << p.i << " and " << p.j << " (categories '"
+           << model.categories[static_cast<std::size_t>(a.category)].name << "' and '"
+           << model.categories[static_cast<std::size_t>(b.category)].name << "') are "
+           << p.measurement.distance << " apart (below 0: overlapping by that depth), below the "
+           << "first threshold given, "
+           << interaction.thresholds(a.category, b.category, p.measurement.axis).front()
+           << ": give thresholds that start at or below " << p.measurement.distance
+           << ", or let the quantiles choose them";
       throw core::ArgumentError("fit", text.str());
     }
     if (band < 0) continue;

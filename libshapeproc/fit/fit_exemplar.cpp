@@ -1,5 +1,7 @@
 #include "libshapeproc/fit/fit_exemplar.hpp"
 
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
@@ -16,14 +18,43 @@ FitOptions repeated_options(const geometry::Scene& exemplar, int repeats, FitOpt
   return options;
 }
 
+// The density check and its corrections, recorded in the model and its notes.
+void calibrate(ExemplarFit& fit, const ExemplarFitOptions& options) {
+  CalibrationOptions calibration = *options.calibration;
+  if (options.likelihood) calibration.seed = options.likelihood->sampling.seed;
+  if (!calibration.progress && options.fit.progress) {
+    calibration.progress = [&](int round, int rounds) {
+      options.fit.progress("calibration", round, rounds);
+    };
+  }
+  model::ShapeProcessModel& model = fit.result.model;
+  model::CalibrationRecord record = calibrate_density(model, fit.exemplar, calibration);
+  std::ostringstream note;
+  note << "density on a torus of " << record.multiple << " x " << record.multiple << " windows: ";
+  for (std::size_t c = 0; c < record.ratio_after.size(); ++c) {
+    note << (c ? ", " : "") << "'" << model.categories[c].name << "' x" << std::setprecision(3)
+         << record.ratio_before[c];
+    if (record.rounds > 1) note << " -> x" << record.ratio_after[c];
+  }
+  if (record.ran_away)
+    note << "; chains ran away, every γ > 1 raised to the power " << record.attraction_shrink;
+  if (!record.converged)
+    note << "; did not agree within the tolerance after " << record.rounds << " chains";
+  model.fit->notes.push_back(note.str());
+  fit.result.notes.push_back(note.str());
+  model.fit->calibration = std::move(record);
+}
+
 }  // namespace
 
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options) {
   const auto pseudo_likelihood = [&](const geometry::Scene& scene, int repeats) {
     return fit_shape_process(scene, repeated_options(scene, repeats, options.fit));
   };
+  const bool likelihood =
+      options.likelihood && exemplar.elements.size() <= options.likelihood_elements;
   const auto maximum_likelihood = [&](const geometry::Scene& scene, int repeats, FitResult mpl) {
-    if (!options.likelihood) return mpl;
+    if (!likelihood) return mpl;
     return refine_to_maximum_likelihood(scene, repeated_options(scene, repeats, options.fit),
                                         std::move(mpl), *options.likelihood);
   };
@@ -47,6 +78,15 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
     record.notes.push_back(note);
     fit.result.notes.push_back(note);
   }
+  if (options.likelihood && !likelihood) {
+    const std::string note =
+        "maximum likelihood not run: " + std::to_string(exemplar.elements.size()) +
+        " elements, over " + std::to_string(options.likelihood_elements) +
+        "; the pseudo-likelihood's estimate, checked on the output's scale";
+    record.notes.push_back(note);
+    fit.result.notes.push_back(note);
+  }
+  if (options.calibration) calibrate(fit, options);
   return fit;
 }
 

@@ -1,16 +1,20 @@
 // The whole fit of an exemplar, as `shapeproc fit` and `synthesize` run it: the thresholds and
 // the maximum pseudo-likelihood (fit_shape_process.hpp), then, unless asked not to, the maximum
 // likelihood by MCMC from that estimate (fit_maximum_likelihood.hpp); a seamless tile is fitted
-// on its torus, repeated where it is small or its interactions reach too far (tile_fit.hpp).
+// on its torus, repeated where it is small or its interactions reach too far (tile_fit.hpp); then
+// the density check on the output's scale (density_calibration.hpp).
 #pragma once
 
 #include <optional>
 
+#include "libshapeproc/fit/density_calibration.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
 namespace shapeproc::fit {
+
+inline constexpr std::size_t kLikelihoodElements = 150;
 
 struct ExemplarFitOptions {
   // The pseudo-likelihood's options. Its quadrature, when automatic, keeps the cells' size on a
@@ -20,9 +24,19 @@ struct ExemplarFitOptions {
   // The maximum likelihood's options (its progress reports each iteration); none: the model is
   // the pseudo-likelihood's estimate.
   std::optional<MleOptions> likelihood = MleOptions{};
+  // The maximum likelihood runs on exemplars of at most this many elements (a tile's as drawn).
+  // Its chains' cost grows faster than n (more elements, each with more neighbours, over more
+  // sweeps): it took over ten minutes at 460 elements. On larger exemplars the pseudo-likelihood,
+  // whose efficiency approaches the likelihood's as n grows, and the density check on the output's
+  // scale serve. The record notes the choice.
+  std::size_t likelihood_elements = kLikelihoodElements;
   // The exemplar is one period of a seamless 2D repeat (read with --tile): fitted with periodic
   // edges, on a repeat of it where needed.
   bool tile = false;
+  // The density check on the output's scale, and its corrections (density_calibration.hpp); none:
+  // the estimate is returned as it is. Its seed, when the maximum likelihood runs, is that of the
+  // maximum likelihood's chains; its progress comes through fit.progress as stage "calibration".
+  std::optional<CalibrationOptions> calibration = CalibrationOptions{};
 };
 
 struct ExemplarFit {

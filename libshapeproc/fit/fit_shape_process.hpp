@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
@@ -52,6 +53,9 @@ struct FitOptions {
   // Axis bins with fewer exemplar pairs than this take the thresholds of the category pair's
   // pairs pooled over all axes.
   int min_pairs_per_axis = 10;
+  // How many γ each pair of categories may have, and how far it may reach, from the exemplar's
+  // element counts (parameter_budget.hpp). Not applied to explicit thresholds.
+  ParameterBudget budget;
   // The share of the maximum-likelihood chains' birth proposals drawn near a neighbour, recorded
   // in the model for every later chain (model::NeighbourOffsets::share; docs/mathematics.md,
   // "Births near neighbours"); in [0, 1), or kAutomaticNearBirths.

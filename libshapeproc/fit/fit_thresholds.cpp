@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/geometry/directions.hpp"
 
@@ -31,6 +32,27 @@ constexpr std::size_t kShellPairs = 4;
 // An axis's closest pair lies farther than the pair's closest over all axes by chance when its
 // pairs, drawn from the pooled distances, would all lie that far at least this often.
 constexpr double kHardCoreLevel = 0.05;
+
+// A hair below the smallest distance d: at 0 for touching pairs, below 0 for overlapping ones.
+double hard_core_below(double d, double w) {
+  return d >= 0.0 ? std::max(0.0, d - kDegenerate * w) : d - kDegenerate * w;
+}
+
+// Overlap and separation are distinct relations (disjoint, touching, overlapping, nested): where
+// an axis's bands run from overlapping pairs (d < 0) to separate ones, a threshold at 0 puts them
+// in bands of their own. An axis whose range ends at or below 0 (every banded pair overlaps) gets
+// a last band up to a hair above 0, so that its range covers contact and every measurement has a
+// positive cut-off.
+void split_at_contact(std::vector<double>& thresholds, double w) {
+  if (thresholds.empty() || thresholds.front() >= 0.0) return;
+  const double hair = kDegenerate * w;
+  if (thresholds.back() <= 0.0) {
+    thresholds.push_back(std::max(hair, thresholds.back() + hair));
+    return;
+  }
+  const auto above = std::upper_bound(thresholds.begin(), thresholds.end(), 0.0);
+  if (std::abs(*(above - 1)) > hair && std::abs(*above) > hair) thresholds.insert(above, 0.0);
+}
 
 // Quantile thresholds. Where several quantiles coincide, the distance d they share is a shell of
 // a lattice (hexagons gave [2.0155443424633040, 2.0155443424633073) for three quantiles): its
@@ -67,16 +89,19 @@ std::vector<double> thresholds_from(std::vector<double> distances,
   std::vector<double> thresholds;
   for (std::size_t k = 0; k < values.size(); ++k) {
     const double d = values[k];
-    const double floor = thresholds.empty() ? 0.0 : thresholds.back() + kDegenerate * w;
+    const double floor = thresholds.empty() ? -std::numeric_limits<double>::infinity()
+                                            : thresholds.back() + kDegenerate * w;
     if (shared[k] == 1) {
       // The hard core sits a hair below the smallest distance, so that the exemplar's closest
       // pairs, measured again after a translation, do not fall below it by rounding; a hard core
-      // at 0 (touching) stays at 0.
-      thresholds.push_back(k == 0 ? std::max(0.0, d - kDegenerate * w) : std::max(floor, d));
+      // at 0 (touching) stays at 0. A negative one (the exemplar overlaps or nests the pair) sits
+      // a hair below its deepest overlap.
+      thresholds.push_back(k == 0 ? hard_core_below(d, w) : std::max(floor, d));
       continue;
     }
     const double next = k + 1 < values.size() ? values[k + 1] : d + 2 * w;
-    thresholds.push_back(std::max(floor, d - w));
+    // (A shell of separate pairs keeps its hard core at 0 at least: it never allows overlaps.)
+    thresholds.push_back(std::max(floor, d >= 0.0 ? std::max(0.0, d - w) : d - w));
     thresholds.push_back(
         std::max(thresholds.back() + kDegenerate * w, std::min(d + w, 0.5 * (d + next))));
   }
@@ -90,6 +115,7 @@ std::vector<double> thresholds_from(std::vector<double> distances,
   for (std::size_t k = thresholds.size(); k-- > 2;)
     if (pairs_in(thresholds[k - 1], thresholds[k]) == 0)
       thresholds.erase(thresholds.begin() + static_cast<std::ptrdiff_t>(k));
+  split_at_contact(thresholds, w);
   return thresholds;
 }
 
@@ -112,7 +138,24 @@ void pool_hard_core(std::vector<double>& thresholds, const std::vector<double>& 
   const double share = static_cast<double>(below) / static_cast<double>(pooled.size());
   const double chance = std::pow(1.0 - share, static_cast<double>(axis_distances.size()));
   if (chance < kHardCoreLevel) return;
-  thresholds.front() = std::max(0.0, lowest - kDegenerate * w);
+  thresholds.front() = hard_core_below(lowest, w);
+}
+
+// Overlap and nesting are relations of a pair of categories, not of a direction: where the
+// exemplar overlaps a pair at all, every axis's hard core comes down to a hair below its deepest
+// overlap (an axis that merely showed no overlap along it would otherwise forbid any), and its
+// bands split at contact.
+void share_overlap(std::vector<std::vector<double>>& per_axis, const std::vector<double>& pooled,
+                   double w) {
+  if (pooled.empty()) return;
+  const double lowest = *std::min_element(pooled.begin(), pooled.end());
+  if (!(lowest < 0)) return;
+  const double hard_core = hard_core_below(lowest, w);
+  for (std::vector<double>& t : per_axis) {
+    if (t.empty() || t.front() <= hard_core) continue;
+    t.front() = hard_core;
+    split_at_contact(t, w);
+  }
 }
 
 }  // namespace
@@ -132,7 +175,7 @@ void check_fit_options(const FitOptions& o) {
   } else {
     for (std::size_t k = 0; k < o.thresholds.size(); ++k) {
       const double d = o.thresholds[k];
-      core::check_non_negative("fit", "thresholds", d);
+      core::check(std::isfinite(d), "fit", "thresholds must be finite numbers");
       if (k > 0 && d < o.thresholds[k - 1]) {
         std::ostringstream text;
         text << "thresholds must not decrease, got " << d << " after " << o.thresholds[k - 1];
@@ -224,6 +267,7 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
                     "process (no interaction)");
     return;
   }
+  const std::vector<std::size_t> counts = geometry::category_counts(exemplar);
   for (int a = 0; a < categories; ++a) {
     for (int b = a; b < categories; ++b) {
       model::PairInteraction pair;
@@ -236,11 +280,10 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
       const std::string names = "'" + model.categories[static_cast<std::size_t>(a)].name + "'-'" +
                                 model.categories[static_cast<std::size_t>(b)].name + "'";
       bool noted_pool = false;
+      std::vector<std::vector<double>> per_axis;
       for (int i = 0; i < axes; ++i) {
-        model::AxisParameters axis;
-        axis.direction = bins.axis_direction(i);
         if (fixed_thresholds) {
-          axis.thresholds = options.thresholds;
+          per_axis.push_back(options.thresholds);
         } else {
           const std::vector<double>* source = nullptr;
           if (found != by_pair.end() &&
@@ -264,11 +307,40 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
               noted_pool = true;
             }
           }
-          axis.thresholds =
-              thresholds_from(*source, options.quantiles, shell_jitter, exemplar.elements.size());
+          per_axis.push_back(
+              thresholds_from(*source, options.quantiles, shell_jitter, exemplar.elements.size()));
           if (source != &pooled && source != &all_distances)
-            pool_hard_core(axis.thresholds, *source, pooled, shell_jitter);
+            pool_hard_core(per_axis.back(), *source, pooled, shell_jitter);
         }
+      }
+      if (!fixed_thresholds) share_overlap(per_axis, pooled, shell_jitter);
+      if (!fixed_thresholds) {
+        const std::size_t na = counts[static_cast<std::size_t>(a)],
+                          nb = counts[static_cast<std::size_t>(b)];
+        const double cap = range_cap(options.budget, exemplar.window_measure(), exemplar.dimension,
+                                     static_cast<double>(std::max(na, nb)));
+        std::vector<double> isotropic =
+            thresholds_from(pooled.size() >= 2 ? pooled : all_distances, options.quantiles,
+                            shell_jitter, exemplar.elements.size());
+        cap_range(isotropic, cap);
+        for (std::vector<double>& t : per_axis) cap_range(t, cap);
+        double range = isotropic.back();
+        for (const std::vector<double>& t : per_axis) range = std::max(range, t.back());
+        const auto within =
+            std::count_if(pooled.begin(), pooled.end(), [&](double d) { return d < range; });
+        const int parameters =
+            static_cast<int>(within) / std::max(1, options.budget.pairs_per_parameter);
+        PairThresholds chosen =
+            apply_budget(std::move(per_axis), std::move(isotropic), parameters,
+                         std::to_string(within) + " exemplar pairs within its range");
+        per_axis = std::move(chosen.axes);
+        pair.choice = std::move(chosen.choice);
+        if (!pair.choice.empty()) notes.push_back("pair " + names + ": " + pair.choice);
+      }
+      for (std::size_t i = 0; i < per_axis.size(); ++i) {
+        model::AxisParameters axis;
+        axis.direction = bins.axis_direction(static_cast<int>(i));
+        axis.thresholds = std::move(per_axis[i]);
         const std::size_t bands = axis.thresholds.size() - 1;
         axis.gammas.assign(bands, 1.0);
         axis.gamma_standard_errors.assign(bands, std::numeric_limits<double>::quiet_NaN());

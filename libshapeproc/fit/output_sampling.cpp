@@ -6,6 +6,7 @@
 #include "libshapeproc/core/parallel_for.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/sample/output_estimate.hpp"
+#include "libshapeproc/sample/runaway.hpp"
 
 namespace shapeproc::fit {
 
@@ -20,6 +21,7 @@ sample::SamplerOptions output_sampler_options(const model::ShapeProcessModel& mo
   const int at_once = std::max(1, sampling.chains_at_once);
   const core::ResourceEstimate estimate =
       sample::estimate_output(model, domain, sampling.exemplar_density, at_once);
+  options.runaway_count = sample::runaway_count(estimate.elements);
   options.decompose =
       sampling.decompose == Decomposition::on ||
       (sampling.decompose == Decomposition::automatic && estimate.elements >= kDecomposeFrom);

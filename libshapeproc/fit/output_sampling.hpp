@@ -1,6 +1,7 @@
 // The sampler options an output of a fitted model gets, as `shapeproc sample` gives them: the
 // compressing burn-in where the model's fit used one (its steps a quarter of given iterations),
-// and domain decomposition for large outputs. One function, so that every caller that promises
+// domain decomposition for large outputs, and a stop for a chain that runs away (past
+// sample::runaway_count of the expected elements). One function, so that every caller that promises
 // "`sample` reproduces this with the same seed" (the studio's previews) samples the same chain.
 #pragma once
 

@@ -3,9 +3,22 @@
 #include <map>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
+
+namespace {
+
+// The disc of radius r centred on the origin: a filled circle, as an SVG <circle> reads.
+geometry::Shape disc_shape(double r) {
+  geometry::Drawable2 drawable;
+  drawable.paths.push_back(geometry::ellipse_path(geometry::Vec2::Zero(), r, r));
+  drawable.style["fill"] = "#000000";
+  return geometry::Shape{geometry::PlanarShape{{std::move(drawable)}}, "disc"};
+}
+
+}  // namespace
 
 bool split_csv_line(std::string_view line, std::vector<std::string>& fields) {
   fields.clear();
@@ -73,6 +86,10 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
                            "the header must name columns x and y (and optionally z, category)");
   }
   const int dimension = column.count("z") ? 3 : 2;
+  const auto radius_column = column.find("radius");
+  const bool discs = radius_column != column.end();
+  if (discs && dimension == 3)
+    throw core::InputError(file_name, 1, "a radius column makes discs, which are 2D: drop z");
   if (!options.window) {
     throw core::InputError(file_name, 0,
                            std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
@@ -87,7 +104,8 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
   scene.dimension = dimension;
   scene.window = options.window->box;
   scene.units = "1";
-  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  if (!discs) scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  std::map<double, int> shape_of_radius;  // discs: one shape per distinct radius
   const std::size_t width = fields.size();
   const char* axes[3] = {"x", "y", "z"};
   for (std::size_t n = 1; n < lines.size(); ++n) {
@@ -117,6 +135,18 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
         category == column.end() ? "default" : fields[category->second];
     if (category_name.empty()) throw core::InputError(file_name, line_number, "empty category");
     element.category = scene.category_index(category_name);
+    if (discs) {
+      const std::string& value = fields[radius_column->second];
+      const auto r = parse_number(value);
+      if (!r || !(*r > 0.0)) {
+        throw core::InputError(file_name, line_number,
+                               "column radius: expected a positive number, got '" + value + "'");
+      }
+      const auto [found, added] =
+          shape_of_radius.emplace(*r, static_cast<int>(scene.shapes.size()));
+      if (added) scene.shapes.push_back(disc_shape(*r));
+      element.shape = found->second;
+    }
     const geometry::Vec3& p = element.position;
     const geometry::Box3& w = scene.window;
     if ((p.array() < w.min().array()).any() || (p.array() > w.max().array()).any()) {

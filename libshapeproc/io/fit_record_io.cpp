@@ -118,6 +118,32 @@ model::LikelihoodRecord parse_likelihood(const json& e) {
   return r;
 }
 
+json calibration_json(const model::CalibrationRecord& c) {
+  return {{"multiple", c.multiple},
+          {"rounds", c.rounds},
+          {"converged", c.converged},
+          {"ran_away", c.ran_away},
+          {"ratio_before", c.ratio_before},
+          {"ratio_after", c.ratio_after},
+          {"beta_factor", c.beta_factor},
+          {"attraction_shrink", c.attraction_shrink},
+          {"seconds", c.seconds}};
+}
+
+model::CalibrationRecord parse_calibration(const json& c) {
+  model::CalibrationRecord r;
+  r.multiple = field(c, "multiple", r.multiple);
+  r.rounds = field(c, "rounds", 0);
+  r.converged = field(c, "converged", false);
+  r.ran_away = field(c, "ran_away", false);
+  r.ratio_before = field(c, "ratio_before", std::vector<double>());
+  r.ratio_after = field(c, "ratio_after", std::vector<double>());
+  r.beta_factor = field(c, "beta_factor", std::vector<double>());
+  r.attraction_shrink = field(c, "attraction_shrink", 1.0);
+  r.seconds = field(c, "seconds", 0.0);
+  return r;
+}
+
 std::vector<model::ModelEdit> parse_edits(const json& fit) {
   std::vector<model::ModelEdit> edits;
   const auto it = fit.find("edits");
@@ -159,6 +185,7 @@ json fit_record_json(const model::FitRecord& r) {
   fit[r.thresholds.empty() ? "quantiles" : "thresholds"] =
       r.thresholds.empty() ? r.quantiles : r.thresholds;
   if (r.likelihood) fit["estimator"] = likelihood_json(*r.likelihood);
+  if (r.calibration) fit["calibration"] = calibration_json(*r.calibration);
   if (!r.exemplar.empty()) fit["exemplar"] = r.exemplar;
   if (!r.arguments.empty()) fit["arguments"] = r.arguments;
   if (!r.options.empty()) fit["options"] = pairs_json(r.options);
@@ -208,6 +235,8 @@ model::FitRecord parse_fit_record(const json& fit) {
   if (const auto e = fit.find("estimator");
       e != fit.end() && field(*e, "method", std::string()) == "mcmc-mle")
     r.likelihood = parse_likelihood(*e);
+  if (const auto c = fit.find("calibration"); c != fit.end() && c->is_object())
+    r.calibration = parse_calibration(*c);
   r.exemplar = field(fit, "exemplar", std::string());
   r.arguments = field(fit, "arguments", std::vector<std::string>());
   read_options(fit, r.options);

@@ -247,7 +247,9 @@ std::string model_to_json(const ShapeProcessModel& model) {
       if (!a.observed_pairs.empty()) axis["observed_pairs"] = a.observed_pairs;
       axes.push_back(axis);
     }
-    interaction.push_back({{"categories", {pair.first, pair.second}}, {"axes", axes}});
+    json entry = {{"categories", {pair.first, pair.second}}, {"axes", axes}};
+    if (!pair.choice.empty()) entry["choice"] = pair.choice;
+    interaction.push_back(std::move(entry));
   }
   json shapes = json::array();
   for (const ModelShape& s : model.shapes) {
@@ -373,7 +375,7 @@ AxisParameters parse_axis(const json& value, const std::string& at, int dimensio
   return axis;
 }
 
-// The pairs' interactions; `axes_seen`: the axes of the last pair (what the directions default
+// The pairs' interactions; `axes_seen`: the most axes of any pair (what the directions default
 // to).
 std::vector<PairInteraction> parse_interactions(const json& document, int dimension,
                                                 const Reader& r, std::size_t& axes_seen) {
@@ -389,10 +391,12 @@ std::vector<PairInteraction> parse_interactions(const json& document, int dimens
     pair.second = r.integer(cats[1], where + ".categories[1]");
     if (pair.first > pair.second) std::swap(pair.first, pair.second);
     const json& axes = r.array(r.field(interaction[p], where, "axes"), where + ".axes");
-    axes_seen = axes.size();
+    axes_seen = std::max(axes_seen, axes.size());
     for (std::size_t i = 0; i < axes.size(); ++i)
       pair.axes.push_back(
           parse_axis(axes[i], where + ".axes[" + std::to_string(i) + "]", dimension, r));
+    if (interaction[p].contains("choice"))
+      pair.choice = r.text(interaction[p]["choice"], where + ".choice");
     out.push_back(std::move(pair));
   }
   return out;

@@ -682,6 +682,9 @@ std::string SvgReader::category_of(pugi::xml_node node, const State& state,
   };
   switch (rule.kind) {
     case Kind::none:
+      // The project's own outputs name each element's category: read back, they keep it.
+      for (pugi::xml_node n = node; n; n = n.parent())
+        if (const pugi::xml_attribute a = n.attribute("data-category")) return a.value();
       return "default";
     case Kind::fill:
       return paint("fill", "black");

@@ -286,6 +286,7 @@ SceneStatistics compute_statistics(const geometry::Scene& scene, const Statistic
   const geometry::PairMeasurer measurer(scene, measurement);
   const std::vector<geometry::PairRecord> pairs = measurer.all_pairs(scene.elements, range);
   const int axes = measurer.bins().axis_count();
+  stats.relations = category_relations(scene, measurer);
 
   std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
   for (const geometry::PairRecord& p : pairs) {

@@ -15,6 +15,7 @@
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
 #include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/metrics/relations.hpp"
 
 namespace shapeproc::metrics {
 
@@ -97,6 +98,9 @@ struct SceneStatistics {
   std::vector<int> counts;        // per category
   std::vector<double> intensity;  // per category, per unit area (volume)
   Collisions collisions;
+  // Per category, the shares of its elements nested in or overlapping another category's
+  // (relations.hpp); empty for one category, points or 3D.
+  CategoryRelations relations;
   DirectionalStatistics all;                // every direction: `nearest` is G(r)
   std::vector<DirectionalStatistics> axes;  // per axis bin
   std::vector<double> correlation_r;        // bin centres

@@ -59,6 +59,21 @@ struct LikelihoodRecord {
   std::vector<double> observed, expected, expected_standard_error, z;
 };
 
+// The density check on the output's scale (fit/density_calibration.hpp): chains from empty on a
+// torus `multiple` times the exemplar's window along each axis, their per-category density against
+// the exemplar's, and the corrections made until it agreed.
+struct CalibrationRecord {
+  double multiple = 2.0;
+  int rounds = 0;          // chains run
+  bool converged = false;  // the last chain's densities agreed within the tolerance
+  bool ran_away = false;   // some chain ran away, and the attraction was shrunk
+  std::vector<double> ratio_before,
+      ratio_after;                  // per category: the chain's density / the exemplar's
+  std::vector<double> beta_factor;  // per category: β multiplied by this
+  double attraction_shrink = 1.0;   // every log γ > 0 multiplied by this
+  double seconds = 0.0;
+};
+
 // An `edit` of the model: the file it was read from, the command line, the edits made.
 struct ModelEdit {
   std::string from;
@@ -81,6 +96,8 @@ struct FitRecord {
   std::vector<std::string> notes;
   // The maximum likelihood, when the fit refined to it.
   std::optional<LikelihoodRecord> likelihood;
+  // The density check on the output's scale, when the fit ran it.
+  std::optional<CalibrationRecord> calibration;
   // The command that fitted: the exemplar's file, its arguments and its options as name and
   // value ("reader.tile", "true"), and the times a tile was repeated for the fit (0: none).
   std::string exemplar;

@@ -5,6 +5,12 @@
 
 namespace shapeproc::model {
 
+namespace {
+// The cut-off that measures a pair whose range ends at or below 0 (a hard core alone): any
+// positive distance is beyond it.
+constexpr double kContactCutoff = 1e-9;
+}  // namespace
+
 Interaction::Interaction(const ShapeProcessModel& model)
     : categories_(static_cast<int>(model.categories.size())) {
   pair_index_.assign(static_cast<std::size_t>(categories_) * static_cast<std::size_t>(categories_),
@@ -54,7 +60,7 @@ Interaction::Interaction(const ShapeProcessModel& model)
 int Interaction::band(int ca, int cb, int axis, double distance) const {
   const int p = pair_of(ca, cb);
   if (p < 0) return kBeyond;
-  const std::vector<double>& d = pairs_[p].axes[static_cast<std::size_t>(axis)].thresholds;
+  const std::vector<double>& d = axis_of(p, axis).thresholds;
   if (distance < d.front()) return kHardCore;
   if (distance >= d.back()) return kBeyond;
   // γ_k on [δ_{k−1}, δ_k): the first threshold strictly above the distance ends the band.
@@ -63,15 +69,13 @@ int Interaction::band(int ca, int cb, int axis, double distance) const {
 }
 
 int Interaction::parameter(int ca, int cb, int axis, int band) const {
-  return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].first_parameter + band;
+  return axis_of(pair_of(ca, cb), axis).first_parameter + band;
 }
 
 double Interaction::log_gamma(int ca, int cb, int axis, int band) const {
   if (band == kBeyond) return 0.0;
   if (band == kHardCore) return -std::numeric_limits<double>::infinity();
-  return pairs_[pair_of(ca, cb)]
-      .axes[static_cast<std::size_t>(axis)]
-      .log_gammas[static_cast<std::size_t>(band)];
+  return axis_of(pair_of(ca, cb), axis).log_gammas[static_cast<std::size_t>(band)];
 }
 
 PairEffect pair_distance_effect(const Interaction& interaction,
@@ -80,16 +84,20 @@ PairEffect pair_distance_effect(const Interaction& interaction,
   PairEffect effect;
   if (!interaction.interacts(xi.category, neighbour.category)) return effect;
   const double reach = interaction.max_range(xi.category, neighbour.category);
-  if (!(reach > 0)) return effect;
+  const double hard_core = interaction.min_hard_core(xi.category, neighbour.category);
+  // A pair with a hard core only (no band) may have its range at 0 or below: it is measured up to
+  // a positive cut-off all the same, to tell a violation from contact.
+  if (!(reach > 0) && !(hard_core < 0 || reach == 0.0)) return effect;
+  const double cutoff = reach > 0 ? reach : kContactCutoff;
   const geometry::Measurement m = measurer.measure_distance(
-      xi, neighbour, reach, &interaction.breakpoints(xi.category, neighbour.category));
+      xi, neighbour, cutoff, &interaction.breakpoints(xi.category, neighbour.category));
   effect.distance = m.distance;
   effect.offset = m.offset;
-  if (m.distance >= reach) return effect;
-  if (m.distance < interaction.min_hard_core(xi.category, neighbour.category)) {
+  if (m.distance < hard_core) {
     effect.band = Interaction::kHardCore;
     return effect;
   }
+  if (m.distance >= reach) return effect;
   effect.axis_pending = true;
   return effect;
 }
@@ -98,6 +106,11 @@ void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& m
                  const geometry::Element& xi, const geometry::Element& neighbour,
                  PairEffect& effect) {
   if (!effect.axis_pending) return;
+  if (interaction.isotropic(xi.category, neighbour.category)) {
+    effect.band = interaction.band(xi.category, neighbour.category, 0, effect.distance);
+    effect.axis_pending = false;
+    return;
+  }
   const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, effect.offset);
   effect.axis =
       known >= 0

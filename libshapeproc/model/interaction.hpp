@@ -48,8 +48,10 @@ class Interaction {
 
   // δ_0 … δ_K of a pair's axis (the pair must interact).
   const std::vector<double>& thresholds(int ca, int cb, int axis) const {
-    return pairs_[pair_of(ca, cb)].axes[static_cast<std::size_t>(axis)].thresholds;
+    return axis_of(pair_of(ca, cb), axis).thresholds;
   }
+  // Whether the pair's interaction is the same along every axis: its axis need not be measured.
+  bool isotropic(int ca, int cb) const { return pairs_[pair_of(ca, cb)].axes.size() == 1; }
   // Band of a pair at `distance` along `axis`: kHardCore, kBeyond or k in 0..K-1 (γ_{k+1}).
   int band(int ca, int cb, int axis, double distance) const;
   // θ index of a band (betas come first: θ[c] = log β_c).
@@ -77,6 +79,11 @@ class Interaction {
     double min_hard_core = 0.0, max_hard_core = 0.0, max_range = 0.0;
     std::vector<double> breakpoints;
   };
+  // An isotropic pair has one axis, which serves every axis bin.
+  const Axis& axis_of(int pair, int axis) const {
+    const std::vector<Axis>& axes = pairs_[static_cast<std::size_t>(pair)].axes;
+    return axes[axes.size() == 1 ? 0 : static_cast<std::size_t>(axis)];
+  }
   int pair_of(int ca, int cb) const {
     return pair_index_[static_cast<std::size_t>(ca) * static_cast<std::size_t>(categories_) +
                        static_cast<std::size_t>(cb)];

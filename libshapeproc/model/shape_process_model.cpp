@@ -94,13 +94,19 @@ void validate_axis(const AxisParameters& axis, const std::string& at,
     fail(at + ".thresholds", "at least the hard-core distance d0 is needed");
   for (std::size_t k = 0; k < axis.thresholds.size(); ++k) {
     const double d = axis.thresholds[k];
-    if (!(std::isfinite(d) && d >= 0))
-      fail(at + ".thresholds[" + std::to_string(k) + "]",
-           "must be finite and >= 0, got " + number(d));
+    if (!std::isfinite(d))
+      fail(at + ".thresholds[" + std::to_string(k) + "]", "must be finite, got " + number(d));
     if (k > 0 && d < axis.thresholds[k - 1]) {
       fail(at + ".thresholds",
            "must not decrease, got " + number(d) + " after " + number(axis.thresholds[k - 1]));
     }
+  }
+  // A negative hard core lets the pair overlap (signed distances below 0 are overlap depths); its
+  // bands, if it has any, must then reach beyond contact.
+  if (axis.thresholds.front() < 0 && axis.thresholds.size() > 1 && !(axis.thresholds.back() > 0)) {
+    fail(at + ".thresholds", "a pair that may overlap (d0 " + number(axis.thresholds.front()) +
+                                 " < 0) needs a last threshold above 0, got " +
+                                 number(axis.thresholds.back()));
   }
   if (axis.gammas.size() + 1 != axis.thresholds.size()) {
     fail(at + ".gammas", "expected " + std::to_string(axis.thresholds.size() - 1) +
@@ -132,10 +138,10 @@ void validate_interactions(const ShapeProcessModel& model, const geometry::Direc
                              static_cast<std::size_t>(b);
     if (seen[slot]) fail(where + ".categories", "this pair of categories is listed twice");
     seen[slot] = true;
-    if (static_cast<int>(pair.axes.size()) != bins.axis_count()) {
-      fail(where + ".axes", "expected " + std::to_string(bins.axis_count()) + " axes for " +
-                                std::to_string(model.measurement.directions) + " directions in " +
-                                std::to_string(model.dimension) + "D, got " +
+    if (static_cast<int>(pair.axes.size()) != bins.axis_count() && pair.axes.size() != 1) {
+      fail(where + ".axes", "expected 1 (isotropic) or " + std::to_string(bins.axis_count()) +
+                                " axes for " + std::to_string(model.measurement.directions) +
+                                " directions in " + std::to_string(model.dimension) + "D, got " +
                                 std::to_string(pair.axes.size()));
     }
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {

@@ -43,17 +43,25 @@ struct CategoryParameters {
 
 struct AxisParameters {
   geometry::Vec3 direction = geometry::Vec3::UnitX();  // representative canonical direction
-  std::vector<double> thresholds;                      // δ_0 ≤ δ_1 ≤ … ≤ δ_K
-  std::vector<double> gammas;                          // γ_1 … γ_K (≥ 0)
-  std::vector<double> gamma_standard_errors;           // NaN where not estimated
-  std::vector<ParameterStatus> status;                 // per band
-  std::vector<int> observed_pairs;                     // exemplar pairs per band (fit only)
+  // δ_0 ≤ δ_1 ≤ … ≤ δ_K on the signed shape distance: below 0 it is minus the depth of an
+  // overlap (geometry/overlap_depth.hpp), so δ_0 < 0 lets the pair overlap or nest that deep.
+  std::vector<double> thresholds;
+  std::vector<double> gammas;                 // γ_1 … γ_K (≥ 0)
+  std::vector<double> gamma_standard_errors;  // NaN where not estimated
+  std::vector<ParameterStatus> status;        // per band
+  std::vector<int> observed_pairs;            // exemplar pairs per band (fit only)
 };
 
-// The interaction of one unordered pair of categories: one entry per axis bin.
+// The interaction of one unordered pair of categories: one entry per axis bin, or a single one
+// that holds for every direction (an isotropic pair: the fit pools the axes of a pair whose
+// exemplar pairs are too few to fit each, fit/parameter_budget.hpp).
 struct PairInteraction {
   int first = 0, second = 0;  // category indices, first ≤ second
   std::vector<AxisParameters> axes;
+  // Why the fit gave the pair these axes and bands ("isotropic, 1 band: 10 elements of 'tree'");
+  // empty for a pair fitted with every axis and band, or written by hand.
+  std::string choice;
+  bool isotropic() const { return axes.size() == 1; }
 };
 
 struct MeasurementSettings {
@@ -126,11 +134,12 @@ struct ShapeProcessModel {
   geometry::Scene shape_space() const;
 };
 
-// Checks every invariant (β > 0 finite, thresholds finite, ≥ 0 and not decreasing, one γ per band,
+// Checks every invariant (β > 0 finite, thresholds finite and not decreasing, a last one above 0
+// where the first is below (a pair that may overlap), one γ per band,
 // γ ≥ 0 finite, categories in range and each pair once, axes matching the canonical directions of
-// `measurement.directions`, shape categories in range, shape dimensions matching). Throws
-// std::invalid_argument with the path of the offending field ("interaction[1].axes[2].gammas[0]:
-// must be finite and >= 0, got -1").
+// `measurement.directions` (or one, isotropic), shape categories in range, shape dimensions
+// matching). Throws std::invalid_argument with the path of the offending field
+// ("interaction[1].axes[2].gammas[0]: must be finite and >= 0, got -1").
 void validate(const ShapeProcessModel& model);
 
 const char* to_string(ParameterStatus status);

@@ -59,12 +59,21 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" "
          "fill=\"white\"/>\n";
   const double reach = std::max(model.interaction_range(), 1e-12);
+  // Overlaps are distances below 0 (minus their depth): the radius starts at the deepest hard
+  // core, so that an overlapping pair's bands show inside the circle drawn at contact.
+  double lowest = 0.0;
+  for (const model::PairInteraction& pair : model.interactions)
+    for (const model::AxisParameters& a : pair.axes)
+      lowest = std::min(lowest, a.thresholds.front());
+  const auto share = [&](double d) {
+    return std::clamp((d - lowest) / (reach - lowest), 0.0, 1.0);
+  };
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const model::PairInteraction& pair = model.interactions[p];
     const double x0 = margin + static_cast<double>(p) * (size + margin), cx = x0 + size / 2,
                  cy = margin + size / 2;
     const double outer = size / 2 - 4;
-    auto radius = [&](double d) { return outer * std::min(1.0, d / reach) * 0.92; };
+    auto radius = [&](double d) { return outer * share(d) * 0.92; };
     svg << "<text x=\"" << cx << "\" y=\"" << margin - 10 << "\" text-anchor=\"middle\">"
         << core::xml_escape(model.categories[static_cast<std::size_t>(pair.first)].name) << " - "
         << core::xml_escape(model.categories[static_cast<std::size_t>(pair.second)].name)
@@ -94,19 +103,25 @@ std::string interaction_plot_svg(const model::ShapeProcessModel& model) {
           }
         }
       }
+      if (lowest < 0) {
+        svg << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << radius(0.0)
+            << "\" fill=\"none\" stroke=\"#c00\" stroke-dasharray=\"2,2\"><title>contact: inside, "
+               "overlaps</title></circle>\n";
+      }
       svg << "<text x=\"" << cx << "\" y=\"" << cy + outer + 16
-          << "\" text-anchor=\"middle\">radius: distance 0 to " << fmt(reach) << " " << model.units
-          << "</text>\n";
+          << "\" text-anchor=\"middle\">radius: distance " << fmt(lowest) << " to " << fmt(reach)
+          << " " << model.units << "</text>\n";
     } else {
       const double bar =
           std::min(24.0, size / static_cast<double>(std::max<std::size_t>(axes, 1)) - 4);
       for (std::size_t i = 0; i < axes; ++i) {
         const model::AxisParameters& a = pair.axes[i];
         const double y = margin + static_cast<double>(i) * (bar + 4);
-        auto x = [&](double d) { return x0 + 40 + (size - 44) * std::min(1.0, d / reach); };
+        auto x = [&](double d) { return x0 + 40 + (size - 44) * share(d); };
         svg << "<text x=\"" << x0 << "\" y=\"" << y + bar * 0.7 << "\">axis " << i << "</text>\n";
-        svg << "<rect x=\"" << x(0) << "\" y=\"" << y << "\" width=\""
-            << x(a.thresholds.front()) - x(0) << "\" height=\"" << bar << "\" fill=\"black\"/>\n";
+        svg << "<rect x=\"" << x(lowest) << "\" y=\"" << y << "\" width=\""
+            << x(a.thresholds.front()) - x(lowest) << "\" height=\"" << bar
+            << "\" fill=\"black\"/>\n";
         for (std::size_t k = 0; k < a.gammas.size(); ++k) {
           svg << "<rect x=\"" << x(a.thresholds[k]) << "\" y=\"" << y << "\" width=\""
               << std::max(0.0, x(a.thresholds[k + 1]) - x(a.thresholds[k])) << "\" height=\"" << bar

@@ -59,6 +59,10 @@ nlohmann::json evaluation_json(const evaluation::EvaluatedScene& scene,
     nlohmann::json entry = {
         {"name", s.categories[c]}, {"count", s.counts[c]}, {"intensity", s.intensity[c]}};
     if (e.comparison) entry["intensity_ratio"] = number(e.comparison->intensity_ratio[c]);
+    if (!s.relations.empty()) {
+      entry["nested"] = s.relations.nested[c];
+      entry["overlapping"] = s.relations.overlapping[c];
+    }
     categories.push_back(entry);
   }
   auto directional = [&](const metrics::DirectionalStatistics& d,

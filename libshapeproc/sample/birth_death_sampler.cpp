@@ -12,6 +12,7 @@
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
 #include "libshapeproc/sample/domain_decomposition.hpp"
+#include "libshapeproc/sample/runaway.hpp"
 #include "libshapeproc/sample/stationarity.hpp"
 
 namespace shapeproc::sample {
@@ -190,6 +191,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
     if (options_.trace_every > 0 && step % options_.trace_every == 0) {
       result.trace.push_back({step, chain.size(), chain.log_density()});
     }
+    if (options_.runaway_count > 0 && chain.size() > options_.runaway_count)
+      throw_runaway(model_, chain.size(), options_.runaway_count);
     if (step % progress_every == 0 || step == total) {
       if (control.cancelled()) throw core::Cancelled();
       if (control.progress) control.progress(step, total);

@@ -41,6 +41,10 @@ struct SamplerOptions {
   // `max_iterations` (then the result is not stationary).
   long long iterations = 0;
   long long max_iterations = 5'000'000;
+  // A chain whose element count passes this many has run away (a model that condenses on this
+  // domain): it stops with a core::ArgumentError naming the model's strongest attraction
+  // (runaway.hpp). 0: no limit (the maximum-likelihood fit's chains, which probe such models).
+  long long runaway_count = 0;
   double shift_probability =
       1.0 / 3.0;  // share of steps that shift an element (0: pure birth-death)
   // The share of birth proposals drawn near an element, at an offset the exemplar showed

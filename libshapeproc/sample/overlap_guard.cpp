@@ -41,10 +41,22 @@ std::vector<std::vector<double>> breakpoints_of(const model::Interaction& intera
   return breakpoints;
 }
 
+// Per pair of categories: whether its hard core lets it overlap (then the guard has nothing to
+// keep apart).
+std::vector<char> overlap_allowed(const model::Interaction& interaction) {
+  std::vector<char> allowed;
+  const int categories = interaction.category_count();
+  for (int a = 0; a < categories; ++a)
+    for (int b = 0; b < categories; ++b)
+      allowed.push_back(interaction.interacts(a, b) && interaction.min_hard_core(a, b) < 0.0);
+  return allowed;
+}
+
 }  // namespace
 
 OverlapGuard::OverlapGuard(const OverlapGuard& same_shapes, const model::Interaction& interaction)
     : breakpoints_(breakpoints_of(interaction)),
+      overlap_allowed_(overlap_allowed(interaction)),
       categories_(interaction.category_count()),
       outlines_(same_shapes.outlines_),
       error_(same_shapes.error_) {}
@@ -52,7 +64,9 @@ OverlapGuard::OverlapGuard(const OverlapGuard& same_shapes, const model::Interac
 OverlapGuard::OverlapGuard(const model::Interaction& interaction,
                            const geometry::Scene& shape_space,
                            const geometry::PairMeasurer& proxies)
-    : breakpoints_(breakpoints_of(interaction)), categories_(interaction.category_count()) {
+    : breakpoints_(breakpoints_of(interaction)),
+      overlap_allowed_(overlap_allowed(interaction)),
+      categories_(interaction.category_count()) {
   const geometry::MeasurementOptions& options = proxies.options();
   if (options.distance != geometry::DistanceKind::shape ||
       !(options.proxy.tolerance > geometry::kOutlineTolerance) || shape_space.shapes.empty())
@@ -83,7 +97,9 @@ OverlapGuard::~OverlapGuard() = default;
 
 bool OverlapGuard::overlaps(const geometry::Element& xi, const geometry::Element& other,
                             const geometry::Vec3& offset, double proxy_distance) const {
-  if (!outlines_) return false;
+  if (!outlines_ ||
+      overlap_allowed_[static_cast<std::size_t>(xi.category * categories_ + other.category)])
+    return false;
   const double margin =
       error_[static_cast<std::size_t>(xi.shape)] + error_[static_cast<std::size_t>(other.shape)];
   // The proxies' distance is only known to lie in its interval between breakpoints: the guard

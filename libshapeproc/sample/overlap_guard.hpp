@@ -1,12 +1,13 @@
-// The drawn outlines kept apart. A model's hard cores forbid overlap (every δ_0 is at least 0, and
-// overlapping shapes are at a negative distance), but on the proxies, which stray from the drawn
+// The drawn outlines kept apart. A model's hard cores at 0 or above forbid overlap (overlapping
+// shapes are at a negative distance), but on the proxies, which stray from the drawn
 // outlines by up to their tolerance (1% of an element's diagonal by default): chords cut inside a
 // dot's arc, so two dots whose proxies touch overlap as drawn (Hero random-shapes: proxies 0.031
 // apart, outlines overlapping by 0.004). Where two elements' proxies come within that error of
 // touching, the guard measures them again on proxies as close to the drawn outlines as collisions
 // are judged (geometry::kOutlineTolerance), and an overlap there is a hard-core violation like any
 // other. It changes the model's density only on that sliver of configurations, which the exemplar
-// (its outlines apart) never visits.
+// (its outlines apart) never visits. Pairs whose hard core is below 0 (the exemplar overlaps or
+// nests them) are left to the model.
 #pragma once
 
 #include <memory>
@@ -44,6 +45,8 @@ class OverlapGuard {
   // Per pair of categories (a × categories + b): the pair's breakpoints (Interaction), empty
   // where it does not interact.
   std::vector<std::vector<double>> breakpoints_;
+  // Per pair of categories: its hard core is below 0, so overlaps are the model's to judge.
+  std::vector<char> overlap_allowed_;
   int categories_ = 0;
   std::shared_ptr<const geometry::PairMeasurer> outlines_;  // null when inactive
   // Per shape: how far its proxy and its fine proxy may stray from the drawn outline together

@@ -533,15 +533,15 @@ TEST(Fit, AnAutomaticWindowAbandonsATorusFitFromACondensedStart) {
 }
 
 // Once a sample has grown to more chains, each new θ runs half of them first, and the rest only
-// where that half is worth fewer than 20 independent observations: two-kinds' fit at seed 2 grows
-// to 26 chains near its estimate, and at the next θ 14 are worth enough.
+// where that half is worth fewer than 20 independent observations: two-kinds' fit at seed 22
+// grows its sample near its estimate, and at later θ half of it is worth enough (3 times).
 TEST(Fit, AtANewThetaHalfOfAGrownSampleRunsFirst) {
   io::ReaderOptions by_fill;
   by_fill.category_by = io::CategoryRule::parse("fill");
   std::vector<MleProgress> reports;
   const FitResult fit = automatic_fit(
       io::read_scene(testing::data_path("svg/two-kinds.svg"), by_fill),
-      [&](const MleProgress& p) { reports.push_back(p); }, 2);
+      [&](const MleProgress& p) { reports.push_back(p); }, 22);
   int grown = 0;  // the most chains of a sample of the current fit so far
   int halves = 0;
   for (std::size_t i = 0; i < reports.size(); ++i) {

@@ -32,6 +32,20 @@ TEST(CsvPoints, ThreeDimensional) {
   EXPECT_DOUBLE_EQ(scene.window_measure(), 64.0);
 }
 
+TEST(CsvPoints, ARadiusColumnMakesDiscsOneShapePerRadius) {
+  const geometry::Scene scene = parse_csv_points("x,y,category,radius\n2,2,a,1\n6,6,b,2\n8,2,a,1\n",
+                                                 "d.csv", window("0,10,0,10"));
+  ASSERT_EQ(scene.elements.size(), 3u);
+  ASSERT_EQ(scene.shapes.size(), 2u);
+  EXPECT_EQ(scene.elements[0].shape, scene.elements[2].shape);
+  EXPECT_NE(scene.elements[0].shape, scene.elements[1].shape);
+  const geometry::Box3 box = geometry::bounding_box(scene.shapes[scene.elements[1].shape]);
+  EXPECT_NEAR(box.sizes().x(), 4.0, 1e-9);
+  EXPECT_NEAR(box.sizes().y(), 4.0, 1e-9);
+  EXPECT_NEAR(box.center().x(), 0.0, 1e-9);
+  EXPECT_EQ(geometry::dimension(scene.shapes[0]), 2);
+}
+
 struct BadCsv {
   const char* name;
   const char* text;
@@ -67,7 +81,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCsv{"short_row", "x,y\n1\n", "0,2,0,2", "expected 2 fields", 2},
                       BadCsv{"outside", "x,y\n1,1\n5,1\n", "0,2,0,2", "outside", 3},
                       BadCsv{"header_only", "x,y\n", "0,2,0,2", "no points", 0},
-                      BadCsv{"duplicate_column", "x,x,y\n1,1,1\n", "0,2,0,2", "twice", 1}),
+                      BadCsv{"duplicate_column", "x,x,y\n1,1,1\n", "0,2,0,2", "twice", 1},
+                      BadCsv{"zero_radius", "x,y,radius\n1,1,0\n", "0,2,0,2", "positive", 2},
+                      BadCsv{"bad_radius", "x,y,radius\n1,1,r\n", "0,2,0,2", "got 'r'", 2},
+                      BadCsv{"radius_3d", "x,y,z,radius\n1,1,1,1\n", "0,2,0,2,0,2", "2D", 1}),
     [](const ::testing::TestParamInfo<BadCsv>& param_info) {
       return std::string(param_info.param.name);
     });

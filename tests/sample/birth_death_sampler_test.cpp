@@ -49,6 +49,30 @@ TEST(BirthDeath, PoissonCountsFollowPoisson) {
   EXPECT_NEAR(variance / mean, 1.0, 4 * std::sqrt(2.0 / (runs - 1)));
 }
 
+TEST(BirthDeath, AChainThatRunsAwayStopsNamingItsAttraction) {
+  // γ 30 within 3 and no hard core: the count grows without bound; the stop at 300 elements
+  // (Poisson: 20 expected) ends it with the attraction named.
+  const model::ShapeProcessModel m = testing::point_model(0.01, {0.0, 3.0}, {30.0});
+  const geometry::Domain domain = geometry::Domain::from_sizes({50, 40}, geometry::Boundary::torus);
+  SamplerOptions options;
+  options.runaway_count = 300;
+  try {
+    sample_with_seed(m, domain, options, 1);
+    FAIL() << "no runaway";
+  } catch (const core::ArgumentError& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("ran away: 301 elements, past 300"), std::string::npos) << text;
+    EXPECT_NE(text.find("γ 30 between 'points' and 'points' at distances 0 to 3"),
+              std::string::npos)
+        << text;
+  }
+  // Without the limit, and with γ = 1, the same chain is a Poisson process of 20 elements.
+  options.runaway_count = 300;
+  options.iterations = 4000;
+  EXPECT_LT(sample_with_seed(testing::point_model(0.01), domain, options, 1).scene.elements.size(),
+            300u);
+}
+
 // Border correction: fixed elements stay where they are, free ones are born only in the free
 // region and keep the hard core against the fixed ones. Free points (category 0) do not interact
 // with each other, only with the fixed kind (category 1, β ≈ 0: never born), so their count is

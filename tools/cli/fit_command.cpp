@@ -1,6 +1,7 @@
 // shapeproc fit EXEMPLAR -o model.json: the thresholds, the maximum pseudo-likelihood and, by
 // default, the maximum likelihood (fit::fit_exemplar).
 #include <iomanip>
+#include <limits>
 #include <memory>
 
 #include "libshapeproc/core/atomic_file.hpp"
@@ -160,8 +161,10 @@ void FitFlags::add_to(CLI::App& command) {
   command
       .add_option("--estimator", estimator,
                   "mle (maximum likelihood by MCMC, started from the MPL fit; every edge "
-                  "treatment) or mpl (maximum pseudo-likelihood alone, fast); see docs/fit.md")
-      ->check(CLI::IsMember({"mpl", "mle"}))
+                  "treatment), mpl (maximum pseudo-likelihood alone, fast) or auto (mle up to "
+                  "150 elements, else mpl); every fit is then checked on the output's scale; "
+                  "see docs/fit.md")
+      ->check(CLI::IsMember({"auto", "mpl", "mle"}))
       ->capture_default_str();
   command.add_option("--mle-chains", mle_chains, "MLE: chains per iteration")
       ->check(CLI::Range(1, 64))
@@ -202,10 +205,11 @@ fit::ExemplarFitOptions FitFlags::exemplar_options(const ReaderFlags& reader) co
   fit::ExemplarFitOptions options;
   options.fit = this->options(reader);
   options.tile = reader.tile;
-  if (estimator == "mle")
-    options.likelihood = mle_options();
-  else
+  if (estimator == "mpl")
     options.likelihood.reset();
+  else
+    options.likelihood = mle_options();
+  if (estimator == "mle") options.likelihood_elements = std::numeric_limits<std::size_t>::max();
   return options;
 }
 
@@ -226,7 +230,7 @@ fit::FitOptions FitFlags::options(const ReaderFlags& reader) const {
   fit::FitOptions o;
   o.threads = threads;
   const std::string treatment = edge_for(reader);
-  if (treatment == "stationary" && estimator != "mle")
+  if (treatment == "stationary" && estimator == "mpl")
     throw core::UsageError("--edge stationary is a maximum-likelihood fit: use --estimator mle");
   o.measurement.directions = directions;
   o.quantiles = number_list(quantiles, "--quantiles");

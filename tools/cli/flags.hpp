@@ -39,7 +39,7 @@ struct FitFlags {
   double proxy_tolerance = geometry::ProxyOptions{}.tolerance;
   double data_weight = fit::FitOptions{}.data_weight;
   std::string near_births = "auto";  // a share in [0, 0.95], or auto (fit::kAutomaticNearBirths)
-  std::string estimator = "mle";
+  std::string estimator = "auto";
   int mle_chains = fit::MleOptions{}.sampling.chains;
   long long mle_steps = fit::MleOptions{}.sampling.steps;
   std::uint64_t mle_seed = fit::MleOptions{}.sampling.seed;

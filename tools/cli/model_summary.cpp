@@ -128,11 +128,14 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
         << model.categories[static_cast<std::size_t>(pair.first)].name << " - "
         << model.categories[static_cast<std::size_t>(pair.second)].name
         << "  (gamma ± se (exemplar pairs in the band); hard core below d0)\n";
+    if (!pair.choice.empty()) out << "  chosen: " << pair.choice << '\n';
     for (std::size_t i = 0; i < pair.axes.size(); ++i) {
       const model::AxisParameters& a = pair.axes[i];
       out << "  axis " << i << "  " << std::setw(9)
-          << direction_degrees(a.direction, model.dimension) << "  d0 " << std::setw(8)
-          << g(a.thresholds.front());
+          << (pair.isotropic() && model.measurement.directions > 1
+                  ? std::string("all")
+                  : direction_degrees(a.direction, model.dimension))
+          << "  d0 " << std::setw(8) << g(a.thresholds.front());
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
         out << "  | " << k + 1 << " [" << g(a.thresholds[k]) << ", " << g(a.thresholds[k + 1])
             << "): " << gamma_text(a, k);

@@ -74,6 +74,9 @@ void print_evaluation(const evaluation::EvaluatedScene& scene, const evaluation:
         << " elements, " << format_general(s.intensity[c]) << " per " << unit << area;
     if (e.comparison)
       out << "  (x" << format_fixed(e.comparison->intensity_ratio[c], 2) << " the exemplar's)";
+    if (!s.relations.empty())
+      out << "; nested in another category " << format_fixed(s.relations.nested[c], 2)
+          << ", overlapping one " << format_fixed(s.relations.overlapping[c], 2);
     out << '\n';
   }
   const double fraction = s.elements() > 0 ? 100.0 * s.collisions.elements / s.elements() : 0.0;

@@ -1,0 +1,116 @@
+#include "libshapeproc/fit/density_calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/random.hpp"
+#include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
+#include "libshapeproc/sample/birth_death_sampler.hpp"
+
+namespace shapeproc::fit {
+
+namespace {
+
+constexpr double kLargestStep = 8.0;  // β changes by at most this factor per round
+
+// The torus of `multiple` windows along each axis, at the window's origin.
+geometry::Domain calibration_domain(const geometry::Scene& exemplar, double multiple) {
+  geometry::Box3 box = exemplar.window;
+  box.max() = box.min() + multiple * exemplar.window.sizes();
+  return geometry::Domain(box, exemplar.dimension, geometry::Boundary::torus);
+}
+
+struct Chain {
+  bool ran_away = false;
+  std::vector<double> ratio;  // per category
+};
+
+Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& domain,
+                const std::vector<double>& expected, double exemplar_density, std::uint64_t seed,
+                int threads) {
+  OutputSampling sampling;
+  sampling.exemplar_density = exemplar_density;
+  sampling.threads = threads;
+  const sample::ShapeProcessSampler sampler(model, domain,
+                                            output_sampler_options(model, domain, sampling));
+  core::Random random(seed);
+  Chain chain;
+  std::vector<double> counts(expected.size(), 0.0);
+  try {
+    for (const geometry::Element& e : sampler.sample(random).scene.elements)
+      counts[static_cast<std::size_t>(e.category)] += 1;
+  } catch (const core::ArgumentError&) {
+    chain.ran_away = true;  // the runaway stop: the only refusal a valid model's chain makes
+    return chain;
+  }
+  for (std::size_t c = 0; c < expected.size(); ++c) chain.ratio.push_back(counts[c] / expected[c]);
+  return chain;
+}
+
+bool agrees(const std::vector<double>& ratio, const std::vector<double>& expected,
+            double tolerance) {
+  for (std::size_t c = 0; c < ratio.size(); ++c) {
+    const double allowed = std::max(tolerance, 2.0 / std::sqrt(std::max(1.0, expected[c])));
+    if (std::abs(ratio[c] - 1.0) > allowed) return false;
+  }
+  return true;
+}
+
+void shrink_attraction(model::ShapeProcessModel& model, double factor) {
+  for (model::PairInteraction& pair : model.interactions)
+    for (model::AxisParameters& axis : pair.axes)
+      for (double& g : axis.gammas)
+        if (g > 1.0) g = std::exp(factor * std::log(g));
+}
+
+}  // namespace
+
+model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
+                                           const geometry::Scene& exemplar,
+                                           const CalibrationOptions& options) {
+  const core::Stopwatch clock;
+  model::CalibrationRecord record;
+  record.multiple = options.multiple;
+  const std::size_t categories = model.categories.size();
+  record.beta_factor.assign(categories, 1.0);
+  const geometry::Domain domain = calibration_domain(exemplar, options.multiple);
+  const double scale = std::pow(options.multiple, exemplar.dimension);
+  std::vector<double> expected(categories, 0.0);
+  for (const geometry::Element& e : exemplar.elements)
+    expected[static_cast<std::size_t>(e.category)] += scale;
+  const double density = static_cast<double>(exemplar.elements.size()) / exemplar.window_measure();
+  for (int round = 1; round <= options.rounds; ++round) {
+    if (options.progress) options.progress(round, options.rounds);
+    const Chain chain =
+        run_chain(model, domain, expected, density,
+                  options.seed + static_cast<std::uint64_t>(round - 1), options.threads);
+    record.rounds = round;
+    if (chain.ran_away) {
+      record.ran_away = true;
+      record.attraction_shrink *= 0.5;
+      shrink_attraction(model, 0.5);
+      continue;
+    }
+    if (record.ratio_before.empty()) record.ratio_before = chain.ratio;
+    record.ratio_after = chain.ratio;
+    if (agrees(chain.ratio, expected, options.tolerance)) {
+      record.converged = true;
+      break;
+    }
+    if (round == options.rounds) break;
+    for (std::size_t c = 0; c < categories; ++c) {
+      const double r = chain.ratio[c];
+      // None at all says only that β is far too low: the largest step, squared.
+      const double step = r > 0 ? std::clamp(1.0 / r, 1.0 / kLargestStep, kLargestStep)
+                                : kLargestStep * kLargestStep;
+      model.categories[c].beta *= step;
+      record.beta_factor[c] *= step;
+    }
+  }
+  record.seconds = clock.seconds();
+  return record;
+}
+
+}  // namespace shapeproc::fit

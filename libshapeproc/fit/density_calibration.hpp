@@ -1,0 +1,41 @@
+// The fitted model checked where it will be used (docs/fit.md, "Density on the output's scale").
+// A model fitted on a small window can reproduce the exemplar's density there and not on a larger
+// domain: an attraction that a window's edges hold in check condenses on a torus of four windows,
+// and an estimate that the pseudo-likelihood could not bound (a packed exemplar) leaves β far off.
+// So, before a fit is returned, chains from empty on a torus `multiple` times the exemplar's window
+// along each axis, sampled as an output is (fit/output_sampling.hpp), measure each category's
+// density against the exemplar's, and the model is corrected until they agree:
+//   - a chain that runs away (sample/runaway.hpp) halves every log γ > 0 (shrinks the attraction
+//     towards 1) and the check runs again;
+//   - otherwise each category whose density is off by more than the tolerance has β_c multiplied
+//     by exemplar density / chain density (clamped to [1/8, 8]): the counts' moment equation that
+//     the maximum likelihood solves, solved on the larger domain by a few fixed-point steps.
+// The record (model::CalibrationRecord) keeps the ratios before and after and the corrections.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "libshapeproc/geometry/scene.hpp"
+#include "libshapeproc/model/shape_process_model.hpp"
+
+namespace shapeproc::fit {
+
+struct CalibrationOptions {
+  double multiple = 2.0;  // the torus: the exemplar's window times this along each axis
+  // A category's density agrees when its ratio to the exemplar's is within this, or within two
+  // Poisson standard errors of its expected count (2 / √expected), whichever is wider.
+  double tolerance = 0.08;
+  int rounds = 4;  // chains at most (each correction is followed by a chain that checks it)
+  std::uint64_t seed = 1;
+  int threads = 0;  // of each chain (0: one per core); the result does not depend on them
+  // Called before each chain with its number (1-based) and the most there may be.
+  std::function<void(int round, int rounds)> progress;
+};
+
+// Checks `model` (fitted to `exemplar`, which gives the densities) and corrects it in place.
+model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
+                                           const geometry::Scene& exemplar,
+                                           const CalibrationOptions& options);
+
+}  // namespace shapeproc::fit

@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""The corpus table (docs/results/corpus.md): every exemplar of data/corpus/MANIFEST.tsv (and any
+further SVG folders given, read with --tile as seamless tiles), synthesised as a user would
+(`shapeproc synthesize EXEMPLAR FLAGS --size 2W,2H --seed S`, every other flag at its default) at
+several seeds, and the output measured against its exemplar with `shapeproc stats --against`:
+
+  whether it was refused; density overall and per category of 10 or more elements; the shares of
+  each category's elements inside, or overlapping, another category's (against the exemplar's);
+  W1 of nearest-neighbour distances in the exemplar's mean spacings; the patch copy share (with its
+  chance level); the seconds of the whole command, fit included.
+
+Rows are min / median / max over the seeds. Targets (docs/fit.md): no refusal; density within
+±15% overall and ±25% per category; relation shares within 0.15; W1 at most 0.2 mean spacings.
+
+Usage: python3 scripts/corpus_table.py [--seeds 1,2,3] [--timeout 600] [--only A,B]
+       [--tiles DIR] OUT.md
+"""
+import argparse
+import csv
+import datetime
+import json
+import os
+import statistics
+import subprocess
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SHAPEPROC = os.environ.get("SHAPEPROC", os.path.join(ROOT, "build", "tools", "shapeproc"))
+# The build whose `stats` measures every output (SHAPEPROC_STATS): the same by default; another
+# build's outputs (an earlier version's) are measured by this one's.
+STATS = os.environ.get("SHAPEPROC_STATS", os.path.join(ROOT, "build", "tools", "shapeproc"))
+CORPUS = os.path.join(ROOT, "data", "corpus")
+
+
+def run(args, timeout, program=None):
+    start = time.monotonic()
+    p = subprocess.run([program or SHAPEPROC] + args, capture_output=True, text=True,
+                       timeout=timeout)
+    return p, time.monotonic() - start
+
+
+def last_line(p, work):
+    return (p.stderr.strip().splitlines() or ["?"])[-1].replace(work + os.sep, "")
+
+
+def measure(path, flags, seed, timeout, pictures):
+    """One output: a dict of figures, or {'error': text}."""
+    name = os.path.splitext(os.path.basename(path))[0]
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "out.svg")
+        png = os.path.join(pictures, f"{name}-seed{seed}.png")
+        command = ["synthesize", path, *flags, "--size", "2W,2H", "--seed", str(seed), "-o", out,
+                   "--png", png, "--force"]
+        try:
+            p, seconds = run(command, timeout)
+        except subprocess.TimeoutExpired:
+            return {"error": f"timed out after {timeout:g} s"}
+        if p.returncode != 0:
+            return {"error": last_line(p, work), "seconds": seconds}
+        q, _ = run(["stats", out, "--against", path, *flags, "--json"], 600, STATS)
+        e, _ = run(["stats", path, *flags, "--json"], 600, STATS)
+        if q.returncode != 0 or e.returncode != 0:
+            return {"error": "stats: " + last_line(q if q.returncode else e, work)}
+        s, x = json.loads(q.stdout), json.loads(e.stdout)
+    cats = s["categories"]
+    wanted = sum(c["count"] / c["intensity_ratio"] for c in cats if c.get("intensity_ratio"))
+    ex_counts = {c["name"]: c["count"] for c in x["categories"]}
+    per_cat = [c["intensity_ratio"] for c in cats
+               if c.get("intensity_ratio") is not None and ex_counts.get(c["name"], 0) >= 10]
+    relation = 0.0
+    ex_rel = {c["name"]: c for c in x["categories"]}
+    for c in cats:
+        r = ex_rel.get(c["name"], {})
+        for key in ("nested", "overlapping"):
+            if key in c and key in r:
+                relation = max(relation, abs(c[key] - r[key]))
+    w1 = s["all"]["w1"]["nearest"] * s["w1_scale"] / x["mean_spacing"]
+    novelty = s.get("novelty", {})
+    return {"density": sum(c["count"] for c in cats) / max(wanted, 1e-9),
+            "worst": max(per_cat, key=lambda r: abs(r - 1)) if per_cat else None,
+            "relation": relation, "w1": w1, "seconds": seconds,
+            "patch": novelty.get("output", {}).get("patch"),
+            "patch_chance": novelty.get("chance", {}).get("patch")}
+
+
+def spread(values, fmt):
+    values = [v for v in values if v is not None]
+    if not values:
+        return "-"
+    return " / ".join(fmt(v) for v in (min(values), statistics.median(values), max(values)))
+
+
+def table_row(name, results):
+    failed = [r["error"] for r in results if "error" in r]
+    made = [r for r in results if "error" not in r]
+    if not made:
+        return f"| {name} | {len(failed)} of {len(results)}: {failed[0]} | - | - | - | - | - | - |"
+    ok = lambda r: (0.85 <= r["density"] <= 1.15 and (r["worst"] is None or 0.75 <= r["worst"] <= 1.25)
+                    and r["relation"] <= 0.15 and r["w1"] <= 0.2)
+    return (f"| {name} | {len(failed) and f'{len(failed)}: ' + failed[0] or 'none'} "
+            f"| {spread([r['density'] for r in made], lambda v: f'×{v:.2f}')} "
+            f"| {spread([r['worst'] for r in made], lambda v: f'×{v:.2f}')} "
+            f"| {spread([r['relation'] for r in made], lambda v: f'{v:.2f}')} "
+            f"| {spread([r['w1'] for r in made], lambda v: f'{v:.2f}')} "
+            f"| {spread([r['patch'] for r in made], lambda v: f'{v:.2f}')} "
+            f"| {spread([r['seconds'] for r in made], lambda v: f'{v:.0f}')} "
+            f"| {sum(map(ok, made))} of {len(results)} |")
+
+
+def exemplars(args):
+    with open(os.path.join(CORPUS, "MANIFEST.tsv")) as f:
+        for row in csv.DictReader(f, delimiter="\t"):
+            yield row["file"], os.path.join(CORPUS, row["file"]), row["flags"].split()
+    for folder in args.tiles:
+        for file in sorted(os.listdir(folder)):
+            if file.endswith(".svg"):
+                yield file + " (tile)", os.path.join(folder, file), ["--tile"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", default="1,2,3")
+    parser.add_argument("--timeout", type=float, default=600)
+    parser.add_argument("--only", default="", help="exemplars to keep, by file name, comma-separated")
+    parser.add_argument("--tiles", action="append", default=[], help="a folder of seamless tiles")
+    parser.add_argument("out")
+    args = parser.parse_args()
+    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "corpus")
+    os.makedirs(pictures, exist_ok=True)
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    shown = " ".join([f"--seeds {args.seeds}", f"--timeout {args.timeout:g}"]
+                     + ([f"--only {args.only}"] if args.only else [])
+                     + [f"--tiles {os.path.relpath(t, ROOT)}" for t in args.tiles] + [args.out])
+    lines = [
+        "# The corpus: every exemplar, several seeds", "",
+        f"Command: `python3 scripts/corpus_table.py {shown}` at commit {commit}, "
+        f"{datetime.date.today().isoformat()}, on 2 cores.", "",
+        "Each output: `shapeproc synthesize EXEMPLAR FLAGS --size 2W,2H --seed S` (FLAGS from "
+        "data/corpus/MANIFEST.tsv), measured by `shapeproc stats OUTPUT --against EXEMPLAR`. "
+        "Figures are min / median / max over the seeds. Density: the output's count over the "
+        "exemplar's density times its area; worst category: the category of 10 or more elements "
+        "farthest from ×1; relation: the largest difference, over categories, between the output's "
+        "and the exemplar's shares of elements inside or overlapping another category's; W1: of "
+        "nearest-neighbour distances, in the exemplar's mean spacings; patch copy share: 0 is new "
+        "(docs/metrics.md). A seed meets the targets with density ×0.85–×1.15, every category "
+        "×0.75–×1.25, relation ≤ 0.15 and W1 ≤ 0.2.", "",
+        "| exemplar | refused | density | worst category | relation | W1 / spacing | patch copy "
+        "share | seconds | seeds on target |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    seeds = [int(s) for s in args.seeds.split(",")]
+    for name, path, flags in exemplars(args):
+        if args.only and name not in args.only.split(","):
+            continue
+        results = [measure(path, flags, seed, args.timeout, pictures) for seed in seeds]
+        line = table_row(name, results)
+        print(line, flush=True)
+        lines.append(line)
+    with open(args.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

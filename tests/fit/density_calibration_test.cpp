@@ -1,0 +1,69 @@
+#include "libshapeproc/fit/density_calibration.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libshapeproc/core/random.hpp"
+#include "tests/point_model.hpp"
+
+namespace shapeproc::fit {
+namespace {
+
+// 100 uniform points in a 100 x 100 window: density 0.01.
+geometry::Scene poisson_exemplar() {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
+  scene.category_index("points");
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(7);
+  for (int k = 0; k < 100; ++k) {
+    geometry::Element e;
+    e.position = geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0);
+    scene.elements.push_back(e);
+  }
+  return scene;
+}
+
+TEST(DensityCalibration, APoissonModelsWrongIntensityIsCorrectedToTheExemplarsDensity) {
+  model::ShapeProcessModel model = testing::point_model(0.004);
+  CalibrationOptions options;
+  options.seed = 3;
+  const model::CalibrationRecord record = calibrate_density(model, poisson_exemplar(), options);
+  // The first chain sees 0.4 of the density (400 expected, Poisson SE 20: ±0.05 is 1 SE);
+  // then β × 2.5 brings it within the tolerance, 0.1 at 400 expected (2 SE).
+  ASSERT_EQ(record.ratio_before.size(), 1u);
+  EXPECT_NEAR(record.ratio_before[0], 0.4, 0.15);
+  EXPECT_TRUE(record.converged);
+  EXPECT_GE(record.rounds, 2);
+  EXPECT_NEAR(record.ratio_after[0], 1.0, 0.1);
+  // β: 0.01 within three Poisson standard errors of each of the two counts behind it.
+  EXPECT_NEAR(model.categories[0].beta, 0.01, 0.01 * 3 * 2 * 0.05);
+  EXPECT_FALSE(record.ran_away);
+  EXPECT_DOUBLE_EQ(record.attraction_shrink, 1.0);
+}
+
+TEST(DensityCalibration, AModelThatAgreesIsLeftAlone) {
+  model::ShapeProcessModel model = testing::point_model(0.01);
+  const model::CalibrationRecord record = calibrate_density(model, poisson_exemplar(), {});
+  EXPECT_TRUE(record.converged);
+  EXPECT_EQ(record.rounds, 1);
+  EXPECT_DOUBLE_EQ(model.categories[0].beta, 0.01);
+  EXPECT_DOUBLE_EQ(record.beta_factor[0], 1.0);
+}
+
+TEST(DensityCalibration, ARunawayChainShrinksTheAttraction) {
+  // Strong attraction and no hard core: the chain condenses far past 8 times the 400 expected.
+  model::ShapeProcessModel model = testing::point_model(0.01, {0.0, 3.0}, {30.0});
+  CalibrationOptions options;
+  options.rounds = 2;
+  const model::CalibrationRecord record = calibrate_density(model, poisson_exemplar(), options);
+  EXPECT_TRUE(record.ran_away);
+  EXPECT_LT(record.attraction_shrink, 1.0);
+  EXPECT_LT(model.interactions[0].axes[0].gammas[0], 30.0);
+  EXPECT_NEAR(std::log(model.interactions[0].axes[0].gammas[0]),
+              record.attraction_shrink * std::log(30.0), 1e-9);
+}
+
+}  // namespace
+}  // namespace shapeproc::fit

@@ -1,0 +1,129 @@
+#include "libshapeproc/fit/parameter_budget.hpp"
+
+#include <gtest/gtest.h>
+
+#include "libshapeproc/fit/fit_shape_process.hpp"
+#include "libshapeproc/geometry/arc.hpp"
+#include "libshapeproc/model/interaction.hpp"
+
+namespace shapeproc::fit {
+namespace {
+
+using V = std::vector<double>;
+
+TEST(ParameterBudget, RangeCapIsSpacingsOfTheDenserCategory) {
+  ParameterBudget budget;
+  budget.max_range_spacings = 2.5;
+  EXPECT_DOUBLE_EQ(range_cap(budget, 10000.0, 2, 100.0), 25.0);  // spacing 10
+  EXPECT_DOUBLE_EQ(range_cap(budget, 1000.0, 3, 1.0), 25.0);     // spacing 10
+}
+
+TEST(ParameterBudget, CapRangeCutsThresholdsAndDropsBandsBeyond) {
+  V t = {1, 4, 9, 16};
+  cap_range(t, 10);
+  EXPECT_EQ(t, (V{1, 4, 9, 10}));
+  t = {1, 4, 12, 16};
+  cap_range(t, 10);
+  EXPECT_EQ(t, (V{1, 4, 10}));
+  t = {1, 4, 9};
+  cap_range(t, 3);
+  EXPECT_EQ(t, (V{1, 3}));
+  t = {1, 4, 9};
+  cap_range(t, 20);  // within the cap: unchanged
+  EXPECT_EQ(t, (V{1, 4, 9}));
+  t = {12, 14};
+  cap_range(t, 10);  // the hard core beyond the cap: a hard core alone
+  EXPECT_EQ(t, (V{12}));
+}
+
+TEST(ParameterBudget, KeepBandsKeepsContactThenRangeThenNearest) {
+  V t = {-5, -2, 0, 3, 8};
+  keep_bands(t, 3);
+  EXPECT_EQ(t, (V{-5, -2, 0, 8}));
+  t = {-5, -2, 0, 3, 8};
+  keep_bands(t, 2);
+  EXPECT_EQ(t, (V{-5, 0, 8}));
+  t = {-5, -2, 0, 3, 8};
+  keep_bands(t, 1);  // the split at contact alone, ending a hair beyond it
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[0], -5);
+  EXPECT_GT(t[1], 0);
+  EXPECT_LT(t[1], 1e-6);
+  t = {1, 4, 9};
+  keep_bands(t, 1);
+  EXPECT_EQ(t, (V{1, 9}));
+  keep_bands(t, 0);
+  EXPECT_EQ(t, (V{1}));
+}
+
+TEST(ParameterBudget, ApplyBudgetPoolsAxesOnlyWhenTheyNeedMore) {
+  const std::vector<V> axes = {{1, 2, 3}, {1, 2, 3}};  // 4 γ along every axis
+  PairThresholds kept = apply_budget(axes, {1, 2, 3}, 4, "8 elements of 'a'");
+  EXPECT_EQ(kept.axes.size(), 2u);
+  EXPECT_TRUE(kept.choice.empty());
+  PairThresholds pooled = apply_budget(axes, {1, 2, 3}, 3, "8 elements of 'a'");
+  ASSERT_EQ(pooled.axes.size(), 1u);
+  EXPECT_EQ(pooled.axes[0], (V{1, 2, 3}));
+  EXPECT_NE(pooled.choice.find("isotropic, 2 of 2 band(s)"), std::string::npos) << pooled.choice;
+  PairThresholds none = apply_budget(axes, {1, 2, 3}, 0, "3 elements of 'a'");
+  EXPECT_EQ(none.axes[0], (V{1}));
+  EXPECT_NE(none.choice.find("hard core only"), std::string::npos) << none.choice;
+}
+
+// A disc of radius r as an element of category c at (x, y).
+void add_disc(geometry::Scene& scene, double x, double y, double r, int c) {
+  geometry::Drawable2 d;
+  d.paths.push_back(geometry::ellipse_path({x, y}, r, r));
+  geometry::add_element(scene, geometry::Shape{geometry::PlanarShape{{d}}, ""}, c);
+}
+
+// Ten large discs, each holding a small one and with another straddling its rim: a drawing of
+// nested and overlapping elements, which the fit takes (no refusal) with negative hard cores.
+geometry::Scene nested_discs() {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(500, 200, 0));
+  scene.category_index("base");
+  scene.category_index("dot");
+  for (int k = 0; k < 10; ++k) {
+    const double x = 25 + 50 * (k % 10), y = k % 2 ? 60 : 140;
+    add_disc(scene, x, y, 18, 0);
+    add_disc(scene, x + 3, y - 2, 3, 1);   // inside
+    add_disc(scene, x + 18, y + 1, 3, 1);  // on the rim
+  }
+  return scene;
+}
+
+TEST(ParameterBudget, ANestedDrawingFitsWithHardCoresBelowItsDeepestOverlap) {
+  const geometry::Scene scene = nested_discs();
+  FitOptions options;
+  const FitResult fit = fit_shape_process(scene, options);
+  const model::ShapeProcessModel& m = fit.model;
+  const int pair = m.interaction_index(0, 1);
+  ASSERT_GE(pair, 0);
+  const model::PairInteraction& bd = m.interactions[static_cast<std::size_t>(pair)];
+  // Dots nest about 17 deep in bases (a dot of radius 3 at 3.6 from the centre of a base of 18
+  // overlaps it by 18 − 3.6 + 3 = 17.4, less the proxies' chords): every axis's hard core lies
+  // below that, and its bands reach past contact.
+  for (const model::AxisParameters& axis : bd.axes) {
+    EXPECT_LT(axis.thresholds.front(), -16.0);
+    EXPECT_GT(axis.thresholds.back(), 0.0);
+  }
+  // The bases' own 45 pairs put 17 within the range: 3 γ, fewer than its 4 axes need, so one
+  // isotropic axis.
+  const model::PairInteraction& bases =
+      m.interactions[static_cast<std::size_t>(m.interaction_index(0, 0))];
+  ASSERT_TRUE(bases.isotropic());
+  EXPECT_EQ(bases.axes[0].thresholds.size(), 2u);
+  EXPECT_NE(bases.choice.find("17 exemplar pairs within its range carry 3 γ"), std::string::npos)
+      << bases.choice;
+  // The pairs the drawing never overlaps keep their hard cores at or above 0.
+  for (const model::PairInteraction& p : m.interactions)
+    if (&p != &bd) EXPECT_GE(p.axes[0].thresholds.front(), 0.0);
+  const model::Interaction interaction(m);
+  EXPECT_EQ(interaction.band(0, 1, 0, -30.0), model::Interaction::kHardCore);
+  EXPECT_GE(interaction.band(0, 1, 0, -10.0), 0);
+  EXPECT_EQ(interaction.band(0, 0, 0, 100.0), model::Interaction::kBeyond);
+}
+
+}  // namespace
+}  // namespace shapeproc::fit
