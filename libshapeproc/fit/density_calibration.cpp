@@ -81,6 +81,16 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
   for (const geometry::Element& e : exemplar.elements)
     expected[static_cast<std::size_t>(e.category)] += scale;
   const double density = static_cast<double>(exemplar.elements.size()) / exemplar.window_measure();
+  // A β the pseudo-likelihood could not bound follows its quadrature's data share, not the data
+  // (1e-15 for trees that no location of a grassy window could take): the chains start it at
+  // the category's density, as the maximum likelihood does.
+  for (std::size_t c = 0; c < categories; ++c) {
+    model::CategoryParameters& category = model.categories[c];
+    if (category.beta_status != model::ParameterStatus::unbounded) continue;
+    const double start = expected[c] / scale / exemplar.window_measure();
+    record.beta_factor[c] = start / category.beta;
+    category.beta = start;
+  }
   for (int round = 1; round <= options.rounds; ++round) {
     if (options.progress) options.progress(round, options.rounds);
     const Chain chain =

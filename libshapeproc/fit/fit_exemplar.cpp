@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/fit/tile_fit.hpp"
 
 namespace shapeproc::fit {
@@ -49,10 +50,17 @@ void calibrate(ExemplarFit& fit, const ExemplarFitOptions& options) {
 
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options) {
   const auto pseudo_likelihood = [&](const geometry::Scene& scene, int repeats) {
-    return fit_shape_process(scene, repeated_options(scene, repeats, options.fit));
+    FitResult result = fit_shape_process(scene, repeated_options(scene, repeats, options.fit));
+    if (options.prune_neutral) {
+      for (std::string& note : prune_neutral_pairs(result.model)) {
+        result.notes.push_back(note);
+        if (result.model.fit) result.model.fit->notes.push_back(note);
+      }
+    }
+    return result;
   };
-  const bool likelihood =
-      options.likelihood && exemplar.elements.size() <= options.likelihood_elements;
+  const bool likelihood = options.likelihood &&
+                          (options.tile || exemplar.elements.size() <= options.likelihood_elements);
   const auto maximum_likelihood = [&](const geometry::Scene& scene, int repeats, FitResult mpl) {
     if (!likelihood) return mpl;
     return refine_to_maximum_likelihood(scene, repeated_options(scene, repeats, options.fit),

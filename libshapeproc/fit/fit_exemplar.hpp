@@ -14,7 +14,7 @@
 
 namespace shapeproc::fit {
 
-inline constexpr std::size_t kLikelihoodElements = 150;
+inline constexpr std::size_t kLikelihoodElements = 60;
 
 struct ExemplarFitOptions {
   // The pseudo-likelihood's options. Its quadrature, when automatic, keeps the cells' size on a
@@ -24,12 +24,17 @@ struct ExemplarFitOptions {
   // The maximum likelihood's options (its progress reports each iteration); none: the model is
   // the pseudo-likelihood's estimate.
   std::optional<MleOptions> likelihood = MleOptions{};
-  // The maximum likelihood runs on exemplars of at most this many elements (a tile's as drawn).
+  // The maximum likelihood runs on tiles, whose packings and lattices need it, and on other
+  // exemplars of at most this many elements.
   // Its chains' cost grows faster than n (more elements, each with more neighbours, over more
-  // sweeps): it took over ten minutes at 460 elements. On larger exemplars the pseudo-likelihood,
-  // whose efficiency approaches the likelihood's as n grows, and the density check on the output's
-  // scale serve. The record notes the choice.
+  // sweeps): over ten minutes at 460 elements, and half its iterations in 300 s on 100
+  // overlapping discs, against a minute for a whole synthesis. On larger exemplars the
+  // pseudo-likelihood, whose efficiency approaches the likelihood's as n grows, and the density
+  // check on the output's scale serve. The record notes the choice.
   std::size_t likelihood_elements = kLikelihoodElements;
+  // Pairs whose pseudo-likelihood strengths are all within two standard errors of 1 keep their
+  // hard core alone (parameter_budget.hpp, prune_neutral_pairs), before the maximum likelihood.
+  bool prune_neutral = true;
   // The exemplar is one period of a seamless 2D repeat (read with --tile): fitted with periodic
   // edges, on a repeat of it where needed.
   bool tile = false;

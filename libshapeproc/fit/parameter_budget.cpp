@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace shapeproc::fit {
 
@@ -71,6 +73,41 @@ PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
   if (kept == 0) out.choice = "hard core only: " + why + " carry no γ";
   out.axes.push_back(std::move(isotropic));
   return out;
+}
+
+std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, double z) {
+  std::vector<std::string> notes;
+  for (model::PairInteraction& pair : model.interactions) {
+    bool neutral = !pair.axes.empty();
+    double largest = 0.0;
+    for (const model::AxisParameters& axis : pair.axes) {
+      for (std::size_t k = 0; k < axis.gammas.size() && neutral; ++k) {
+        const double g = axis.gammas[k], se = axis.gamma_standard_errors[k];
+        neutral = axis.status[k] == model::ParameterStatus::free && g > 0 && se > 0 &&
+                  std::abs(std::log(g)) <= z * se / g;
+        largest = std::max(largest, std::abs(std::log(g)) / (se / g));
+      }
+    }
+    if (!neutral || pair.axes.front().gammas.empty()) continue;
+    // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
+    model::AxisParameters axis = pair.axes.front();
+    for (const model::AxisParameters& a : pair.axes)
+      axis.thresholds.front() = std::min(axis.thresholds.front(), a.thresholds.front());
+    axis.thresholds.resize(1);
+    axis.gammas.clear();
+    axis.gamma_standard_errors.clear();
+    axis.status.clear();
+    axis.observed_pairs.clear();
+    pair.axes = {axis};
+    std::ostringstream text;
+    text << "hard core only: no γ of the pseudo-likelihood differs from 1 by more than " << z
+         << " standard errors (at most " << std::setprecision(2) << largest << ")";
+    pair.choice = text.str();
+    notes.push_back("pair '" + model.categories[static_cast<std::size_t>(pair.first)].name + "'-'" +
+                    model.categories[static_cast<std::size_t>(pair.second)].name +
+                    "': " + pair.choice);
+  }
+  return notes;
 }
 
 }  // namespace shapeproc::fit

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/model/shape_process_model.hpp"
+
 namespace shapeproc::fit {
 
 struct ParameterBudget {
@@ -44,5 +46,11 @@ void keep_bands(std::vector<double>& thresholds, int bands);
 // the budget comes from, for the choice's text ("12 pairs within its range").
 PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
                             std::vector<double> isotropic, int parameters, const std::string& why);
+
+// After the pseudo-likelihood: a pair none of whose strengths differs from 1 by more than
+// `z` standard errors (on log γ; every one estimated freely) interacts through its hard core
+// alone: its bands carried no evidence of attraction or repulsion, and dropping them shortens the
+// range every chain must search. Returns a note per pair pruned (also its `choice`).
+std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, double z = 2.0);
 
 }  // namespace shapeproc::fit

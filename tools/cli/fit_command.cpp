@@ -161,8 +161,9 @@ void FitFlags::add_to(CLI::App& command) {
   command
       .add_option("--estimator", estimator,
                   "mle (maximum likelihood by MCMC, started from the MPL fit; every edge "
-                  "treatment), mpl (maximum pseudo-likelihood alone, fast) or auto (mle up to "
-                  "150 elements, else mpl); every fit is then checked on the output's scale; "
+                  "treatment), mpl (maximum pseudo-likelihood alone, fast) or auto (mle for a "
+                  "--tile and up to 60 elements, else mpl); every fit is then checked on the "
+                  "output's scale; "
                   "see docs/fit.md")
       ->check(CLI::IsMember({"auto", "mpl", "mle"}))
       ->capture_default_str();
