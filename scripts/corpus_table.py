@@ -122,7 +122,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", default="1,2,3")
     parser.add_argument("--timeout", type=float, default=600)
-    parser.add_argument("--only", default="", help="exemplars to keep, by file name, comma-separated")
+    parser.add_argument("--only", default="",
+                        help="exemplars to keep, by file name, comma-separated, run in that order")
     parser.add_argument("--tiles", action="append", default=[], help="a folder of seamless tiles")
     parser.add_argument("out")
     args = parser.parse_args()
@@ -151,9 +152,11 @@ def main():
         "|---|---|---|---|---|---|---|---|---|",
     ]
     seeds = [int(s) for s in args.seeds.split(",")]
-    for name, path, flags in exemplars(args):
-        if args.only and name not in args.only.split(","):
-            continue
+    chosen = list(exemplars(args))
+    if args.only:  # in the order given
+        order = args.only.split(",")
+        chosen = sorted((e for e in chosen if e[0] in order), key=lambda e: order.index(e[0]))
+    for name, path, flags in chosen:
         results = [measure(path, flags, seed, args.timeout, pictures) for seed in seeds]
         line = table_row(name, results)
         print(line, flush=True)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/metrics/wasserstein_test.hpp"
@@ -110,6 +111,8 @@ namespace {
 
 // The spacing check's tolerance where the samples are large enough that chance moves W1 less.
 constexpr double kSpacingFloor = 0.15;
+// The largest difference in the shares of a category inside or overlapping another that passes.
+constexpr double kRelationTolerance = 0.15;
 
 // The shape mix: the chi-square test of the classes' counts, naming the class that drifted most.
 Verdict mix_verdict(const ShapeMix& mix) {
@@ -153,6 +156,39 @@ Verdict overlap_verdict(const metrics::SceneStatistics& o, const metrics::SceneS
     v.problem = "elements overlap";
   }
   v.brief = number(100 * share, 1) + "%";
+  return v;
+}
+
+// How elements sit on other categories' (inside, overlapping): the largest difference between
+// the output's and the exemplar's shares over the categories both have, within 0.15.
+std::optional<Verdict> relations_verdict(const metrics::SceneStatistics& o,
+                                         const metrics::SceneStatistics& ex) {
+  if (o.relations.empty() || ex.relations.empty()) return std::nullopt;
+  double worst = 0.0;
+  std::string where;
+  for (std::size_t c = 0; c < o.categories.size(); ++c) {
+    const auto e = std::find(ex.categories.begin(), ex.categories.end(), o.categories[c]);
+    if (e == ex.categories.end()) continue;
+    const auto k = static_cast<std::size_t>(e - ex.categories.begin());
+    const double inside = std::abs(o.relations.nested[c] - ex.relations.nested[k]);
+    const double across = std::abs(o.relations.overlapping[c] - ex.relations.overlapping[k]);
+    if (std::max(inside, across) > worst) {
+      worst = std::max(inside, across);
+      where = o.categories[c] + (inside >= across ? " inside another" : " overlapping another");
+    }
+  }
+  Verdict v{"relations",
+            worst,
+            where.empty() ? "0" : number(worst) + " (" + where + ")",
+            "shares inside or overlapping another category within 0.15 of the exemplar's",
+            Outcome::pass,
+            "",
+            ""};
+  if (worst > kRelationTolerance) {
+    v.outcome = Outcome::fail;
+    v.problem = "elements sit on other categories unlike the exemplar's";
+  }
+  v.brief = number(worst);
   return v;
 }
 
@@ -275,6 +311,7 @@ std::vector<Verdict> judge(const Judged& j) {
   if (j.mix.degrees > 0) out.push_back(mix_verdict(j.mix));
 
   out.push_back(overlap_verdict(o, ex));
+  if (const std::optional<Verdict> relations = relations_verdict(o, ex)) out.push_back(*relations);
   out.push_back(touching_verdict(o, ex));
 
   if (ex.dimension == 2) out.push_back(order_verdict(j));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/random.hpp"
@@ -91,6 +92,10 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     record.beta_factor[c] = start / category.beta;
     category.beta = start;
   }
+  double best_worst = std::numeric_limits<double>::infinity();
+  std::vector<double> best_beta(categories, 0.0);
+  std::vector<double> low(categories, 0.0),
+      high(categories, std::numeric_limits<double>::infinity());  // β brackets
   for (int round = 1; round <= options.rounds; ++round) {
     if (options.progress) options.progress(round, options.rounds);
     const Chain chain =
@@ -104,19 +109,40 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
       continue;
     }
     if (record.ratio_before.empty()) record.ratio_before = chain.ratio;
-    record.ratio_after = chain.ratio;
     if (agrees(chain.ratio, expected, options.tolerance)) {
+      record.ratio_after = chain.ratio;
       record.converged = true;
       break;
     }
+    // The closest agreement yet (its worst category's), which a check that never agrees keeps.
+    double worst = 0.0;
+    for (double r : chain.ratio) worst = std::max(worst, std::abs(std::log(std::max(r, 1e-9))));
+    if (worst < best_worst) {
+      best_worst = worst;
+      record.ratio_after = chain.ratio;
+      for (std::size_t c = 0; c < categories; ++c) best_beta[c] = model.categories[c].beta;
+    }
     if (round == options.rounds) break;
     for (std::size_t c = 0; c < categories; ++c) {
-      const double r = chain.ratio[c];
+      const double r = chain.ratio[c], beta = model.categories[c].beta;
+      // The count grows with β: a β known too low or too high brackets the answer, and once
+      // both ends are known the next β halves the bracket (in log β), as a crystal's nucleation
+      // makes the count jump where a proportional step would overshoot.
+      if (r < 1) low[c] = std::max(low[c], beta);
+      if (r > 1) high[c] = std::min(high[c], beta);
       // None at all says only that β is far too low: the largest step, squared.
-      const double step = r > 0 ? std::clamp(1.0 / r, 1.0 / kLargestStep, kLargestStep)
-                                : kLargestStep * kLargestStep;
-      model.categories[c].beta *= step;
-      record.beta_factor[c] *= step;
+      double next = beta * (r > 0 ? std::clamp(1.0 / r, 1.0 / kLargestStep, kLargestStep)
+                                  : kLargestStep * kLargestStep);
+      if (low[c] > 0 && std::isfinite(high[c]) && !(next > low[c] && next < high[c]))
+        next = std::sqrt(low[c] * high[c]);
+      record.beta_factor[c] *= next / beta;
+      model.categories[c].beta = next;
+    }
+  }
+  if (!record.converged && std::isfinite(best_worst)) {
+    for (std::size_t c = 0; c < categories; ++c) {
+      record.beta_factor[c] *= best_beta[c] / model.categories[c].beta;
+      model.categories[c].beta = best_beta[c];
     }
   }
   record.seconds = clock.seconds();

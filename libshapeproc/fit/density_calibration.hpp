@@ -9,8 +9,12 @@
 //     towards 1) and the check runs again;
 //   - otherwise each category whose density is off by more than the tolerance has β_c multiplied
 //     by exemplar density / chain density (clamped to [1/8, 8]): the counts' moment equation that
-//     the maximum likelihood solves, solved on the larger domain by a few fixed-point steps.
-// The record (model::CalibrationRecord) keeps the ratios before and after and the corrections.
+//     the maximum likelihood solves, solved on the larger domain by a few fixed-point steps; once
+//     a β too low and one too high are known, the next step halves that bracket in log β.
+// A check that never agrees keeps the β of its closest chain (by its worst category's ratio, in
+// log): a lattice whose crystal packs denser than its exemplar, say, has no β that gives the
+// exemplar's count. The record (model::CalibrationRecord) keeps the ratios before and after (the
+// chain kept) and the corrections.
 #pragma once
 
 #include <cstdint>
@@ -26,7 +30,7 @@ struct CalibrationOptions {
   // A category's density agrees when its ratio to the exemplar's is within this, or within two
   // Poisson standard errors of its expected count (2 / √expected), whichever is wider.
   double tolerance = 0.08;
-  int rounds = 4;  // chains at most (each correction is followed by a chain that checks it)
+  int rounds = 5;  // chains at most (each correction is followed by a chain that checks it)
   std::uint64_t seed = 1;
   int threads = 0;  // of each chain (0: one per core); the result does not depend on them
   // Called before each chain with its number (1-based) and the most there may be.

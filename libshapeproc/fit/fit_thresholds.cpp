@@ -158,6 +158,40 @@ void share_overlap(std::vector<std::vector<double>>& per_axis, const std::vector
   }
 }
 
+// Nesting and overlap are distinct relations: one shape inside another overlaps it by at least
+// its own width (a disc of radius r inside a larger one: by 2r at least), one that only crosses
+// the other's outline by less. Where an axis's bands reach below minus `width` (the narrower
+// category's median width), a threshold there splits the nested pairs from those that straddle.
+void split_at_nesting(std::vector<double>& thresholds, double width, double w) {
+  if (!(width > 0) || thresholds.empty() || !(thresholds.front() < -width)) return;
+  const auto above = std::upper_bound(thresholds.begin(), thresholds.end(), -width);
+  if (above == thresholds.end()) return;
+  const double hair = kDegenerate * w;
+  if (std::abs(*(above - 1) + width) > hair && std::abs(*above + width) > hair)
+    thresholds.insert(above, -width);
+}
+
+// The median over a category's elements of its shape's narrower side (0 for points).
+std::vector<double> category_widths(const geometry::Scene& exemplar) {
+  std::vector<std::vector<double>> widths(exemplar.categories.size());
+  for (const Element& e : exemplar.elements) {
+    const geometry::Box3 box =
+        geometry::bounding_box(exemplar.shapes[static_cast<std::size_t>(e.shape)]);
+    widths[static_cast<std::size_t>(e.category)].push_back(
+        box.sizes().head(exemplar.dimension).minCoeff());
+  }
+  std::vector<double> out;
+  for (std::vector<double>& w : widths) {
+    if (w.empty()) {
+      out.push_back(0.0);
+      continue;
+    }
+    std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(w.size() / 2), w.end());
+    out.push_back(w[w.size() / 2]);
+  }
+  return out;
+}
+
 }  // namespace
 
 void check_fit_options(const FitOptions& o) {
@@ -268,6 +302,7 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
     return;
   }
   const std::vector<std::size_t> counts = geometry::category_counts(exemplar);
+  const std::vector<double> widths = category_widths(exemplar);
   for (int a = 0; a < categories; ++a) {
     for (int b = a; b < categories; ++b) {
       model::PairInteraction pair;
@@ -314,6 +349,10 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
         }
       }
       if (!fixed_thresholds) share_overlap(per_axis, pooled, shell_jitter);
+      const double nest_width =
+          std::min(widths[static_cast<std::size_t>(a)], widths[static_cast<std::size_t>(b)]);
+      if (!fixed_thresholds)
+        for (std::vector<double>& t : per_axis) split_at_nesting(t, nest_width, shell_jitter);
       if (!fixed_thresholds) {
         const std::size_t na = counts[static_cast<std::size_t>(a)],
                           nb = counts[static_cast<std::size_t>(b)];
@@ -322,6 +361,7 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
         std::vector<double> isotropic =
             thresholds_from(pooled.size() >= 2 ? pooled : all_distances, options.quantiles,
                             shell_jitter, exemplar.elements.size());
+        split_at_nesting(isotropic, nest_width, shell_jitter);
         cap_range(isotropic, cap);
         for (std::vector<double>& t : per_axis) cap_range(t, cap);
         double range = isotropic.back();
