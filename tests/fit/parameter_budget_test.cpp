@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
-#include "libshapeproc/geometry/arc.hpp"
 #include "libshapeproc/model/interaction.hpp"
+#include "tests/disc_scene.hpp"
 
 namespace shapeproc::fit {
 namespace {
@@ -70,12 +70,7 @@ TEST(ParameterBudget, ApplyBudgetPoolsAxesOnlyWhenTheyNeedMore) {
   EXPECT_NE(none.choice.find("hard core only"), std::string::npos) << none.choice;
 }
 
-// A disc of radius r as an element of category c at (x, y).
-void add_disc(geometry::Scene& scene, double x, double y, double r, int c) {
-  geometry::Drawable2 d;
-  d.paths.push_back(geometry::ellipse_path({x, y}, r, r));
-  geometry::add_element(scene, geometry::Shape{geometry::PlanarShape{{d}}, ""}, c);
-}
+using testing::add_disc;
 
 // Ten large discs, each holding a small one and with another straddling its rim: a drawing of
 // nested and overlapping elements, which the fit takes (no refusal) with negative hard cores.

@@ -2,16 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include "libshapeproc/geometry/arc.hpp"
+#include "tests/disc_scene.hpp"
 
 namespace shapeproc::metrics {
 namespace {
 
-void add_disc(geometry::Scene& scene, double x, double y, double r, int c) {
-  geometry::Drawable2 d;
-  d.paths.push_back(geometry::ellipse_path({x, y}, r, r));
-  geometry::add_element(scene, geometry::Shape{geometry::PlanarShape{{d}}, ""}, c);
-}
+using testing::add_disc;
 
 // A base disc of radius 10 at (50, 50); small discs of radius 2: one inside it, one across its
 // rim, one just touching it from outside, one apart; and a small one inside a second base.
