@@ -21,6 +21,8 @@ namespace {
 // lattice repeats its distances only up to the rounding of its coordinates (hexagons: 2.015 and
 // 2.020 px for one shell).
 constexpr double kCoincide = 0.2;
+// A nested band reaches this many widths below minus the narrower category's width at least.
+constexpr double kNestedDepth = 1.1;
 // A hair, as a share of the same half-width.
 constexpr double kDegenerate = 1e-6;
 // The half-width of a shell's band, as a share of the exemplar's mean spacing (|W| / n)^(1/dim).
@@ -163,7 +165,8 @@ void share_overlap(std::vector<std::vector<double>>& per_axis, const std::vector
 // the other's outline by less. Where an axis's bands reach below minus `width` (the narrower
 // category's median width), a threshold there splits the nested pairs from those that straddle.
 void split_at_nesting(std::vector<double>& thresholds, double width, double w) {
-  if (!(width > 0) || thresholds.empty() || !(thresholds.front() < -width)) return;
+  // (Only where the nested range is a tenth of the width deep at least: no sliver of a band.)
+  if (!(width > 0) || thresholds.empty() || !(thresholds.front() < -kNestedDepth * width)) return;
   const auto above = std::upper_bound(thresholds.begin(), thresholds.end(), -width);
   if (above == thresholds.end()) return;
   const double hair = kDegenerate * w;
