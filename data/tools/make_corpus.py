@@ -79,23 +79,34 @@ def forest():
               "inside the trees.", size, discs)
 
 
+def around_bases(rng, bases, count, rho_of, radius, gap, off_others=None):
+    """`count` discs of `radius` around the bases in turn, at distance rho_of(rng, k, r) from the
+    base's centre in a uniform direction, apart from each other by `gap` (and, with `off_others`,
+    from the other bases by that gap)."""
+    small = []
+    for k in range(count):
+        x, y, r = bases[k % len(bases)]
+        for _ in range(10000):
+            a = rng.uniform(0, 2 * math.pi)
+            rho = rho_of(rng, k, r)
+            s = (x + rho * math.cos(a), y + rho * math.sin(a), radius)
+            others = [b for b in bases if b[:2] != (x, y)] if off_others is not None else []
+            if apart(s[0], s[1], s[2], small, gap) and apart(s[0], s[1], s[2], others,
+                                                             off_others or 0.0):
+                small.append(s)
+                break
+        else:
+            raise SystemExit("no room around the bases")
+    return small
+
+
 def rims():
     """10 large discs; 90 small ones, 55 straddling a rim and 35 inside."""
     rng = random.Random(2)
     size = 420.0
     bases = scatter(rng, 10, size, lambda g: 30.0, [], 16.0)
-    small = []
-    for k in range(90):
-        x, y, r = bases[k % 10]
-        for _ in range(10000):
-            a = rng.uniform(0, 2 * math.pi)
-            rho = r + rng.uniform(-3, 3) if k < 55 else rng.uniform(0, r - 9)
-            s = (x + rho * math.cos(a), y + rho * math.sin(a), 5.0)
-            if apart(s[0], s[1], s[2], small, 0.5):
-                small.append(s)
-                break
-        else:
-            raise SystemExit("rims: no room")
+    small = around_bases(rng, bases, 90, lambda g, k, r: r + g.uniform(-3, 3) if k < 55
+                         else g.uniform(0, r - 9), 5.0, 0.5)
     discs = [(x, y, r, "#3b5998") for x, y, r in bases] + [(x, y, r, "#f4b400") for x, y, r in small]
     write_svg("rims.svg", "Decorations on base shapes: 10 large discs, 55 small ones straddling "
               "their rims and 35 inside.", size, discs)
@@ -106,19 +117,8 @@ def edge_clusters():
     rng = random.Random(3)
     size = 420.0
     bases = scatter(rng, 10, size, lambda g: 30.0, [], 20.0)
-    small = []
-    for k in range(100):
-        x, y, r = bases[k % 10]
-        for _ in range(10000):
-            a = rng.uniform(0, 2 * math.pi)
-            rho = r + 4.0 - rng.uniform(0.5, 2.0)
-            s = (x + rho * math.cos(a), y + rho * math.sin(a), 4.0)
-            if apart(s[0], s[1], s[2], small, 0.3) and apart(s[0], s[1], s[2],
-                                                            [b for b in bases if b[:2] != (x, y)], 0.5):
-                small.append(s)
-                break
-        else:
-            raise SystemExit("edge clusters: no room")
+    small = around_bases(rng, bases, 100, lambda g, k, r: r + 4.0 - g.uniform(0.5, 2.0), 4.0, 0.3,
+                         off_others=0.5)
     discs = [(x, y, r, "#1b7f79") for x, y, r in bases] + [(x, y, r, "#e94f37") for x, y, r in small]
     write_svg("edge-clusters.svg", "10 large discs with 100 small ones clustered at their edges, "
               "overlapping them a little.", size, discs)
