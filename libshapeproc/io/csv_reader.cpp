@@ -10,6 +10,9 @@ namespace shapeproc::io {
 
 namespace {
 
+// A disc's radius may be at most this many times the window's longest side.
+constexpr double kLargestRadius = 10.0;
+
 // The disc of radius r centred on the origin: a filled circle, as an SVG <circle> reads.
 geometry::Shape disc_shape(double r) {
   geometry::Drawable2 drawable;
@@ -141,6 +144,12 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
       if (!r || !(*r > 0.0)) {
         throw core::InputError(file_name, line_number,
                                "column radius: expected a positive number, got '" + value + "'");
+      }
+      if (*r > kLargestRadius * scene.window.sizes().maxCoeff()) {
+        throw core::InputError(file_name, line_number,
+                               "column radius: " + value + " is larger than " +
+                                   std::to_string(static_cast<int>(kLargestRadius)) +
+                                   " times the window");
       }
       const auto [found, added] =
           shape_of_radius.emplace(*r, static_cast<int>(scene.shapes.size()));

@@ -84,6 +84,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCsv{"duplicate_column", "x,x,y\n1,1,1\n", "0,2,0,2", "twice", 1},
                       BadCsv{"zero_radius", "x,y,radius\n1,1,0\n", "0,2,0,2", "positive", 2},
                       BadCsv{"bad_radius", "x,y,radius\n1,1,r\n", "0,2,0,2", "got 'r'", 2},
+                      BadCsv{"huge_radius", "x,y,radius\n1,1,1e300\n", "0,2,0,2",
+                             "larger than 10 times", 2},
                       BadCsv{"radius_3d", "x,y,z,radius\n1,1,1,1\n", "0,2,0,2,0,2", "2D", 1}),
     [](const ::testing::TestParamInfo<BadCsv>& param_info) {
       return std::string(param_info.param.name);
