@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
+#include "libshapeproc/model/interaction.hpp"
+#include "libshapeproc/sample/birth_death_chain.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 
 namespace shapeproc::fit {
@@ -28,14 +31,18 @@ struct Chain {
   std::vector<double> ratio;  // per category
 };
 
+// `geometry`: the proxies of the model's shapes on `domain`, built once for every chain (the
+// check changes β and γ, never the shapes or thresholds).
 Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& domain,
+                const std::shared_ptr<const sample::ChainGeometry>& geometry,
                 const std::vector<double>& expected, double exemplar_density, std::uint64_t seed,
                 int threads) {
   OutputSampling sampling;
   sampling.exemplar_density = exemplar_density;
   sampling.threads = threads;
-  const sample::ShapeProcessSampler sampler(model, domain,
-                                            output_sampler_options(model, domain, sampling));
+  sample::SamplerOptions options = output_sampler_options(model, domain, sampling);
+  options.geometry = geometry;
+  const sample::ShapeProcessSampler sampler(model, domain, options);
   core::Random random(seed);
   Chain chain;
   std::vector<double> counts(expected.size(), 0.0);
@@ -92,6 +99,8 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     record.beta_factor[c] = start / category.beta;
     category.beta = start;
   }
+  const auto geometry =
+      std::make_shared<const sample::ChainGeometry>(model, model::Interaction(model), domain);
   double best_worst = std::numeric_limits<double>::infinity();
   std::vector<double> best_beta(categories, 0.0);
   std::vector<double> low(categories, 0.0),
@@ -99,7 +108,7 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
   for (int round = 1; round <= options.rounds; ++round) {
     if (options.progress) options.progress(round, options.rounds);
     const Chain chain =
-        run_chain(model, domain, expected, density,
+        run_chain(model, domain, geometry, expected, density,
                   options.seed + static_cast<std::uint64_t>(round - 1), options.threads);
     record.rounds = round;
     if (chain.ran_away) {
