@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
     fit::ChainsSetting setting =
         chains == "fidelity" ? evaluation::fidelity_chains() : fit::ChainsSetting{};
     if (stationary) setting.observe_region = exemplar.window;
-    setting.compress = fit::compressing_burn_in(model);
+    setting.burn_in_kind = model::output_burn_in(model);
     const std::size_t p = observed.size();
     std::vector<double> sum(p), squares(p), error(p), batch_error(p), effective(p);
     for (int r = 0; r < replicates; ++r) {

@@ -6,7 +6,7 @@
 
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/random.hpp"
-#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 
@@ -67,11 +67,11 @@ std::vector<EnvelopeCurve> nearest_envelopes(const geometry::Scene& exemplar,
     high[c][i] = std::max(high[c][i], value);
   };
   const geometry::Domain window(exemplar.window, exemplar.dimension, boundary);
-  sample::SamplerOptions sampling;
+  fit::OutputSampling sampling;  // as outputs are sampled, however dense the model gets
   sampling.iterations = options.steps;
-  sampling.compression = fit::output_compression(model);  // as the fit's chains
-  sampling.compression.release_steps = options.steps / 4;
-  const sample::ShapeProcessSampler sampler(model, window, sampling);
+  sampling.stop_runaway = false;
+  sampling.decompose = fit::Decomposition::off;
+  const sample::ShapeProcessSampler sampler = fit::output_sampler(model, window, sampling);
   for (int k = 0; k < options.samples; ++k) {
     core::Random random(options.seed + static_cast<std::uint64_t>(k));
     const geometry::Scene sampled = sampler.sample(random).scene;

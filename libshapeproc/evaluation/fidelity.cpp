@@ -9,6 +9,7 @@
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/fit/monte_carlo_moments.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
@@ -67,8 +68,7 @@ void check_own_window(const geometry::Scene& exemplar, const model::ShapeProcess
     setting.free_region = border.region;
   }
   // The chains run the fit's burn-in: compressing for a packed exemplar.
-  setting.compress = fit::compressing_burn_in(model);
-  setting.crystal = fit::output_compression(model).crystal;
+  setting.burn_in_kind = model::output_burn_in(model);
   const fit::StatisticsMoments m = fit::statistics_moments(model, window, setting);
   const std::vector<double> observed = fit::observed_statistics(exemplar, model);
   const std::vector<std::string> names = model::statistic_names(model);
@@ -112,9 +112,10 @@ void check_output(const geometry::Scene& exemplar, const model::ShapeProcessMode
   for (int axis = 0; axis < exemplar.dimension; ++axis)
     sides.push_back(options.scale * exemplar.window.sizes()[axis]);
   const geometry::Domain domain = geometry::Domain::from_sizes(sides, geometry::Boundary::torus);
-  sample::SamplerOptions start;  // as `synthesize` starts: empty, compressing where the fit did
-  start.compression = fit::output_compression(model);
-  const sample::ShapeProcessSampler sampler(model, domain, start);
+  fit::OutputSampling sampling;  // as `synthesize` samples, but measured however dense it gets
+  sampling.stop_runaway = false;
+  sampling.decompose = fit::Decomposition::off;
+  const sample::ShapeProcessSampler sampler = fit::output_sampler(model, domain, sampling);
   synthesis::ChainOptions chains;
   chains.chains = options.outputs;
   chains.threads = options.sampling.threads;

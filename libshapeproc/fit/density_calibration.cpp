@@ -8,6 +8,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
@@ -17,7 +18,7 @@ namespace shapeproc::fit {
 
 namespace {
 
-constexpr double kLargestStep = 8.0;  // β changes by at most this factor per round
+constexpr double kLargestStep = kFitDefaults.calibration_largest_step;
 
 // The torus of `multiple` windows along each axis, at the window's origin.
 geometry::Domain calibration_domain(const geometry::Scene& exemplar, double multiple) {
@@ -32,7 +33,10 @@ struct Chain {
 };
 
 // `geometry`: the proxies of the model's shapes on `domain`, built once for every chain (the
-// check changes β and γ, never the shapes or thresholds).
+// check changes β and γ, never the shapes or thresholds). The ratio is the chain's mean count per
+// category over the second half of its run, after any burn-in, to the expected count: a time
+// average, far less noisy than the last state, so the chain stops once its count is stationary
+// (no run-on).
 Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& domain,
                 const std::shared_ptr<const sample::ChainGeometry>& geometry,
                 const std::vector<double>& expected, double exemplar_density, std::uint64_t seed,
@@ -42,18 +46,35 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
   sampling.threads = threads;
   sample::SamplerOptions options = output_sampler_options(model, domain, sampling);
   options.geometry = geometry;
+  options.run_on = false;
+  double total = 0.0;
+  for (double e : expected) total += e;
+  options.observe_every = std::max<long long>(10, static_cast<long long>(total));
   const sample::ShapeProcessSampler sampler(model, domain, options);
   core::Random random(seed);
   Chain chain;
-  std::vector<double> counts(expected.size(), 0.0);
+  sample::SampleResult result;
   try {
-    for (const geometry::Element& e : sampler.sample(random).scene.elements)
-      counts[static_cast<std::size_t>(e.category)] += 1;
+    result = sampler.sample(random);
   } catch (const core::ArgumentError&) {
     chain.ran_away = true;  // the runaway stop: the only refusal a valid model's chain makes
     return chain;
   }
-  for (std::size_t c = 0; c < expected.size(); ++c) chain.ratio.push_back(counts[c] / expected[c]);
+  const long long from = std::max(result.compression_steps, result.iterations / 2);
+  std::vector<double> counts(expected.size(), 0.0);
+  double kept = 0.0;
+  for (std::size_t i = 0; i < result.observations.size(); ++i) {
+    if (static_cast<long long>(i + 1) * options.observe_every <= from) continue;
+    for (std::size_t c = 0; c < expected.size(); ++c) counts[c] += result.observations[i][c];
+    kept += 1.0;
+  }
+  if (kept == 0.0) {  // a run too short to observe: its last state
+    for (const geometry::Element& e : result.scene.elements)
+      counts[static_cast<std::size_t>(e.category)] += 1;
+    kept = 1.0;
+  }
+  for (std::size_t c = 0; c < expected.size(); ++c)
+    chain.ratio.push_back(counts[c] / kept / expected[c]);
   return chain;
 }
 

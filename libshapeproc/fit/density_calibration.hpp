@@ -20,17 +20,20 @@
 #include <cstdint>
 #include <functional>
 
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
 
 struct CalibrationOptions {
-  double multiple = 2.0;  // the torus: the exemplar's window times this along each axis
+  // The torus: the exemplar's window times this along each axis.
+  double multiple = kFitDefaults.calibration_multiple;
   // A category's density agrees when its ratio to the exemplar's is within this, or within two
   // Poisson standard errors of its expected count (2 / √expected), whichever is wider.
-  double tolerance = 0.08;
-  int rounds = 5;  // chains at most (each correction is followed by a chain that checks it)
+  double tolerance = kFitDefaults.calibration_tolerance;
+  // Chains at most (each correction is followed by a chain that checks it).
+  int rounds = kFitDefaults.calibration_rounds;
   std::uint64_t seed = 1;
   int threads = 0;  // of each chain (0: one per core); the result does not depend on them
   // Called before each chain with its number (1-based) and the most there may be.

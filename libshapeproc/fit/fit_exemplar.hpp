@@ -8,13 +8,12 @@
 #include <optional>
 
 #include "libshapeproc/fit/density_calibration.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
 namespace shapeproc::fit {
-
-inline constexpr std::size_t kLikelihoodElements = 60;
 
 struct ExemplarFitOptions {
   // The pseudo-likelihood's options. Its quadrature, when automatic, keeps the cells' size on a
@@ -25,13 +24,11 @@ struct ExemplarFitOptions {
   // the pseudo-likelihood's estimate.
   std::optional<MleOptions> likelihood = MleOptions{};
   // The maximum likelihood runs on tiles, whose packings and lattices need it, and on other
-  // exemplars of at most this many elements.
-  // Its chains' cost grows faster than n (more elements, each with more neighbours, over more
-  // sweeps): over ten minutes at 460 elements, and half its iterations in 300 s on 100
-  // overlapping discs, against a minute for a whole synthesis. On larger exemplars the
+  // exemplars of at most this many elements (fit_defaults.hpp). Its chains' cost grows faster
+  // than n (more elements, each with more neighbours, over more sweeps); on larger exemplars the
   // pseudo-likelihood, whose efficiency approaches the likelihood's as n grows, and the density
   // check on the output's scale serve. The record notes the choice.
-  std::size_t likelihood_elements = kLikelihoodElements;
+  std::size_t likelihood_elements = kFitDefaults.likelihood_elements;
   // Pairs whose pseudo-likelihood strengths are all within two standard errors of 1 keep their
   // hard core alone (parameter_budget.hpp, prune_neutral_pairs), before the maximum likelihood.
   bool prune_neutral = true;

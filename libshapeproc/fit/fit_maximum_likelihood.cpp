@@ -6,28 +6,17 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/exemplar_statistics.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/metrics/novelty.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
 
 namespace {
-// Starting values of log γ are kept within ±kStartBound: the MPLE of a packed exemplar may sit at
-// the search bound, far from anything a sampler can reach.
-constexpr double kStartBound = 3.0;
-// An automatic window's torus fit from the pseudo-likelihood's estimate is left for the start of
-// the window as drawn at its second diverged step (MleOptions::abandon_after_diverged). rings
-// diverged 3, 12 and 2 times in its 30 iterations at seeds 1–3, which took 39, 7 and 48 s of its
-// fits' 45, 14 and 47 s; the data/ fits that converge from there diverged at most once
-// (two-kinds, whose torus fit left at the first took as long: 6.9, 7.0, 8.1 s against 8.1, 3.9,
-// 8.1 s at seeds 1–3).
-constexpr int kAbandonTorusAfter = 2;
-// It is left at once when its first simulation holds more than this many times the exemplar's
-// elements (MleOptions::abandon_condensed_start): at the pseudo-likelihood's estimate rings' torus
-// holds 68, 62 and 67 elements against 19 (seeds 1–3), dots-random's 46–47 against 30 and
-// two-kinds' 23–25 red discs against 17; from there rings' torus converged at one seed of three,
-// in 30 iterations.
-constexpr double kCondensedStart = 2.0;
+// The tuning constants (fit_defaults.hpp has what each does and why).
+constexpr double kStartBound = kFitDefaults.start_bound;
+constexpr int kAbandonTorusAfter = kFitDefaults.abandon_torus_after;
+constexpr double kCondensedStart = kFitDefaults.condensed_start;
 }  // namespace
 
 std::vector<double> observed_statistics(const geometry::Scene& exemplar,
@@ -70,34 +59,12 @@ bool packed_exemplar(const model::ShapeProcessModel& mple) {
   return false;
 }
 
-namespace {
-
-// The maximum-likelihood part of the model's fit record, or null.
-const model::LikelihoodRecord* likelihood_of(const model::ShapeProcessModel& model) {
-  return model.fit && model.fit->likelihood ? &*model.fit->likelihood : nullptr;
-}
-
-}  // namespace
-
-bool compressing_burn_in(const model::ShapeProcessModel& model) {
-  const model::LikelihoodRecord* e = likelihood_of(model);
-  return e && e->compressing_burn_in;
-}
-
-sample::CompressionOptions output_compression(const model::ShapeProcessModel& model) {
-  sample::CompressionOptions c;
-  c.enabled = compressing_burn_in(model);
-  c.crystal = c.enabled && likelihood_of(model)->crystal_growth;
-  return c;
-}
-
 geometry::Domain stationary_domain(const geometry::Scene& exemplar) {
   return geometry::Domain(exemplar.window, exemplar.dimension, geometry::Boundary::torus);
 }
 
 bool fitted_on_stationary_window(const model::ShapeProcessModel& model) {
-  const model::LikelihoodRecord* e = likelihood_of(model);
-  return e && e->stationary_window;
+  return model.fit && model.fit->likelihood && model.fit->likelihood->stationary_window;
 }
 
 namespace {
@@ -140,7 +107,7 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
                                 : "was abandoned, " + failed.abandoned + ", ") +
       "from the pseudo-likelihood's estimate (" + attempt(failed.iterations, failed.seconds) + ")";
   if (estimator.converged) {
-    estimator.start = "mle of the window as drawn";
+    again.model.fit->path = model::FitPath::likelihood_stationary_restarted;
     add_first_note(again, first +
                               "; started again from the estimate of the window as drawn, it "
                               "converged (" +
@@ -151,6 +118,7 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
                             attempt(estimator.iterations, estimator.seconds) +
                             "), so the window was fitted as drawn (--edge none); its outputs "
                             "may be denser or sparser than the exemplar near its edges");
+  drawn.model.fit->path = model::FitPath::likelihood_own_after_stationary;
   return drawn;
 }
 
@@ -222,8 +190,7 @@ model::LikelihoodRecord likelihood_record(const MleResult& mle, const MleOptions
                                           const std::vector<double>& observed) {
   model::LikelihoodRecord e;
   e.stationary_window = stationary;
-  e.compressing_burn_in = chains.sampling.compress;
-  e.crystal_growth = chains.sampling.compress && chains.sampling.crystal;
+  e.burn_in_kind = chains.sampling.burn_in_kind;
   e.unbounded = indices_with(mle, model::ParameterStatus::unbounded);
   e.iterations = mle.iterations;
   e.converged = mle.converged;
@@ -256,7 +223,7 @@ model::LikelihoodRecord likelihood_record(const MleResult& mle, const MleOptions
 // receives the measure of the region the chains sample.
 MleOptions chain_options(const geometry::Scene& exemplar, const FitOptions& fit_options,
                          const model::ShapeProcessModel& start, const MleOptions& options,
-                         bool stationary, bool compress, bool crystal, double& measure) {
+                         bool stationary, model::BurnIn burn_in, double& measure) {
   MleOptions chains = options;
   measure = geometry::measure(exemplar.window, exemplar.dimension);
   if (stationary) chains.sampling.observe_region = exemplar.window;
@@ -270,8 +237,7 @@ MleOptions chain_options(const geometry::Scene& exemplar, const FitOptions& fit_
     chains.sampling.free_region = border.region;
     measure = geometry::measure(border.region, exemplar.dimension);
   }
-  chains.sampling.compress = compress;  // a packed exemplar's chains compress from empty
-  chains.sampling.crystal = crystal;
+  chains.sampling.burn_in_kind = burn_in;  // a packed exemplar's chains compress from empty
   return chains;
 }
 
@@ -288,9 +254,11 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   // neighbour offsets (every element of a lattice is equivalent: any one is a nucleus), packed or
   // not: random births fill a lattice's sites only by chance.
   const bool crystal = !start.neighbour_offsets.empty() && metrics::is_lattice_exemplar(exemplar);
-  const bool compress = packed || crystal;
+  const model::BurnIn burn_in = crystal  ? model::BurnIn::crystal
+                                : packed ? model::BurnIn::compressing
+                                         : model::BurnIn::plain;
   if (crystal && fit_options.near_birth_share == kAutomaticNearBirths)
-    start.neighbour_offsets.share = kCrystalNearBirthShare;
+    start.neighbour_offsets.share = kFitDefaults.crystal_near_birth_share;
   const bool stationary = open_window && (options.window == WindowModel::stationary ||
                                           (options.window == WindowModel::automatic && !packed));
   const geometry::Domain window =
@@ -299,7 +267,7 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   const std::vector<double> observed = observed_statistics(exemplar, start);
   double measure = 0.0;
   const MleOptions chains =
-      chain_options(exemplar, fit_options, start, options, stationary, compress, crystal, measure);
+      chain_options(exemplar, fit_options, start, options, stationary, burn_in, measure);
   for (std::size_t c = 0; c < start.categories.size(); ++c) {
     model::CategoryParameters& category = start.categories[c];
     if (category.beta_status != model::ParameterStatus::free) category.beta = observed[c] / measure;
@@ -318,6 +286,8 @@ FitResult refine_to_maximum_likelihood(const geometry::Scene& exemplar,
   result.model = with_estimates(start, mle);
   add_outcome_notes(mle, options, start, observed, result.notes);
   record.likelihood = likelihood_record(mle, options, chains, stationary, observed);
+  record.path =
+      stationary ? model::FitPath::likelihood_stationary : model::FitPath::likelihood_own_window;
   record.notes = result.notes;
   result.model.fit = std::move(record);
   return result;

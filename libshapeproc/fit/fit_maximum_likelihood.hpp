@@ -7,7 +7,6 @@
 
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
-#include "libshapeproc/sample/compression.hpp"
 
 namespace shapeproc::fit {
 
@@ -34,15 +33,6 @@ BorderCondition border_condition(const geometry::Scene& exemplar,
 // Every chain starts empty all the same; the burn-in only brings it to a packed state from none
 // of the exemplar's positions.
 bool packed_exemplar(const model::ShapeProcessModel& mple);
-
-// Whether samples of a fitted model use the compressing burn-in, as its maximum-likelihood chains
-// did (its fit record's `estimator.burn_in`); false for other models.
-bool compressing_burn_in(const model::ShapeProcessModel& model);
-
-// The burn-in an output of a fitted model runs: the compressing one (growing a crystal where the
-// fit's did), until its count is stationary under the boost and as long again to release it,
-// where the model's fit used it; none otherwise.
-sample::CompressionOptions output_compression(const model::ShapeProcessModel& model);
 
 // The stationary window (WindowModel::stationary, docs/fit.md): the exemplar's window as a torus.
 // Its elements near an edge see neighbours across the seam, as in a larger drawing; the

@@ -13,13 +13,12 @@
 
 namespace shapeproc::fit {
 
-// FitOptions::near_birth_share chosen by the fit: kCrystalNearBirthShare where the
+// FitOptions::near_birth_share chosen by the fit: FitDefaults::crystal_near_birth_share where the
 // maximum-likelihood chains grow the exemplar's lattice as a crystal, else 0. A proposal: the
 // stationary law does not depend on it. Births near neighbours refill a crystal's vacancies,
 // which uniform births almost never hit, so that its chains reach the model's own equilibrium
 // (docs/fit.md, "Packed exemplars").
 inline constexpr double kAutomaticNearBirths = -1.0;
-inline constexpr double kCrystalNearBirthShare = 0.5;
 
 struct FitOptions {
   // How pairs are measured, as the model records it; directions 0 = the default for the

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/geometry/directions.hpp"
@@ -17,23 +18,15 @@ using geometry::Element;
 
 namespace {
 
-// Quantiles closer than this share of the shell half-width below are one distance: a drawing's
-// lattice repeats its distances only up to the rounding of its coordinates (hexagons: 2.015 and
-// 2.020 px for one shell).
-constexpr double kCoincide = 0.2;
-// A nested band reaches this many widths below minus the narrower category's width at least.
-constexpr double kNestedDepth = 1.1;
-// A hair, as a share of the same half-width.
+// The tuning constants (fit_defaults.hpp has what each does and why).
+constexpr double kCoincide = kFitDefaults.coincide;
+constexpr double kNestedDepth = kFitDefaults.nested_depth;
+constexpr double kShellJitter = kFitDefaults.shell_jitter;
+constexpr double kShellShare = kFitDefaults.shell_share;
+constexpr std::size_t kShellPairs = kFitDefaults.shell_pairs;
+constexpr double kHardCoreLevel = kFitDefaults.hard_core_level;
+// A hair, as a share of the shell half-width.
 constexpr double kDegenerate = 1e-6;
-// The half-width of a shell's band, as a share of the exemplar's mean spacing (|W| / n)^(1/dim).
-constexpr double kShellJitter = 0.1;
-// The smallest distance is a shell when as many of an axis's pairs as this share of the elements,
-// and kShellPairs at least, repeat it (a lattice's nearest neighbours: about one pair per element).
-constexpr double kShellShare = 0.25;
-constexpr std::size_t kShellPairs = 4;
-// An axis's closest pair lies farther than the pair's closest over all axes by chance when its
-// pairs, drawn from the pooled distances, would all lie that far at least this often.
-constexpr double kHardCoreLevel = 0.05;
 
 // A hair below the smallest distance d: at 0 for touching pairs, below 0 for overlapping ones.
 double hard_core_below(double d, double w) {

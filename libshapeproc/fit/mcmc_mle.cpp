@@ -10,6 +10,7 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/detail/newton_steps.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
 
@@ -74,7 +75,7 @@ constexpr double kDiverged = 10;      // a gap this many times the best one undo
 // Chains that disagree more than this (R-hat) are not at one stationary state: a model that
 // holds a packed exemplar in some chains and loses it in others, or chains still drifting. Their
 // errors are then inflated by the disagreement, and small z would be no evidence.
-constexpr double kMaxRHat = 1.1;
+constexpr double kMaxRHat = kFitDefaults.max_r_hat;
 // A gap within the tolerance counts only when every free statistic's sample is worth this many
 // independent observations (effective_sample_size.hpp): chains at a packed exemplar's density
 // that mix slowly give errors as large as the gaps
@@ -84,14 +85,14 @@ constexpr double kMaxRHat = 1.1;
 // A statistic whose mean is known to within kNegligibleGap (mcmc_mle.hpp) is trusted whatever its
 // effective size: a packed lattice's count that the chains leave once in a long while has almost
 // no variance and almost no effective observations.
-constexpr double kMinEffectiveSize = 20;
+constexpr double kMinEffectiveSize = kFitDefaults.min_effective_size;
 constexpr int kMostChainFactor = 16;
 // A crystal's search stops untested (MleResult::held_crystal) only where every category's
 // expected count is within this share of the exemplar's: its few effective observations give
 // errors too wide to judge the gap, so it is judged against the count. cutout's chains held 20.3
 // of 18 elements (z 1.8, within the tolerance) and its outputs came out ×1.5; tested further, the
 // search found ×0.99.
-constexpr double kHeldCrystalShare = 0.05;
+constexpr double kHeldCrystalShare = kFitDefaults.held_crystal_share;
 
 using Clock = std::chrono::steady_clock;
 
@@ -429,7 +430,7 @@ LikelihoodSearch::Next LikelihoodSearch::decide(StatisticsMoments& m, double eff
   last_r_hat_ = here.worst_r_hat;
   r_.chains = here.chains;
   if (improved) best_ = here;
-  if (options_.sampling.compress) {
+  if (options_.sampling.burn_in_kind != model::BurnIn::plain) {
     double share = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < categories_; ++c)
       if (observed_[c] > 0) share = std::min(share, m.mean[c] / observed_[c]);
@@ -465,7 +466,8 @@ LikelihoodSearch::Next LikelihoodSearch::decide(StatisticsMoments& m, double eff
       rough_ = false;  // within tolerance at a quarter of the precision: check at full length
       return Next::again;
     }
-    if (effective < kMinEffectiveSize && options_.sampling.crystal && counts_held(m)) {
+    if (effective < kMinEffectiveSize && options_.sampling.burn_in_kind == model::BurnIn::crystal &&
+        counts_held(m)) {
       r_.held_crystal = true;
       return Next::stop;
     }

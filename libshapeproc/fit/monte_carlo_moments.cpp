@@ -72,11 +72,10 @@ StatisticsMoments statistics_moments(const model::ShapeProcessModel& model,
   sampler_options.observe_every = setting.observe_every;
   sampler_options.fixed = setting.fixed;
   sampler_options.free_region = setting.free_region;
-  if (setting.compress) {
+  if (setting.burn_in_kind != model::BurnIn::plain) {
     core::check(setting.burn_in >= 4, "mle", "the compressing burn-in needs a burn-in of 4 steps");
-    sampler_options.compression.enabled = true;
+    sampler_options.compression.burn_in_kind = setting.burn_in_kind;
     sampler_options.compression.release_steps = setting.burn_in / 4;
-    sampler_options.compression.crystal = setting.crystal;
   }
   sampler_options.observe_region = setting.observe_region;
   sampler_options.geometry = setting.geometry;

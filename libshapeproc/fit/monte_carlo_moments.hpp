@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "libshapeproc/geometry/domain.hpp"
+#include "libshapeproc/model/burn_in.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::sample {
@@ -31,12 +32,10 @@ struct ChainsSetting {
   // (sample::SamplerOptions); empty: none.
   std::vector<geometry::Element> fixed;
   geometry::Box3 free_region;
-  // Every chain starts empty; with `compress`, the first half of its burn-in is the compressing
-  // burn-in (sample/compression.hpp: a phase at an annealed β, then its release), so that a
-  // packed exemplar's density is reached from no position of the exemplar.
-  bool compress = false;
-  // With `compress`: the growth stages grow a crystal (sample::CompressionOptions::crystal).
-  bool crystal = false;
+  // Every chain starts empty; unless plain, the first half of its burn-in is the compressing
+  // burn-in (model/burn_in.hpp, sample/compression.hpp: a phase at an annealed β, then its
+  // release), so that a packed exemplar's density is reached from no position of the exemplar.
+  model::BurnIn burn_in_kind = model::BurnIn::plain;
   // The stationary window (docs/fit.md, "Stationary window"): when set, the chains sample a
   // domain larger than the exemplar's window, and the statistics observed are those of the
   // elements in this region (the window) and their pairs there, t_W, while the model's density

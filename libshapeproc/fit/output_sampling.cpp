@@ -4,7 +4,6 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/parallel_for.hpp"
-#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/sample/output_estimate.hpp"
 #include "libshapeproc/sample/runaway.hpp"
 
@@ -21,14 +20,14 @@ sample::SamplerOptions output_sampler_options(const model::ShapeProcessModel& mo
   const int at_once = std::max(1, sampling.chains_at_once);
   const core::ResourceEstimate estimate =
       sample::estimate_output(model, domain, sampling.exemplar_density, at_once);
-  options.runaway_count = sample::runaway_count(estimate.elements);
+  if (sampling.stop_runaway) options.runaway_count = sample::runaway_count(estimate.elements);
   options.decompose =
       sampling.decompose == Decomposition::on ||
       (sampling.decompose == Decomposition::automatic && estimate.elements >= kDecomposeFrom);
   // The threads left to each chain of those that run at once.
   options.threads = std::max(1, core::loop_threads(sampling.threads, 1 << 20) / at_once);
-  if (sampling.compress) options.compression = output_compression(model);
-  if (options.compression.enabled && options.iterations > 0) {
+  if (sampling.compress) options.compression.burn_in_kind = model::output_burn_in(model);
+  if (options.compression.enabled() && options.iterations > 0) {
     if (options.iterations < 8)
       throw core::UsageError(
           "--iterations: this model's outputs start with the compressing burn-in (its fit "
@@ -36,6 +35,13 @@ sample::SamplerOptions output_sampler_options(const model::ShapeProcessModel& mo
     options.compression.release_steps = options.iterations / 4;
   }
   return options;
+}
+
+sample::ShapeProcessSampler output_sampler(const model::ShapeProcessModel& model,
+                                           const geometry::Domain& domain,
+                                           const OutputSampling& sampling) {
+  return sample::ShapeProcessSampler(model, domain,
+                                     output_sampler_options(model, domain, sampling));
 }
 
 }  // namespace shapeproc::fit

@@ -15,13 +15,16 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
 
 struct ParameterBudget {
-  int pairs_per_parameter = 5;      // exemplar pairs within the range behind each γ
-  double max_range_spacings = 2.5;  // the longest range, in mean spacings
+  // Exemplar pairs within the range behind each γ.
+  int pairs_per_parameter = kFitDefaults.pairs_per_parameter;
+  // The longest range, in mean spacings.
+  double max_range_spacings = kFitDefaults.max_range_spacings;
 };
 
 // What the budget gives one pair: thresholds per axis (one entry: isotropic) and why.
@@ -51,6 +54,7 @@ PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
 // `z` standard errors (on log γ; every one estimated freely) interacts through its hard core
 // alone: its bands carried no evidence of attraction or repulsion, and dropping them shortens the
 // range every chain must search. Returns a note per pair pruned (also its `choice`).
-std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, double z = 2.0);
+std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model,
+                                             double z = kFitDefaults.neutral_z);
 
 }  // namespace shapeproc::fit

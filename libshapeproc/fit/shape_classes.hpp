@@ -13,13 +13,14 @@
 // class of the nearest size.
 #pragma once
 
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::fit {
 
-inline constexpr int kMinElementsPerClass = 5;
-inline constexpr int kMaxSizeGroups = 8;
+inline constexpr int kMinElementsPerClass = kFitDefaults.min_elements_per_class;
+inline constexpr int kMaxSizeGroups = kFitDefaults.max_size_groups;
 inline constexpr double kIdenticalTolerance = 1e-5;  // of the window's diagonal
 
 // Sets model.shape_classes and every shape's class. `model.shapes` must be the exemplar's shapes,

@@ -13,13 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
 namespace shapeproc::fit {
 
-// The most repeats a tile is refitted on (the quadrature grows with their square).
-constexpr int kMaxTileRepeats = 6;
+// The most repeats a tile is refitted on (fit_defaults.hpp).
+constexpr int kMaxTileRepeats = kFitDefaults.max_tile_repeats;
 
 struct TileFit {
   FitResult result;

@@ -17,12 +17,9 @@ json pairs_json(const std::vector<std::pair<std::string, std::string>>& pairs) {
 
 json likelihood_json(const model::LikelihoodRecord& e) {
   return {{"method", "mcmc-mle"},
-          {"start", e.start},
           {"window", e.stationary_window ? "stationary" : "own"},
           {"chains_start", "empty"},
-          {"burn_in_kind", e.crystal_growth        ? "crystal"
-                           : e.compressing_burn_in ? "compressing"
-                                                   : "plain"},
+          {"burn_in_kind", std::string(model::burn_in_name(e.burn_in_kind))},
           {"unbounded", e.unbounded},
           {"iterations", e.iterations},
           {"converged", e.converged},
@@ -90,11 +87,13 @@ void read_options(const json& fit, std::vector<std::pair<std::string, std::strin
 
 model::LikelihoodRecord parse_likelihood(const json& e) {
   model::LikelihoodRecord r;
-  r.start = field(e, "start", r.start);
   r.stationary_window = field(e, "window", std::string()) == "stationary";
-  const std::string burn_in = field(e, "burn_in_kind", std::string());
-  r.crystal_growth = burn_in == "crystal";
-  r.compressing_burn_in = burn_in == "compressing" || r.crystal_growth;
+  const std::string burn_in = field(e, "burn_in_kind", std::string("plain"));
+  const std::optional<model::BurnIn> kind = model::parse_burn_in(burn_in);
+  if (!kind)
+    throw std::invalid_argument("fit.likelihood.burn_in_kind: '" + burn_in +
+                                "' is not plain, compressing or crystal");
+  r.burn_in_kind = *kind;
   r.iterations = field(e, "iterations", 0);
   r.converged = field(e, "converged", false);
   r.chains = field(e, "chains", 0);
@@ -155,6 +154,21 @@ std::vector<model::ModelEdit> parse_edits(const json& fit) {
   return edits;
 }
 
+// The record's path, or for a file written before it had one, the path its estimator implies.
+model::FitPath fit_path_of(const json& fit, const model::FitRecord& r) {
+  if (const auto p = fit.find("path"); p != fit.end()) {
+    const std::string name = p->is_string() ? p->get<std::string>() : p->dump();
+    if (const std::optional<model::FitPath> path = model::parse_fit_path(name)) return *path;
+    throw std::invalid_argument("fit.path: '" + name + "' is not a path the fit takes");
+  }
+  if (!r.likelihood) return model::FitPath::pseudo_likelihood;
+  if (!r.likelihood->stationary_window) return model::FitPath::likelihood_own_window;
+  const auto e = fit.find("estimator");
+  return field(*e, "start", std::string()) == "mle of the window as drawn"
+             ? model::FitPath::likelihood_stationary_restarted
+             : model::FitPath::likelihood_stationary;
+}
+
 }  // namespace
 
 json fit_record_json(const model::FitRecord& r) {
@@ -163,6 +177,7 @@ json fit_record_json(const model::FitRecord& r) {
       {"window", {{"min", r.window_min}, {"max", r.window_max}}},
       {"elements", r.elements},
       {"edge", r.edge},
+      {"path", model::fit_path_name(r.path)},
       {"quadrature",
        {{"method", q.lines ? "lines" : "cells"},
         {"cells", q.cells},
@@ -242,6 +257,7 @@ model::FitRecord parse_fit_record(const json& fit) {
   read_options(fit, r.options);
   r.tile_repeats = field(fit, "tile_repeats", 0);
   r.edits = parse_edits(fit);
+  r.path = fit_path_of(fit, r);
   return r;
 }
 

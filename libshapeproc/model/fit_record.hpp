@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "libshapeproc/model/burn_in.hpp"
+
 namespace shapeproc::model {
 
 // The pseudo-likelihood's quadrature (fit/detail/quadrature_design.hpp).
@@ -29,20 +31,37 @@ struct FitSeconds {
   double proxies = 0.0, measurements = 0.0, quadrature = 0.0, optimisation = 0.0;
 };
 
+// The path the fit took (fit/fit_exemplar.hpp): which estimator gave the model, on which window.
+enum class FitPath {
+  // The maximum likelihood was not run (an exemplar over the fit's likelihood_elements, or not
+  // asked for): the pseudo-likelihood's estimate, checked on the output's scale.
+  pseudo_likelihood,
+  // The maximum likelihood on the window as drawn (an edge treatment or window asked for, or a
+  // packed exemplar).
+  likelihood_own_window,
+  // On the stationary window (the exemplar as a piece of a larger drawing), from the
+  // pseudo-likelihood's estimate.
+  likelihood_stationary,
+  // On the stationary window, restarted from the window as drawn's estimate after the first
+  // attempt did not converge or was abandoned.
+  likelihood_stationary_restarted,
+  // Neither stationary attempt converged: the window as drawn's estimate.
+  likelihood_own_after_stationary,
+};
+
+// "pseudo-likelihood", "likelihood, own window", …: the model file's names.
+std::string fit_path_name(FitPath path);
+// The path of a name; none for another name.
+std::optional<FitPath> parse_fit_path(const std::string& name);
+
 // The maximum-likelihood fit by MCMC (fit/mcmc_mle.hpp): its chains and its outcome. Statistics
 // are by θ index (sample/configuration.hpp, Configuration::statistics).
 struct LikelihoodRecord {
-  // Where the search started: "mple", or "mle of the window as drawn" (a second torus fit).
-  std::string start = "mple";
   // The window fitted as a piece of a larger drawing (its own torus, fit::WindowModel), rather
   // than as drawn.
   bool stationary_window = false;
-  // The chains start empty and compress in their burn-in (sample/compression.hpp); outputs of the
-  // model do the same.
-  bool compressing_burn_in = false;
-  // Its growth stages grow a lattice exemplar as a crystal (sample/compression.hpp): births near
-  // neighbours from the first element on, at the model's own hard cores.
-  bool crystal_growth = false;
+  // How the chains started from empty (burn_in.hpp); outputs of the model start the same way.
+  BurnIn burn_in_kind = BurnIn::plain;
   int iterations = 0;
   bool converged = false;
   int chains = 0;        // of each simulation
@@ -84,7 +103,8 @@ struct FitRecord {
   // The exemplar's window (its dimension's coordinates) and its elements.
   std::vector<double> window_min, window_max;
   long long elements = 0;
-  std::string edge;                           // the edge treatment's name
+  std::string edge;  // the edge treatment's name
+  FitPath path = FitPath::pseudo_likelihood;
   std::vector<double> quantiles, thresholds;  // the thresholds' rule: one of them is empty
   QuadratureRecord quadrature;
   long long data_points = 0;

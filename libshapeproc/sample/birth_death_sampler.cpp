@@ -38,7 +38,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
   core::check_in_range("sample", "the shift probability", options_.shift_probability, 0.0, 1.0,
                        true);
   core::check_non_negative("sample", "the shift radius", options_.shift_radius);
-  core::check(options_.iterations <= 0 || !options_.compression.enabled ||
+  core::check(options_.iterations <= 0 || !options_.compression.enabled() ||
                   (options_.compression.release_steps > 0 &&
                    2 * options_.compression.release_steps < options_.iterations),
               "sample",
@@ -76,7 +76,7 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                                     : 0.05 * domain_.sizes().head(dimension).minCoeff();
   region_ = std::make_unique<const ChainRegion>(std::move(region));
   check_compression(options_.compression);
-  if (options_.compression.enabled && range > 0) prepare_growth();
+  if (options_.compression.enabled() && range > 0) prepare_growth();
 }
 
 // The growth stages' models and the short, frequent shifts they move elements by.
@@ -95,7 +95,7 @@ void ShapeProcessSampler::prepare_growth() {
   ChainRegion local = *region_;
   local.shift_radius = push_radius_;
   local.shift_probability = kGrowthShiftProbability;
-  crystal_ = c.crystal && tables_->near_births;
+  crystal_ = c.burn_in_kind == model::BurnIn::crystal && tables_->near_births;
   if (crystal_) {
     // Every birth exactly at an offset from an element, kept whenever it fits: a lattice's
     // offsets add up to its own sites, where jittered ones drift apart over a few cells and
@@ -154,7 +154,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
                                          const synthesis::ChainControl& control) const {
   // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain.
   if (options_.decompose && options_.fixed.empty() && options_.free_region.isEmpty() &&
-      options_.observe_every == 0 && !options_.compression.enabled &&
+      options_.observe_every == 0 && !options_.compression.enabled() &&
       decomposable(domain_, reach()))
     return sample_by_cells(model_, *tables_, *region_, options_, random, control);
   SampleResult result;
@@ -168,7 +168,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   const bool automatic = options_.iterations <= 0;
   const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
-  StationarityRule rule(options_.max_iterations, options_.start.empty());
+  StationarityRule rule(options_.max_iterations, options_.run_on && options_.start.empty());
   CompressionSchedule compression(options_.compression);
   long long step = 1;
   for (;; ++step) {
@@ -262,7 +262,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
                                     ", standard error of the change " +
                                     core::format_general(t.standard_error, 3));
   }
-  if (options_.compression.enabled) {
+  if (options_.compression.enabled()) {
     record.options.emplace_back("burn_in", crystal_ ? "crystal" : "compressing");
     out.counters.emplace_back("compressing burn-in steps",
                               std::to_string(sampled.compression_steps));

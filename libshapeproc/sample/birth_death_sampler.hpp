@@ -41,6 +41,10 @@ struct SamplerOptions {
   // `max_iterations` (then the result is not stationary).
   long long iterations = 0;
   long long max_iterations = 5'000'000;
+  // With the automatic rule, a chain from empty found stationary at step T runs on to 2T, so that
+  // the state it ends in does not depend on the test having passed. False: it stops at T, for a
+  // caller that averages the chain's observations rather than keeping its last state.
+  bool run_on = true;
   // A chain whose element count passes this many has run away (a model that condenses on this
   // domain): it stops with a core::ArgumentError naming the model's strongest attraction
   // (runaway.hpp). 0: no limit (the maximum-likelihood fit's chains, which probe such models).

@@ -32,7 +32,7 @@ void check_compression(const CompressionOptions& options) {
 
 CompressionSchedule::CompressionSchedule(const CompressionOptions& options) : options_(options) {
   check_compression(options);
-  if (!options.enabled) return;
+  if (!options.enabled()) return;
   phase_ = Phase::compress;
   boost_ = options.log_boost;
 }

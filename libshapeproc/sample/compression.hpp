@@ -20,12 +20,19 @@
 
 #include <cmath>
 
+#include "libshapeproc/model/burn_in.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
 
 namespace shapeproc::sample {
 
 struct CompressionOptions {
-  bool enabled = false;
+  // plain: no compressing burn-in; crystal: growth as a crystal (a lattice exemplar): the stages
+  // keep the model's own hard cores, and every birth is proposed exactly at one of the
+  // exemplar's neighbour offsets from an element (uniformly only into the empty configuration),
+  // kept whenever it fits: the lattice grows from its first element. A crystal needs the model's
+  // neighbour offsets (without them the cores grow as for compressing).
+  model::BurnIn burn_in_kind = model::BurnIn::plain;
+  bool enabled() const { return burn_in_kind != model::BurnIn::plain; }
   // Steps of each growth stage; 0: 50 per element present at the stage's start, at least
   // kLeastStageSteps.
   long long steps = 0;
@@ -35,12 +42,6 @@ struct CompressionOptions {
   double log_boost = std::log(1000.0);  // B: β multiplied by 1,000 at first
   double start_scale = 0.5;             // the hard cores grow from this share of the model's
   int stages = 8;                       // growth stages before the model's own hard cores
-  // Growth as a crystal (a lattice exemplar): the stages keep the model's own hard cores, and
-  // every birth is proposed exactly at one of the exemplar's neighbour offsets from an element
-  // (uniformly only into the empty configuration), kept whenever it fits: the lattice grows from
-  // its first element. Needs the model's neighbour offsets (without
-  // them the cores grow as above).
-  bool crystal = false;
 
   static constexpr long long kLeastStageSteps = 2000;
   static constexpr long long kStepsPerElement = 50;

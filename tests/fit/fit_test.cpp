@@ -10,6 +10,7 @@
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/fit/mcmc_mle.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/fit/quantile.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "tests/test_support.hpp"
@@ -606,16 +607,15 @@ TEST(Fit, APackedExemplarsChainsCompressFromEmpty) {
   mle.sampling.steps = 3000;
   const FitResult packed =
       refine_to_maximum_likelihood(dashes, options, fit_shape_process(dashes, options), mle);
-  EXPECT_TRUE(compressing_burn_in(packed.model));
-  EXPECT_TRUE(output_compression(packed.model).enabled);
-  ASSERT_TRUE(packed.model.fit && packed.model.fit->likelihood);
-  EXPECT_TRUE(packed.model.fit->likelihood->compressing_burn_in);
+  EXPECT_EQ(model::output_burn_in(packed.model), model::BurnIn::compressing);
+  EXPECT_TRUE(
+      output_sampler_options(packed.model, stationary_domain(dashes)).compression.enabled());
 
   const Scene dots = io::read_scene(testing::data_path("svg/dots-random.svg"), {});
   const FitResult loose =
       refine_to_maximum_likelihood(dots, options, fit_shape_process(dots, options), mle);
-  EXPECT_FALSE(compressing_burn_in(loose.model));
-  EXPECT_FALSE(output_compression(loose.model).enabled);
+  EXPECT_EQ(model::output_burn_in(loose.model), model::BurnIn::plain);
+  EXPECT_FALSE(output_sampler_options(loose.model, stationary_domain(dots)).compression.enabled());
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ TEST(MaximumLikelihood, AJammedLatticeIsNotReachedFromEmptyAndTheFitSaysSo) {
   options.sampling.burn_in = 4000;
   options.sampling.steps = 8000;
   options.sampling.observe_every = 50;
-  options.sampling.compress = true;
+  options.sampling.burn_in_kind = model::BurnIn::compressing;
   options.max_iterations = 12;
 
   model::ShapeProcessModel dense = start;

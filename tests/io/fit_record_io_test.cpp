@@ -25,7 +25,8 @@ model::FitRecord full_record() {
   r.notes = {"a note"};
   model::LikelihoodRecord& e = r.likelihood.emplace();
   e.stationary_window = true;
-  e.compressing_burn_in = true;
+  r.path = model::FitPath::likelihood_stationary_restarted;
+  e.burn_in_kind = model::BurnIn::compressing;
   e.iterations = 7;
   e.converged = true;
   e.chains = 4;
@@ -60,8 +61,7 @@ void expect_equal(const model::FitRecord& a, const model::FitRecord& b) {
   ASSERT_EQ(a.likelihood.has_value(), b.likelihood.has_value());
   if (a.likelihood) {
     EXPECT_EQ(a.likelihood->seed, b.likelihood->seed);
-    EXPECT_EQ(a.likelihood->compressing_burn_in, b.likelihood->compressing_burn_in);
-    EXPECT_EQ(a.likelihood->crystal_growth, b.likelihood->crystal_growth);
+    EXPECT_EQ(a.likelihood->burn_in_kind, b.likelihood->burn_in_kind);
     EXPECT_EQ(a.likelihood->z, b.likelihood->z);
   }
   ASSERT_EQ(a.edits.size(), b.edits.size());
@@ -73,11 +73,27 @@ TEST(FitRecordIo, EveryFieldSurvivesTheRoundTrip) {
   expect_equal(parse_fit_record(nlohmann::json::parse(written.dump())), r);
   EXPECT_EQ(written["estimator"]["burn_in_kind"], "compressing");
   model::FitRecord crystal = r;
-  crystal.likelihood->crystal_growth = true;  // a lattice's: compressing, grown as a crystal
+  crystal.likelihood->burn_in_kind = model::BurnIn::crystal;  // a lattice's
   const nlohmann::json grown = fit_record_json(crystal);
   EXPECT_EQ(grown["estimator"]["burn_in_kind"], "crystal");
   expect_equal(parse_fit_record(grown), crystal);
-  EXPECT_TRUE(parse_fit_record(grown).likelihood->compressing_burn_in);
+  EXPECT_EQ(parse_fit_record(grown).likelihood->burn_in_kind, model::BurnIn::crystal);
+  nlohmann::json unknown = grown;
+  unknown["estimator"]["burn_in_kind"] = "warm";
+  EXPECT_THROW(parse_fit_record(unknown), std::invalid_argument);
+  // The path, typed: written by name, read back, and for a file without one, implied by its
+  // estimator (a stationary window started from the pseudo-likelihood's estimate).
+  EXPECT_EQ(written["path"],
+            "likelihood, stationary window, restarted from the own window's estimate");
+  nlohmann::json older = written;
+  older.erase("path");
+  EXPECT_EQ(parse_fit_record(older).path, model::FitPath::likelihood_stationary);
+  older["estimator"]["window"] = "own";
+  EXPECT_EQ(parse_fit_record(older).path, model::FitPath::likelihood_own_window);
+  older.erase("estimator");
+  EXPECT_EQ(parse_fit_record(older).path, model::FitPath::pseudo_likelihood);
+  older["path"] = "by hand";
+  EXPECT_THROW(parse_fit_record(older), std::invalid_argument);
   EXPECT_EQ(written["options"][0][0], "reader.tile");
   // Without the maximum likelihood, edits or repeats, those fields are absent.
   model::FitRecord plain = r;

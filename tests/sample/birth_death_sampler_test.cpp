@@ -161,7 +161,7 @@ TEST(BirthDeath, FromAFullStartTheChainReachesItsTarget) {
 // 0 over as many steps, then done; off, it is done from the start.
 TEST(Compression, TheBoostHoldsThenFallsLinearly) {
   CompressionOptions c;
-  c.enabled = true;
+  c.burn_in_kind = model::BurnIn::compressing;
   c.release_steps = 10;
   c.log_boost = 2.0;
   CompressionSchedule schedule(c);
@@ -193,7 +193,7 @@ TEST(BirthDeath, TheCompressingBurnInPacksPastRandomFilling) {
   SamplerOptions plain;
   plain.iterations = 60000;
   SamplerOptions compressed = plain;
-  compressed.compression.enabled = true;
+  compressed.compression.burn_in_kind = model::BurnIn::compressing;
   compressed.compression.steps = 20000;
   compressed.compression.release_steps = 20000;
   compressed.compression.stages = 10;
@@ -229,7 +229,7 @@ TEST(BirthDeath, TheCompressingBurnInPacksPastRandomFilling) {
   EXPECT_THROW(ShapeProcessSampler(m, domain, compressed), core::ArgumentError);
   // Automatic steps: the rule starts once the burn-in is over.
   SamplerOptions automatic;
-  automatic.compression.enabled = true;
+  automatic.compression.burn_in_kind = model::BurnIn::compressing;
   const SampleResult c = sample_with_seed(m, domain, automatic, 4);
   EXPECT_GT(c.compression_steps, 0);
   EXPECT_GT(c.iterations, c.compression_steps);
@@ -249,8 +249,7 @@ TEST(BirthDeath, ACrystalsGrowthFillsTheLattice) {
       geometry::Domain::from_sizes({100, 100}, geometry::Boundary::torus);
   SamplerOptions crystal;
   crystal.iterations = 60000;
-  crystal.compression.enabled = true;
-  crystal.compression.crystal = true;
+  crystal.compression.burn_in_kind = model::BurnIn::crystal;
   crystal.compression.steps = 4000;
   crystal.compression.release_steps = 10000;
   for (int seed = 1; seed <= 3; ++seed) {

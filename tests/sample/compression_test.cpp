@@ -13,7 +13,7 @@ namespace {
 
 TEST(Compression, BoostedThenReleasedLinearlyThenDone) {
   CompressionOptions options;
-  options.enabled = true;
+  options.burn_in_kind = model::BurnIn::compressing;
   options.release_steps = 100;
   CompressionSchedule schedule(options);
   EXPECT_DOUBLE_EQ(schedule.log_boost(), options.log_boost);

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "libshapeproc/fit/fit_exemplar.hpp"
-#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/synthesis/run_chains.hpp"
@@ -20,11 +20,9 @@ TEST(ReadmeExample, FitsSamplesAndWritesAnOutput) {
   using namespace shapeproc;
   const geometry::Scene exemplar = io::read_scene(input, {});
   const model::ShapeProcessModel model = fit::fit_exemplar(exemplar, {}).result.model;
-  sample::SamplerOptions options;
-  options.compression = fit::output_compression(model);  // as the fit's own chains
   const geometry::Domain domain =
       geometry::Domain::from_sizes({600, 600}, geometry::Boundary::torus);
-  const sample::ShapeProcessSampler sampler(model, domain, options);
+  const sample::ShapeProcessSampler sampler = fit::output_sampler(model, domain);
   for (const synthesis::SynthesisResult& r : synthesis::run_chains(sampler, {}))
     io::write_scene(r.scene, output, {});
   // What it made: a model fitted by maximum likelihood, and an output of about the exemplar's

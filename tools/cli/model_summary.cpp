@@ -145,6 +145,11 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
   }
   if (!model.fit) return;
   const model::FitRecord& fit = *model.fit;
+  out << "\npath: " << model::fit_path_name(fit.path);
+  if (fit.likelihood) out << "; burn-in " << model::burn_in_name(fit.likelihood->burn_in_kind);
+  if (fit.tile_repeats > 1)
+    out << "; tile repeated " << fit.tile_repeats << " x " << fit.tile_repeats;
+  out << '\n';
   if (fit.data_points > 0) {
     out << "\nlog pseudo-likelihood"
         << (fit.likelihood ? " (of the MPL fit the maximum likelihood started from)" : "") << ": "
