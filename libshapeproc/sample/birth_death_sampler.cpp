@@ -168,7 +168,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   const bool automatic = options_.iterations <= 0;
   const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
-  StationarityRule rule(options_.max_iterations, options_.run_on && options_.start.empty());
+  StationarityRule rule(options_.max_iterations, options_.run_on && options_.start.empty(),
+                        static_cast<int>(model_.categories.size()));
   CompressionSchedule compression(options_.compression);
   long long step = 1;
   for (;; ++step) {
@@ -207,7 +208,7 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
       break;
     }
     const StationarityRule::Verdict verdict =
-        rule.after_step(step - compression.finished_at(), chain.size());
+        rule.after_step(step - compression.finished_at(), chain.size(), chain.statistics());
     if (verdict == StationarityRule::Verdict::keep_going) continue;
     result.stationary = verdict == StationarityRule::Verdict::stationary;
     break;

@@ -43,17 +43,24 @@ CountTrend value_trend(const std::vector<double>& values, std::size_t least) {
   return quarter_trend(values, least, 0.0);
 }
 
-StationarityRule::Verdict StationarityRule::after_step(long long step, int elements) {
+StationarityRule::Verdict StationarityRule::after_step(long long step, int elements,
+                                                       const std::vector<double>& statistics) {
   // Found stationary at step T, a chain with a run-on goes on to 2T, so that the state it ends in
   // does not depend on the test having passed (agreeing quarters come more often in a quiet
   // stretch of a count that swings).
   if (settled_at_ > 0)
     return step >= std::min(max_steps_, 2 * settled_at_) ? Verdict::stationary
                                                          : Verdict::keep_going;
-  if (step % kStride == 0) counts_.push_back(elements);
+  if (step % kStride == 0) {
+    counts_.push_back(elements);
+    for (std::size_t c = 0; c < by_category_.size() && c < statistics.size(); ++c)
+      by_category_[c].push_back(static_cast<int>(statistics[c]));
+  }
   if (step < next_check_) return Verdict::keep_going;
   if (step >= kStepsPerElement * elements) {
     last_ = count_trend(counts_);
+    for (const std::vector<int>& counts : by_category_)
+      if (last_.stationary && !count_trend(counts).stationary) last_.stationary = false;
     if (last_.stationary) {
       if (!run_on_ || step >= max_steps_) return Verdict::stationary;
       settled_at_ = step;

@@ -59,6 +59,27 @@ TEST(Stationarity, AValuesTrendHasNoFloorOfOne) {
   EXPECT_EQ(value_trend(level, 30).first, 0.0);
 }
 
+// A rare category that creeps up while a common one gives way, the total steady (40 large trees
+// turning into 60 among 1,000 elements by step 1,200,000): the total alone passes at the first
+// check after 1,000 steps per element, the rule of two categories keeps the chain going past the
+// trees' rise.
+TEST(Stationarity, ACategoryCreepingUnderASteadyTotalKeepsTheChainGoing) {
+  const auto trees = [](long long step) { return std::min(60.0, 40.0 + step / 60000.0); };
+  const auto run = [&](StationarityRule& rule) {
+    for (long long step = 1; step <= 5000000; ++step) {
+      const std::vector<double> counts{trees(step), 1000.0 - trees(step)};
+      if (rule.after_step(step, 1000, counts) != StationarityRule::Verdict::keep_going) return step;
+    }
+    return -1LL;
+  };
+  StationarityRule total(5000000);
+  const long long steady = run(total);
+  EXPECT_GE(steady, 1000000);  // 1,000 steps per element
+  EXPECT_LT(steady, 1200000);  // the trees still rising
+  StationarityRule categories(5000000, false, 2);
+  EXPECT_GT(run(categories), 1200000);  // after the rise
+}
+
 TEST(Stationarity, TheStepLimitCapsTheRunOn) {
   StationarityRule rule(30000, true);
   EXPECT_EQ(stopping_step(
