@@ -1,0 +1,17 @@
+# The Debian package (`cpack -G DEB` in the build directory, scripts/package.sh): the command, the
+# shared library, the headers, the CMake and pkg-config files, under /usr. Its run-time
+# dependencies come from dpkg-shlibdeps; Eigen's headers, which the public headers include, are
+# a dependency of their own.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME shapeproc)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_CONTACT "libshapeproc developers <libshapeproc@users.noreply.github.com>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+    "statistical discrete-element texture synthesis: learn an arrangement, make new ones")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libeigen3-dev")
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
+include(CPack)

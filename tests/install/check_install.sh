@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The installed copy, as a user meets it: `cmake --install` of the build into an empty prefix, the
+# command from there, a program outside the source tree built with find_package(shapeproc), and
+# the same program built with pkg-config. Usage: check_install.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+cmake --install "$build" --prefix "$prefix" > /dev/null
+"$prefix/bin/shapeproc" --version
+exemplar=$source/data/svg/dots-random.svg
+cmake -S "$source/tests/install/consumer" -B "$work/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+cmake --build "$work/cmake" > /dev/null
+echo "find_package consumer: $("$work/cmake/consumer" "$exemplar")"
+pc_dir=$(dirname "$(find "$prefix" -name shapeproc.pc | head -n 1)")
+libdir=$(PKG_CONFIG_PATH=$pc_dir pkg-config --variable=libdir shapeproc)
+# shellcheck disable=SC2046
+c++ -O1 "$source/tests/install/consumer/consumer.cpp" -o "$work/pc-consumer" \
+  $(PKG_CONFIG_PATH=$pc_dir pkg-config --cflags --libs shapeproc) -Wl,-rpath,"$libdir"
+echo "pkg-config consumer: $("$work/pc-consumer" "$exemplar")"
