@@ -10,6 +10,7 @@ packages=(
   libbox2d-dev libbullet-dev
   clang libclang-rt-14-dev
   libcpp-httplib-dev chromium chromium-driver python3-selenium
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -12,4 +12,5 @@ if [ "${1:-}" = --install ]; then
   apt-get install -y -qq --no-install-recommends "./$deb" > /dev/null
   command -v shapeproc
   shapeproc --version
+  /usr/bin/python3 -c "import shapeproc; print('python module', shapeproc.__version__)"
 fi

@@ -3,7 +3,7 @@
 #include <map>
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/geometry/arc.hpp"
+#include "libshapeproc/io/points_scene.hpp"
 #include "libshapeproc/io/text.hpp"
 
 namespace shapeproc::io {
@@ -12,14 +12,6 @@ namespace {
 
 // A disc's radius may be at most this many times the window's longest side.
 constexpr double kLargestRadius = 10.0;
-
-// The disc of radius r centred on the origin: a filled circle, as an SVG <circle> reads.
-geometry::Shape disc_shape(double r) {
-  geometry::Drawable2 drawable;
-  drawable.paths.push_back(geometry::ellipse_path(geometry::Vec2::Zero(), r, r));
-  drawable.style["fill"] = "#000000";
-  return geometry::Shape{geometry::PlanarShape{{std::move(drawable)}}, "disc"};
-}
 
 }  // namespace
 

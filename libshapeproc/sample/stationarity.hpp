@@ -35,7 +35,7 @@ class StationarityRule {
   // compressing burn-in starts the rule at its end, compression.hpp).
   // `categories`: the counts per category tested besides the total (after_step's statistics).
   explicit StationarityRule(long long max_steps, bool run_on = false, int categories = 1)
-      : max_steps_(max_steps), run_on_(run_on), by_category_(categories > 1 ? categories : 0) {}
+      : max_steps_(max_steps), by_category_(categories > 1 ? categories : 0), run_on_(run_on) {}
 
   enum class Verdict { keep_going, stationary, gave_up };
   // Called after every step with the element count and, for a rule of several categories, the

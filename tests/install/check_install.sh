@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The installed copy, as a user meets it: `cmake --install` of the build into an empty prefix, the
-# command from there, a program outside the source tree built with find_package(shapeproc), and
-# the same program built with pkg-config. Usage: check_install.sh BUILD_DIR SOURCE_DIR
+# command from there, a program outside the source tree built with find_package(shapeproc), the
+# same program built with pkg-config, and the Python module imported from the prefix.
+# Usage: check_install.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
 source=$2
@@ -21,3 +22,8 @@ libdir=$(PKG_CONFIG_PATH=$pc_dir pkg-config --variable=libdir shapeproc)
 c++ -O1 "$source/tests/install/consumer/consumer.cpp" -o "$work/pc-consumer" \
   $(PKG_CONFIG_PATH=$pc_dir pkg-config --cflags --libs shapeproc) -Wl,-rpath,"$libdir"
 echo "pkg-config consumer: $("$work/pc-consumer" "$exemplar")"
+if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  PYTHONPATH=$prefix/lib/python3/dist-packages /usr/bin/python3 -c \
+    "import shapeproc, sys; s = shapeproc.read(sys.argv[1]); print('python:', shapeproc.__version__, len(s))" \
+    "$exemplar"
+fi

@@ -64,7 +64,9 @@ TEST(Stationarity, AValuesTrendHasNoFloorOfOne) {
 // check after 1,000 steps per element, the rule of two categories keeps the chain going past the
 // trees' rise.
 TEST(Stationarity, ACategoryCreepingUnderASteadyTotalKeepsTheChainGoing) {
-  const auto trees = [](long long step) { return std::min(60.0, 40.0 + step / 60000.0); };
+  const auto trees = [](long long step) {
+    return std::min(60.0, 40.0 + static_cast<double>(step) / 60000.0);
+  };
   const auto run = [&](StationarityRule& rule) {
     for (long long step = 1; step <= 5000000; ++step) {
       const std::vector<double> counts{trees(step), 1000.0 - trees(step)};
