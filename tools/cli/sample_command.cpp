@@ -118,7 +118,8 @@ void SampleFlags::add_to(CLI::App& command, bool sampler_options, bool multiples
                   "--domain)")
       ->check(CLI::IsMember({"torus", "open"}));
   command.add_option("--trace", trace,
-                     "write element count and log density every 1/1000 of the steps (.csv)");
+                     "write element count and log density every 100 steps (every 1/1000 of the "
+                     "steps with --iterations) to this .csv");
   command.add_option("--png", png, "also render the output to this PNG");
   command
       .add_option("--png-scale", png_scale,
