@@ -52,11 +52,13 @@ void write_svg_element(const Scene& scene, std::size_t i, std::ostream& out) {
       out << "</g>\n";
     }
   } else {
-    // A point element: a small dot so that the output shows where it is.
+    // A point element: a small dot so that the output shows where it is, marked as a point so
+    // that it reads back as one (and measures as its exemplar's points do).
     const double r = 0.005 * w.sizes().head<2>().norm();
-    out << "<circle" << attributes << " cx=\"" << core::format_number(element.position.x())
-        << "\" cy=\"" << core::format_number(element.position.y()) << "\" r=\""
-        << core::format_number(r) << "\"/>\n";
+    out << "<circle" << attributes << " data-point=\"1\" cx=\""
+        << core::format_number(element.position.x()) << "\" cy=\""
+        << core::format_number(element.position.y()) << "\" r=\"" << core::format_number(r)
+        << "\"/>\n";
   }
 }
 

@@ -126,6 +126,8 @@ class SvgReader {
   std::optional<State> enter(pugi::xml_node node, const State& parent) const;
   void walk_container(pugi::xml_node node, const State& state);
   void make_element(pugi::xml_node node, const State& state);
+  // An element at `position` with the scene's point shape (added on first use).
+  void add_point(const geometry::Vec3& position, int category);
   void collect(pugi::xml_node node, const State& state, std::vector<Drawable2>& parts,
                int use_depth) const;
   std::vector<Path2> drawable_paths(pugi::xml_node node, const std::string& name) const;
@@ -456,6 +458,22 @@ void SvgReader::walk_container(pugi::xml_node node, const State& state) {
   }
 }
 
+void SvgReader::add_point(const geometry::Vec3& position, int category) {
+  int shape = -1;
+  for (std::size_t s = 0; s < scene_.shapes.size() && shape < 0; ++s)
+    if (std::holds_alternative<geometry::PointShape>(scene_.shapes[s].geometry))
+      shape = static_cast<int>(s);
+  if (shape < 0) {
+    shape = static_cast<int>(scene_.shapes.size());
+    scene_.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  }
+  geometry::Element element;
+  element.shape = shape;
+  element.category = category;
+  element.position = position;
+  scene_.elements.push_back(element);
+}
+
 void SvgReader::make_element(pugi::xml_node node, const State& state) {
   std::vector<Drawable2> parts;
   drawn_styles_.clear();
@@ -463,6 +481,11 @@ void SvgReader::make_element(pugi::xml_node node, const State& state) {
   if (parts.empty()) return;
   const int category = scene_.category_index(category_of(node, state, parts));
   const std::string id = node.attribute("id").value();
+  if (node.attribute("data-point")) {  // a point of the project's own output: its dot's centre
+    add_point(geometry::bounding_box(geometry::Shape{geometry::PlanarShape{parts}, id}).center(),
+              category);
+    return;
+  }
   if (rule_ == ElementRule::subpaths && kDrawables.count(local_name(node))) {
     for (const Drawable2& part : parts) {
       for (Drawable2& piece : geometry::split_disjoint_subpaths(part)) {

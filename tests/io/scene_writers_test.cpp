@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "libshapeproc/io/points_scene.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "tests/test_support.hpp"
 
@@ -32,6 +33,30 @@ TEST(SceneWriters, SvgCarriesItsProvenanceAndReadsBack) {
   const testing::TempDir dir;
   const auto file = dir.write("again.svg", svg);
   EXPECT_EQ(read_scene(file, {}).elements.size(), scene.elements.size());
+}
+
+// Points written as SVG dots read back as points, at their positions, in their categories: an
+// output of a CSV point exemplar measures as the exemplar does (shape distance = centre distance).
+TEST(SceneWriters, SvgPointsReadBackAsPoints) {
+  PointsInput input;
+  input.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 50, 0));
+  input.positions = {geometry::Vec3(10, 10, 0), geometry::Vec3(12.5, 40, 0)};
+  input.categories = {0, 1};
+  input.category_names = {"on", "off"};
+  const geometry::Scene points = points_scene(input);
+  std::ostringstream out;
+  write_svg(points, out, {});
+  const testing::TempDir dir;
+  const geometry::Scene back = read_scene(dir.write("points.svg", out.str()), {});
+  ASSERT_EQ(back.elements.size(), 2u);
+  ASSERT_EQ(back.shapes.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<geometry::PointShape>(back.shapes[0].geometry));
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(back.elements[i].position.x(), points.elements[i].position.x(), 1e-9);
+    EXPECT_NEAR(back.elements[i].position.y(), points.elements[i].position.y(), 1e-9);
+    EXPECT_EQ(back.categories[static_cast<std::size_t>(back.elements[i].category)].name,
+              input.category_names[i]);
+  }
 }
 
 }  // namespace
