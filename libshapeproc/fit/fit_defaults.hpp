@@ -40,6 +40,9 @@ struct FitDefaults {
   // A pair whose every pseudo-likelihood γ is within this many standard errors of 1 keeps its
   // hard core alone (a Wald test at about 5%).
   double neutral_z = 2.0;
+  // … but only where every γ's standard error on log γ is at most this: a larger one (a packed
+  // exemplar's flat pseudo-likelihood, crescents-grid's 1e15) is no evidence of neutrality.
+  double neutral_max_log_se = 1.0;
 
   // ---- Estimator (fit_exemplar.hpp) ----
   // The maximum likelihood runs on tiles and on exemplars of at most this many elements: its

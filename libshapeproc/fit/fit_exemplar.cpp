@@ -49,9 +49,13 @@ void calibrate(ExemplarFit& fit, const ExemplarFitOptions& options) {
 }  // namespace
 
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options) {
+  const bool likelihood = options.likelihood &&
+                          (options.tile || exemplar.elements.size() <= options.likelihood_elements);
   const auto pseudo_likelihood = [&](const geometry::Scene& scene, int repeats) {
     FitResult result = fit_shape_process(scene, repeated_options(scene, repeats, options.fit));
-    if (options.prune_neutral) {
+    // A pseudo-likelihood without a finite maximum (a packed exemplar) has standard errors that
+    // say nothing; where the maximum likelihood follows, it judges the strengths instead.
+    if (options.prune_neutral && !(likelihood && packed_exemplar(result.model))) {
       for (std::string& note : prune_neutral_pairs(result.model)) {
         result.notes.push_back(note);
         if (result.model.fit) result.model.fit->notes.push_back(note);
@@ -59,8 +63,6 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
     }
     return result;
   };
-  const bool likelihood = options.likelihood &&
-                          (options.tile || exemplar.elements.size() <= options.likelihood_elements);
   const auto maximum_likelihood = [&](const geometry::Scene& scene, int repeats, FitResult mpl) {
     if (!likelihood) return mpl;
     return refine_to_maximum_likelihood(scene, repeated_options(scene, repeats, options.fit),

@@ -30,7 +30,9 @@ struct ExemplarFitOptions {
   // check on the output's scale serve. The record notes the choice.
   std::size_t likelihood_elements = kFitDefaults.likelihood_elements;
   // Pairs whose pseudo-likelihood strengths are all within two standard errors of 1 keep their
-  // hard core alone (parameter_budget.hpp, prune_neutral_pairs), before the maximum likelihood.
+  // hard core alone (parameter_budget.hpp, prune_neutral_pairs), before the maximum likelihood;
+  // not for a packed exemplar (a pseudo-likelihood without a finite maximum) that the maximum
+  // likelihood then fits.
   bool prune_neutral = true;
   // The exemplar is one period of a seamless 2D repeat (read with --tile): fitted with periodic
   // edges, on a repeat of it where needed.

@@ -83,8 +83,10 @@ std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, do
     for (const model::AxisParameters& axis : pair.axes) {
       for (std::size_t k = 0; k < axis.gammas.size() && neutral; ++k) {
         const double g = axis.gammas[k], se = axis.gamma_standard_errors[k];
+        // On log γ; an estimate whose standard error exceeds the cap says nothing either way (a
+        // packed exemplar's flat pseudo-likelihood), so its pair keeps its bands.
         neutral = axis.status[k] == model::ParameterStatus::free && g > 0 && se > 0 &&
-                  std::abs(std::log(g)) <= z * se / g;
+                  se / g <= kFitDefaults.neutral_max_log_se && std::abs(std::log(g)) <= z * se / g;
         largest = std::max(largest, std::abs(std::log(g)) / (se / g));
       }
     }

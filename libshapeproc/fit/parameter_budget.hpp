@@ -51,9 +51,10 @@ PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
                             std::vector<double> isotropic, int parameters, const std::string& why);
 
 // After the pseudo-likelihood: a pair none of whose strengths differs from 1 by more than
-// `z` standard errors (on log γ; every one estimated freely) interacts through its hard core
-// alone: its bands carried no evidence of attraction or repulsion, and dropping them shortens the
-// range every chain must search. Returns a note per pair pruned (also its `choice`).
+// `z` standard errors (on log γ; every one estimated freely, with a standard error of at most
+// FitDefaults::neutral_max_log_se) interacts through its hard core alone: its bands carried no
+// evidence of attraction or repulsion, and dropping them shortens the range every chain must
+// search. Returns a note per pair pruned (also its `choice`).
 std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model,
                                              double z = kFitDefaults.neutral_z);
 

@@ -120,5 +120,45 @@ TEST(ParameterBudget, ANestedDrawingFitsWithHardCoresBelowItsDeepestOverlap) {
   EXPECT_EQ(interaction.band(0, 0, 0, 100.0), model::Interaction::kBeyond);
 }
 
+// The Wald pruning on log γ: strengths within 2 standard errors of 1 leave the pair its hard
+// core alone, one isotropic axis at the smallest of its axes' hard cores; a strength 4 standard
+// errors off keeps every band; so does a flat estimate, whose standard error says nothing.
+TEST(ParameterBudget, PruneNeutralPairsOnlyOnEvidence) {
+  const auto axis = [](double d0, std::vector<double> gammas, double log_se) {
+    model::AxisParameters a;
+    a.thresholds = {d0};
+    for (std::size_t k = 0; k < gammas.size(); ++k) {
+      a.thresholds.push_back(d0 + 10.0 * static_cast<double>(k + 1));
+      a.gamma_standard_errors.push_back(log_se * gammas[k]);
+      a.status.push_back(model::ParameterStatus::free);
+      a.observed_pairs.push_back(20);
+    }
+    a.gammas = std::move(gammas);
+    return a;
+  };
+  model::ShapeProcessModel m;
+  m.categories = {{"a"}, {"b"}};
+  const auto pair = [](int first, int second, std::vector<model::AxisParameters> axes) {
+    model::PairInteraction p;
+    p.first = first;
+    p.second = second;
+    p.axes = std::move(axes);
+    return p;
+  };
+  m.interactions = {pair(0, 0, {axis(5, {1.1, 0.9}, 0.1), axis(4, {1.0, 1.15}, 0.1)}),
+                    pair(0, 1, {axis(5, {1.5, 1.0}, 0.1)}),
+                    pair(1, 1, {axis(5, {1.0, 1.0}, 1e15)})};
+  const std::vector<std::string> notes = prune_neutral_pairs(m);
+  ASSERT_EQ(notes.size(), 1u);
+  const model::PairInteraction& neutral = m.interactions[0];
+  ASSERT_EQ(neutral.axes.size(), 1u);
+  EXPECT_EQ(neutral.axes[0].thresholds, std::vector<double>{4.0});
+  EXPECT_TRUE(neutral.axes[0].gammas.empty());
+  EXPECT_NE(neutral.choice.find("hard core only"), std::string::npos);
+  EXPECT_EQ(m.interactions[1].axes[0].gammas.size(), 2u);  // |log 1.5| = 4.05 standard errors
+  EXPECT_EQ(m.interactions[2].axes[0].gammas.size(), 2u);  // no information
+  EXPECT_TRUE(m.interactions[2].choice.empty());
+}
+
 }  // namespace
 }  // namespace shapeproc::fit
