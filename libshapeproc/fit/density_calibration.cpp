@@ -20,10 +20,12 @@ namespace {
 
 constexpr double kLargestStep = kFitDefaults.calibration_largest_step;
 
-// The torus of `multiple` windows along each axis, at the window's origin.
+// The torus of `multiple` windows along x and y, at the window's origin. A 3D exemplar keeps its
+// depth: it is a layer (pebbles on the ground), and its outputs extend it sideways; a torus of
+// twice its depth would let its elements stack as no output does.
 geometry::Domain calibration_domain(const geometry::Scene& exemplar, double multiple) {
   geometry::Box3 box = exemplar.window;
-  box.max() = box.min() + multiple * exemplar.window.sizes();
+  box.max().head<2>() = box.min().head<2>() + multiple * exemplar.window.sizes().head<2>();
   return geometry::Domain(box, exemplar.dimension, geometry::Boundary::torus);
 }
 
@@ -105,7 +107,7 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
   const std::size_t categories = model.categories.size();
   record.beta_factor.assign(categories, 1.0);
   const geometry::Domain domain = calibration_domain(exemplar, options.multiple);
-  const double scale = std::pow(options.multiple, exemplar.dimension);
+  const double scale = options.multiple * options.multiple;
   std::vector<double> expected(categories, 0.0);
   for (const geometry::Element& e : exemplar.elements)
     expected[static_cast<std::size_t>(e.category)] += scale;

@@ -3,8 +3,9 @@
 // domain: an attraction that a window's edges hold in check condenses on a torus of four windows,
 // and an estimate that the pseudo-likelihood could not bound (a packed exemplar) leaves β far off.
 // So, before a fit is returned, chains from empty on a torus `multiple` times the exemplar's window
-// along each axis, sampled as an output is (fit/output_sampling.hpp), measure each category's
-// density against the exemplar's, and the model is corrected until they agree:
+// along x and y (a 3D exemplar keeps its depth: a layer, extended sideways), sampled as an output
+// is (fit/output_sampling.hpp), measure each category's density against the exemplar's, and the
+// model is corrected until they agree:
 //   - a chain that runs away (sample/runaway.hpp) halves every log γ > 0 (shrinks the attraction
 //     towards 1) and the check runs again;
 //   - otherwise each category whose density is off by more than the tolerance has β_c multiplied
@@ -27,7 +28,7 @@
 namespace shapeproc::fit {
 
 struct CalibrationOptions {
-  // The torus: the exemplar's window times this along each axis.
+  // The torus: the exemplar's window times this along x and y (3D: the depth as it is).
   double multiple = kFitDefaults.calibration_multiple;
   // A category's density agrees when its ratio to the exemplar's is within this, or within two
   // Poisson standard errors of its expected count (2 / √expected), whichever is wider.
