@@ -25,6 +25,8 @@ import subprocess
 import tempfile
 import time
 
+from novelty_table import strip_text_chunks
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHAPEPROC = os.environ.get("SHAPEPROC", os.path.join(ROOT, "build", "tools", "shapeproc"))
 # The build whose `stats` measures every output (SHAPEPROC_STATS): the same by default; another
@@ -54,6 +56,8 @@ def measure(path, flags, seed, timeout, pictures):
                    "--png", png, "--force"]
         try:
             p, seconds = run(command, timeout)
+            if os.path.exists(png):
+                strip_text_chunks(png)  # the command line there holds this machine's paths
         except subprocess.TimeoutExpired:
             return {"error": f"timed out after {timeout:g} s"}
         if p.returncode != 0:
