@@ -62,7 +62,10 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
     chain.ran_away = true;  // the runaway stop: the only refusal a valid model's chain makes
     return chain;
   }
-  const long long from = std::max(result.compression_steps, result.iterations / 2);
+  // The observed chain's own steps (a layered model's last layer; the earlier layers' counts are
+  // those it holds fixed).
+  const long long steps = result.iterations - result.observed_from;
+  const long long from = std::max(result.compression_steps, steps / 2);
   std::vector<double> counts(expected.size(), 0.0);
   double kept = 0.0;
   for (std::size_t i = 0; i < result.observations.size(); ++i) {
@@ -77,15 +80,27 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
   }
   for (std::size_t c = 0; c < expected.size(); ++c)
     chain.ratio.push_back(counts[c] / kept / expected[c]);
+  // An anchored category's count follows its bases': its ratio is per base (its β sets how many
+  // each base carries; the bases' own β, how many bases there are).
+  std::vector<double> per_base = chain.ratio;
+  for (std::size_t c = 0; c < expected.size(); ++c)
+    if (const int anchor = model.categories[c].anchor; anchor >= 0)
+      per_base[c] = chain.ratio[static_cast<std::size_t>(anchor)] > 0
+                        ? chain.ratio[c] / chain.ratio[static_cast<std::size_t>(anchor)]
+                        : 0.0;
+  chain.ratio = std::move(per_base);
   return chain;
+}
+
+bool category_agrees(double ratio, double expected, double tolerance) {
+  const double allowed = std::max(tolerance, 2.0 / std::sqrt(std::max(1.0, expected)));
+  return std::abs(ratio - 1.0) <= allowed;
 }
 
 bool agrees(const std::vector<double>& ratio, const std::vector<double>& expected,
             double tolerance) {
-  for (std::size_t c = 0; c < ratio.size(); ++c) {
-    const double allowed = std::max(tolerance, 2.0 / std::sqrt(std::max(1.0, expected[c])));
-    if (std::abs(ratio[c] - 1.0) > allowed) return false;
-  }
+  for (std::size_t c = 0; c < ratio.size(); ++c)
+    if (!category_agrees(ratio[c], expected[c], tolerance)) return false;
   return true;
 }
 
@@ -156,6 +171,8 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     }
     if (round == options.rounds) break;
     for (std::size_t c = 0; c < categories; ++c) {
+      // A category that agrees keeps its β: a step on its chain's noise would only add noise.
+      if (category_agrees(chain.ratio[c], expected[c], options.tolerance)) continue;
       const double r = chain.ratio[c], beta = model.categories[c].beta;
       // The count grows with β: a β known too low or too high brackets the answer, and once
       // both ends are known the next β halves the bracket (in log β), as a crystal's nucleation

@@ -8,6 +8,8 @@
 // model is corrected until they agree:
 //   - a chain that runs away (sample/runaway.hpp) halves every log γ > 0 (shrinks the attraction
 //     towards 1) and the check runs again;
+//   - an anchored category (fit/category_layers.hpp) is measured per base: its ratio over its
+//     base category's, since its count follows the bases' and its β sets how many each carries;
 //   - otherwise each category whose density is off by more than the tolerance has β_c multiplied
 //     by exemplar density / chain density (clamped to [1/8, 8]): the counts' moment equation that
 //     the maximum likelihood solves, solved on the larger domain by a few fixed-point steps; once

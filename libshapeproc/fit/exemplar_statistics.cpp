@@ -54,8 +54,11 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
     }
     if (band < 0) continue;
     const int parameter = interaction.parameter(a.category, b.category, p.measurement.axis, band);
-    s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
-    s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
+    // Each side counts the pair when its intensity sees the other (both, within a layer).
+    if (interaction.sees(a.category, b.category))
+      s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
+    if (interaction.sees(b.category, a.category))
+      s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
     const Interaction::Location where = interaction.locate(parameter);
     ++model.interactions[static_cast<std::size_t>(where.pair)]
           .axes[static_cast<std::size_t>(where.axis)]

@@ -44,6 +44,17 @@ struct FitDefaults {
   // exemplar's flat pseudo-likelihood, crescents-grid's 1e15) is no evidence of neutrality.
   double neutral_max_log_se = 1.0;
 
+  // ---- Layers (category_layers.hpp) ----
+  // A category is placed after a larger one when at least this share of its elements overlap or
+  // lie inside that one's elements: most of them are decorations on bases (data/corpus rims,
+  // edge-clusters: all of them; forest's mushrooms: all), not shapes that cross by chance.
+  double layer_share = 0.5;
+  // A layered category is anchored to its base (its intensity 0 off the base) when every one of
+  // its elements overlaps a base or lies apart from one by at most this share of its median
+  // radius: an overlap the drawing has and the proxies' chords lose (data/corpus edge-clusters:
+  // 8 of its 100 decorations).
+  double anchor_slack = 0.5;
+
   // ---- Estimator (fit_exemplar.hpp) ----
   // The maximum likelihood runs on tiles and on exemplars of at most this many elements: its
   // chains took over ten minutes at 460 elements, and half their iterations in 300 s on 100

@@ -33,7 +33,8 @@ void calibrate(ExemplarFit& fit, const ExemplarFitOptions& options) {
   std::ostringstream note;
   note << "density on a torus of " << record.multiple << " x " << record.multiple << " windows: ";
   for (std::size_t c = 0; c < record.ratio_after.size(); ++c) {
-    note << (c ? ", " : "") << "'" << model.categories[c].name << "' x" << std::setprecision(3)
+    note << (c ? ", " : "") << "'" << model.categories[c].name << "'"
+         << (model.categories[c].anchor >= 0 ? " per base" : "") << " x" << std::setprecision(3)
          << record.ratio_before[c];
     if (record.rounds > 1) note << " -> x" << record.ratio_after[c];
   }
@@ -65,6 +66,16 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
   };
   const auto maximum_likelihood = [&](const geometry::Scene& scene, int repeats, FitResult mpl) {
     if (!likelihood) return mpl;
+    if (mpl.model.layer_count() > 1) {
+      // Each layer's likelihood is conditional on the exemplar's layers below, which chains from
+      // empty do not hold fixed; the layered model is left to its pseudo-likelihood.
+      const std::string note =
+          "maximum likelihood not run: a layered model, fitted by its pseudo-likelihood and "
+          "checked on the output's scale";
+      mpl.notes.push_back(note);
+      if (mpl.model.fit) mpl.model.fit->notes.push_back(note);
+      return mpl;
+    }
     return refine_to_maximum_likelihood(scene, repeated_options(scene, repeats, options.fit),
                                         std::move(mpl), *options.likelihood);
   };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/fit/category_layers.hpp"
 #include "libshapeproc/fit/detail/existence_check.hpp"
 #include "libshapeproc/fit/detail/model_assembly.hpp"
 #include "libshapeproc/fit/detail/quadrature_design.hpp"
@@ -48,6 +49,8 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
   result.seconds.measurements = clock.seconds();
 
   add_thresholds(model, exemplar, pairs, measurer.bins(), options, result.notes);
+  for (std::string& note : assign_layers(model, exemplar, pairs, measurer, options.layer_share))
+    result.notes.push_back(std::move(note));
   assign_shape_classes(model, exemplar);
   model.neighbour_offsets = neighbour_offsets(exemplar, periodic);
   model.neighbour_offsets.share = std::max(0.0, options.near_birth_share);

@@ -55,6 +55,10 @@ struct FitOptions {
   // How many γ each pair of categories may have, and how far it may reach, from the exemplar's
   // element counts (parameter_budget.hpp). Not applied to explicit thresholds.
   ParameterBudget budget;
+  // Categories of which at least this share of elements overlap or lie inside a larger
+  // category's are placed after it, given its elements (category_layers.hpp); above 1: one
+  // layer, every pair symmetric.
+  double layer_share = kFitDefaults.layer_share;
   // The share of the maximum-likelihood chains' birth proposals drawn near a neighbour, recorded
   // in the model for every later chain (model::NeighbourOffsets::share; docs/mathematics.md,
   // "Births near neighbours"); in [0, 1), or kAutomaticNearBirths.

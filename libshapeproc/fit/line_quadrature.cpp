@@ -205,7 +205,7 @@ std::vector<LinePiece> integrate_line(const LineContext& context, int category, 
   // centre comes within the pair's reach plus both radii of the line.
   const int images = context.period.head(context.dimension).maxCoeff() > 0 ? 1 : 0;
   for (const Element& other : *context.data) {
-    if (!interaction.interacts(category, other.category)) continue;
+    if (!interaction.sees(category, other.category)) continue;
     const double reach =
         interaction.max_range(category, other.category) + own_radius + measurer.radius(other.shape);
     for (int iz = -images; iz <= images; ++iz)

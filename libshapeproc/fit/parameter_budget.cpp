@@ -90,7 +90,11 @@ std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, do
         largest = std::max(largest, std::abs(std::log(g)) / (se / g));
       }
     }
-    if (!neutral || pair.axes.front().gammas.empty()) continue;
+    // An anchor pair's bands say where the anchored category may be: they stay.
+    const bool anchor_pair =
+        model.categories[static_cast<std::size_t>(pair.first)].anchor == pair.second ||
+        model.categories[static_cast<std::size_t>(pair.second)].anchor == pair.first;
+    if (!neutral || anchor_pair || pair.axes.front().gammas.empty()) continue;
     // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
     model::AxisParameters axis = pair.axes.front();
     for (const model::AxisParameters& a : pair.axes)

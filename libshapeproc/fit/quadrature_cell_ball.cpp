@@ -130,7 +130,7 @@ std::vector<CellPart> integrate_cell_ball(const CellContext& context,
   context.grid->for_each_candidate(dummy.position, [&](int k) {
     if (hard_core) return;
     const geometry::Element& other = (*context.data)[static_cast<std::size_t>(k)];
-    if (!interaction.interacts(dummy.category, other.category)) return;
+    if (!interaction.sees(dummy.category, other.category)) return;
     const double reach = interaction.max_range(dummy.category, other.category);
     const Vec3 offset = geometry::minimum_image(other.position - dummy.position, context.period);
     if (offset.norm() - measurer.radius(dummy.shape) - measurer.radius(other.shape) >=

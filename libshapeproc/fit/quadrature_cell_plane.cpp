@@ -129,7 +129,7 @@ class PlaneCell {
     candidates.clear();
     context_.grid->for_each_candidate(dummy_.position, [&](int k) {
       const geometry::Element& other = (*context_.data)[static_cast<std::size_t>(k)];
-      if (!interaction_.interacts(dummy_.category, other.category)) return;
+      if (!interaction_.sees(dummy_.category, other.category)) return;
       const Vec3 offset =
           geometry::minimum_image(other.position - dummy_.position, context_.period);
       const double gap =

@@ -226,6 +226,11 @@ std::string model_to_json(const ShapeProcessModel& model) {
                           {"beta", c.beta},
                           {"beta_standard_error", number_or_null(c.beta_standard_error)},
                           {"beta_status", to_string(c.beta_status)}});
+    if (c.layer != 0) categories.back()["layer"] = c.layer;
+    if (c.anchor >= 0) {
+      categories.back()["anchor"] = c.anchor;
+      categories.back()["anchor_reach"] = c.anchor_reach;
+    }
   }
   json interaction = json::array();
   for (const PairInteraction& pair : model.interactions) {
@@ -332,6 +337,12 @@ std::vector<CategoryParameters> parse_categories(const json& document, const Rea
       category.beta_status = status_from(
           r.text(categories[c]["beta_status"], where + ".beta_status"), r, where + ".beta_status");
     }
+    if (categories[c].contains("layer"))
+      category.layer = r.integer(categories[c]["layer"], where + ".layer");
+    if (categories[c].contains("anchor"))
+      category.anchor = r.integer(categories[c]["anchor"], where + ".anchor");
+    if (categories[c].contains("anchor_reach"))
+      category.anchor_reach = r.number(categories[c]["anchor_reach"], where + ".anchor_reach");
     out.push_back(category);
   }
   return out;

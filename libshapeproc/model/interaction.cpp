@@ -11,6 +11,12 @@ namespace {
 constexpr double kContactCutoff = 1e-9;
 }  // namespace
 
+double Interaction::anchor_reach_of(int a, int b) const {
+  if (anchor_[static_cast<std::size_t>(a)] == b) return anchor_reach_[static_cast<std::size_t>(a)];
+  if (anchor_[static_cast<std::size_t>(b)] == a) return anchor_reach_[static_cast<std::size_t>(b)];
+  return -std::numeric_limits<double>::infinity();
+}
+
 Interaction::Interaction(const ShapeProcessModel& model)
     : categories_(static_cast<int>(model.categories.size())) {
   pair_index_.assign(static_cast<std::size_t>(categories_) * static_cast<std::size_t>(categories_),
@@ -19,7 +25,11 @@ Interaction::Interaction(const ShapeProcessModel& model)
   for (int c = 0; c < categories_; ++c) {
     locations_.push_back({-1, c, -1});
     theta_.push_back(std::log(model.categories[static_cast<std::size_t>(c)].beta));
+    layer_.push_back(model.categories[static_cast<std::size_t>(c)].layer);
+    anchor_.push_back(model.categories[static_cast<std::size_t>(c)].anchor);
+    anchor_reach_.push_back(model.categories[static_cast<std::size_t>(c)].anchor_reach);
   }
+  anchor_band_.assign(static_cast<std::size_t>(categories_), 0);
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const PairInteraction& source = model.interactions[p];
     Pair pair;
@@ -34,6 +44,10 @@ Interaction::Interaction(const ShapeProcessModel& model)
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
         locations_.push_back({static_cast<int>(p), static_cast<int>(i), static_cast<int>(k)});
       }
+      // An anchor pair's bands that end at or below the reach: an element in one is on its base.
+      const double reach = anchor_reach_of(source.first, source.second);
+      for (std::size_t k = 0; k < a.gammas.size(); ++k)
+        anchor_band_.push_back(k + 1 < a.thresholds.size() && a.thresholds[k + 1] <= reach);
       parameters_ += static_cast<int>(a.gammas.size());
       pair.min_hard_core = std::min(pair.min_hard_core, a.thresholds.front());
       pair.max_hard_core = std::max(pair.max_hard_core, a.thresholds.front());
@@ -42,6 +56,9 @@ Interaction::Interaction(const ShapeProcessModel& model)
       pair.axes.push_back(std::move(axis));
     }
     if (source.axes.empty()) pair.min_hard_core = 0.0;
+    // An anchor pair's distances are measured to the side of its reach (the sampler's test).
+    if (const double reach = anchor_reach_of(source.first, source.second); std::isfinite(reach))
+      pair.breakpoints.push_back(reach);
     std::sort(pair.breakpoints.begin(), pair.breakpoints.end());
     pair.breakpoints.erase(std::unique(pair.breakpoints.begin(), pair.breakpoints.end()),
                            pair.breakpoints.end());
@@ -82,7 +99,7 @@ PairEffect pair_distance_effect(const Interaction& interaction,
                                 const geometry::PairMeasurer& measurer, const geometry::Element& xi,
                                 const geometry::Element& neighbour) {
   PairEffect effect;
-  if (!interaction.interacts(xi.category, neighbour.category)) return effect;
+  if (!interaction.sees(xi.category, neighbour.category)) return effect;
   const double reach = interaction.max_range(xi.category, neighbour.category);
   const double hard_core = interaction.min_hard_core(xi.category, neighbour.category);
   // A pair with a hard core only (no band) may have its range at 0 or below: it is measured up to
@@ -125,6 +142,13 @@ PairEffect pair_effect(const Interaction& interaction, const geometry::PairMeasu
   PairEffect effect = pair_distance_effect(interaction, measurer, xi, neighbour);
   decide_axis(interaction, measurer, xi, neighbour, effect);
   return effect;
+}
+
+bool Interaction::anchored(int category, const std::vector<std::pair<int, int>>& counts) const {
+  if (anchor(category) < 0) return true;
+  for (const auto& [parameter, count] : counts)
+    if (count > 0 && anchor_band(parameter)) return true;
+  return false;
 }
 
 void InteractionCounts::add(int parameter) {

@@ -34,6 +34,28 @@ class Interaction {
   // Largest δ_K of any pair (0 when nothing interacts).
   double range() const { return range_; }
   bool interacts(int ca, int cb) const { return pair_of(ca, cb) >= 0; }
+  // Whether the conditional intensity of an element of `category` counts a neighbour of
+  // `neighbour`: the two interact and the neighbour's layer is not later than the category's.
+  // A later layer is placed given the earlier ones, which never see it (docs/fit.md, "Layers"):
+  // a pair of layers' γ acts on the later one's intensity only.
+  bool sees(int category, int neighbour) const {
+    return interacts(category, neighbour) && layer_[static_cast<std::size_t>(neighbour)] <=
+                                                 layer_[static_cast<std::size_t>(category)];
+  }
+  int layer(int category) const { return layer_[static_cast<std::size_t>(category)]; }
+  // The category an element of `category` must lie closer than anchor_reach to an element of
+  // (-1: none).
+  int anchor(int category) const { return anchor_[static_cast<std::size_t>(category)]; }
+  double anchor_reach(int category) const {
+    return anchor_reach_[static_cast<std::size_t>(category)];
+  }
+  // Whether an element of `category` with these interaction counts t(ξ, x) may be there: its
+  // category has no anchor, or some count is of a band of the anchor pair below the reach.
+  bool anchored(int category, const std::vector<std::pair<int, int>>& counts) const;
+  // Whether θ index `parameter` is a band of an anchor pair that ends at or below the reach.
+  bool anchor_band(int parameter) const {
+    return anchor_band_[static_cast<std::size_t>(parameter)] != 0;
+  }
   // Below this distance the pair is a hard-core violation whatever the axis; at or beyond
   // max_range it does not interact. Between, the axis decides.
   double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
@@ -84,6 +106,8 @@ class Interaction {
     const std::vector<Axis>& axes = pairs_[static_cast<std::size_t>(pair)].axes;
     return axes[axes.size() == 1 ? 0 : static_cast<std::size_t>(axis)];
   }
+  // The reach of the pair (a, b) when one anchors the other; −∞ otherwise.
+  double anchor_reach_of(int a, int b) const;
   int pair_of(int ca, int cb) const {
     return pair_index_[static_cast<std::size_t>(ca) * static_cast<std::size_t>(categories_) +
                        static_cast<std::size_t>(cb)];
@@ -94,7 +118,11 @@ class Interaction {
   int classes_ = 0;
   std::vector<int> class_of_shape_;  // by model shape; empty without shape classes
   double range_ = 0.0;
-  std::vector<int> pair_index_;  // categories x categories -> index into pairs_ or -1
+  std::vector<int> pair_index_;       // categories x categories -> index into pairs_ or -1
+  std::vector<int> layer_;            // per category
+  std::vector<int> anchor_;           // per category
+  std::vector<double> anchor_reach_;  // per category
+  std::vector<char> anchor_band_;     // per θ index
   std::vector<Pair> pairs_;
   std::vector<Location> locations_;
   std::vector<double> theta_;  // θ: log β (betas, from the model) then log γ, by θ index

@@ -1,5 +1,6 @@
 #include "libshapeproc/model/shape_process_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +36,12 @@ const char* to_string(ParameterStatus status) {
       return "fixed";
   }
   return "fixed";
+}
+
+int ShapeProcessModel::layer_count() const {
+  int last = 0;
+  for (const CategoryParameters& c : categories) last = std::max(last, c.layer);
+  return last + 1;
 }
 
 double ShapeProcessModel::interaction_range() const {
@@ -236,6 +243,19 @@ void validate(const ShapeProcessModel& model) {
       fail("categories[" + std::to_string(c) + "].beta",
            "must be finite and > 0, got " + number(beta));
     }
+    const int layer = model.categories[c].layer;
+    if (layer < 0 || layer >= static_cast<int>(model.categories.size()))
+      fail("categories[" + std::to_string(c) + "].layer",
+           "must be at least 0 and below the number of categories, got " + std::to_string(layer));
+    const int anchor = model.categories[c].anchor;
+    if (anchor >= 0 && (anchor >= static_cast<int>(model.categories.size()) ||
+                        model.categories[static_cast<std::size_t>(anchor)].layer >= layer ||
+                        model.interaction_index(static_cast<int>(c), anchor) < 0))
+      fail("categories[" + std::to_string(c) + "].anchor",
+           "must be -1 or a category of a lower layer that this one interacts with, got " +
+               std::to_string(anchor));
+    if (!std::isfinite(model.categories[c].anchor_reach))
+      fail("categories[" + std::to_string(c) + "].anchor_reach", "must be finite");
   }
   const geometry::DirectionBins bins = [&] {
     try {

@@ -39,6 +39,15 @@ struct CategoryParameters {
   // free when fitted normally; unbounded when it follows the data points' share (no finite
   // maximum); fixed when set by hand.
   ParameterStatus beta_status = ParameterStatus::fixed;
+  // The stage at which the category's elements are placed (docs/fit.md, "Layers"): layer 0
+  // first, then each later layer given the elements of the earlier ones, which do not see it.
+  // Decorations on base shapes, or mushrooms in trees, lie one layer above their bases.
+  int layer = 0;
+  // The category (its base, in a lower layer) that every element of this one must lie closer
+  // than `anchor_reach` to (shape distance: at 0, overlap or lie inside one of its elements): its
+  // intensity is 0 elsewhere. -1: none.
+  int anchor = -1;
+  double anchor_reach = 0.0;
 };
 
 struct AxisParameters {
@@ -126,6 +135,8 @@ struct ShapeProcessModel {
 
   // Largest δ_K over every pair and axis: beyond it no pair interacts.
   double interaction_range() const;
+  // The number of layers: one more than the largest category layer (1 for an unlayered model).
+  int layer_count() const;
   // Index into `interactions` of the pair (a, b) in either order, or -1.
   int interaction_index(int a, int b) const;
   // Measurement options for a PairMeasurer on this model's shapes.
@@ -134,11 +145,11 @@ struct ShapeProcessModel {
   geometry::Scene shape_space() const;
 };
 
-// Checks every invariant (β > 0 finite, thresholds finite and not decreasing, a last one above 0
-// where the first is below (a pair that may overlap), one γ per band,
-// γ ≥ 0 finite, categories in range and each pair once, axes matching the canonical directions of
-// `measurement.directions` (or one, isotropic), shape categories in range, shape dimensions
-// matching). Throws std::invalid_argument with the path of the offending field
+// Checks every invariant (β > 0 finite, layers from 0 to below the number of categories, thresholds
+// finite and not decreasing, a last one above 0 where the first is below (a pair that may overlap),
+// one γ per band, γ ≥ 0 finite, categories in range and each pair once, axes matching the canonical
+// directions of `measurement.directions` (or one, isotropic), shape categories in range, shape
+// dimensions matching). Throws std::invalid_argument with the path of the offending field
 // ("interaction[1].axes[2].gammas[0]: must be finite and >= 0, got -1").
 void validate(const ShapeProcessModel& model);
 

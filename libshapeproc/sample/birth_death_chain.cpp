@@ -66,10 +66,12 @@ ChainGeometry::ChainGeometry(const ChainGeometry& same_shapes,
 ChainGeometry::~ChainGeometry() = default;
 
 ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
-                         std::shared_ptr<const ChainGeometry> given, bool other_thresholds)
+                         std::shared_ptr<const ChainGeometry> given, bool other_thresholds,
+                         int births_of_layer)
     : dimension(model.dimension),
       interaction(std::make_unique<const model::Interaction>(model)),
-      geometry(std::move(given)) {
+      geometry(std::move(given)),
+      layer(births_of_layer) {
   if (!geometry)
     geometry = std::make_shared<const ChainGeometry>(model, *interaction, domain);
   else if (other_thresholds)
@@ -92,8 +94,14 @@ ChainTables::ChainTables(const model::ShapeProcessModel& model, const geometry::
   }
   std::vector<double> weight_sum;
   shape_cumulative = shape_probabilities(model, shapes_of, weight_sum);
-  for (std::size_t c = 0; c < model.categories.size(); ++c)
+  for (std::size_t c = 0; c < model.categories.size(); ++c) {
+    if (layer >= 0 && model.categories[c].layer != layer) {
+      log_beta.push_back(-std::numeric_limits<double>::infinity());
+      continue;
+    }
     log_beta.push_back(std::log(model.categories[c].beta * weight_sum[c]));
+    born.push_back(static_cast<int>(c));
+  }
   log_shape_probability.assign(std::max<std::size_t>(1, model.shapes.size()), 0.0);
   for (std::size_t c = 0; c < shapes_of.size(); ++c)
     for (std::size_t i = 0; i < shapes_of[c].size(); ++i) {
@@ -116,7 +124,7 @@ BirthDeathChain::BirthDeathChain(const ChainTables& tables, const ChainRegion& r
       state_(*tables.interaction, *tables.geometry->measurer, tables.geometry->guard.get(),
              region.domain, tables.reach, region.grid_box, region.period) {
   log_measure_categories_ = std::log(geometry::measure(r_.free_region, t_.dimension)) +
-                            std::log(static_cast<double>(t_.shapes_of.size()));
+                            std::log(static_cast<double>(t_.born.size()));
   for (const Element& e : fixed) {
     const double term = log_lambda_over_beta(e, -1);
     if (!std::isfinite(term))
@@ -265,7 +273,7 @@ Element BirthDeathChain::birth_proposal() {
     return t_.near_births->propose(state_.at(slot), random_);
   }
   Element xi = random_element();
-  xi.category = static_cast<int>(random_.index(t_.shapes_of.size()));
+  xi.category = t_.born[random_.index(t_.born.size())];
   xi.shape = random_shape(xi.category);
   return xi;
 }

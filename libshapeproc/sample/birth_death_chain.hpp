@@ -42,9 +42,11 @@ struct ChainGeometry {
 struct ChainTables {
   // With `other_thresholds`, `geometry` is of a model whose shapes and measurement are the same
   // but not its thresholds: its proxies are shared and a guard is made for the new ones.
+  // With `layer` ≥ 0, births are of that layer's categories only (a layered model's stage,
+  // model::CategoryParameters::layer): the others' log β is −∞.
   ChainTables(const model::ShapeProcessModel& model, const geometry::Domain& domain,
               std::shared_ptr<const ChainGeometry> geometry = nullptr,
-              bool other_thresholds = false);
+              bool other_thresholds = false, int layer = -1);
   ~ChainTables();
 
   int dimension = 2;
@@ -55,6 +57,8 @@ struct ChainTables {
   // weight shared equally by its shapes); empty: its shapes are equally likely.
   std::vector<std::vector<double>> shape_cumulative;
   std::vector<double> log_beta;  // per category: log(β_c Σ_k w_k)
+  std::vector<int> born;         // the categories a uniform birth proposes (every one unlayered)
+  int layer = -1;                // the layer whose births these are; -1: every category's
   double reach = 0.0;            // farthest apart two interacting reference positions can be
   // Per shape (one point shape for a point pattern): the log of its probability within its
   // category as a uniform birth draws it.

@@ -76,6 +76,13 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
                                     : 0.05 * domain_.sizes().head(dimension).minCoeff();
   region_ = std::make_unique<const ChainRegion>(std::move(region));
   check_compression(options_.compression);
+  if (model_.layer_count() > 1) {
+    core::check(!options_.compression.enabled(), "sample",
+                "a layered model's outputs have no compressing burn-in");
+    for (int layer = 0; layer < model_.layer_count(); ++layer)
+      layers_.push_back(
+          std::make_unique<const ChainTables>(model_, domain_, tables_->geometry, false, layer));
+  }
   if (options_.compression.enabled() && range > 0) prepare_growth();
 }
 
@@ -152,23 +159,57 @@ bool ShapeProcessSampler::torus_smaller_than_reach() const {
 
 SampleResult ShapeProcessSampler::sample(core::Random& random,
                                          const synthesis::ChainControl& control) const {
+  if (layers_.empty())
+    return sample_layer(*tables_, options_.fixed, options_.start, random, control);
+  // A layered model: each layer given the elements of those below (the earlier results are its
+  // fixed elements); the result is the last layer's, with every layer's steps and moves.
+  SampleResult result;
+  std::vector<Element> placed = options_.fixed;
+  long long steps = 0;
+  MoveCounts moves;
+  std::vector<synthesis::TracePoint> trace;
+  for (std::size_t layer = 0; layer < layers_.size(); ++layer) {
+    std::vector<Element> start;
+    for (const Element& e : options_.start)
+      if (model_.categories[static_cast<std::size_t>(e.category)].layer == static_cast<int>(layer))
+        start.push_back(e);
+    result = sample_layer(*layers_[layer], placed, start, random, control);
+    result.observed_from = steps;
+    for (synthesis::TracePoint point : result.trace) {
+      point.step += steps;
+      trace.push_back(point);
+    }
+    steps += result.iterations;
+    moves += result.moves;
+    placed = result.scene.elements;
+  }
+  result.iterations = steps;
+  result.moves = moves;
+  result.trace = std::move(trace);
+  return result;
+}
+
+SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
+                                               const std::vector<Element>& fixed,
+                                               const std::vector<Element>& start,
+                                               core::Random& random,
+                                               const synthesis::ChainControl& control) const {
   // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain.
-  if (options_.decompose && options_.fixed.empty() && options_.free_region.isEmpty() &&
+  if (options_.decompose && fixed.empty() && options_.free_region.isEmpty() &&
       options_.observe_every == 0 && !options_.compression.enabled() &&
       decomposable(domain_, reach()))
-    return sample_by_cells(model_, *tables_, *region_, options_, random, control);
+    return sample_by_cells(model_, tables, *region_, options_, random, control);
   SampleResult result;
   long long growth_steps = 0;
   std::vector<Element> grown;
-  if (!growth_.empty())
-    grown = grow(options_.start, random, control, growth_steps, result.growth_moves);
-  BirthDeathChain chain(*tables_, *region_, random, options_.fixed,
-                        growth_.empty() ? options_.start : std::vector<Element>{});
+  if (!growth_.empty()) grown = grow(start, random, control, growth_steps, result.growth_moves);
+  BirthDeathChain chain(tables, *region_, random, fixed,
+                        growth_.empty() ? start : std::vector<Element>{});
   if (!growth_.empty()) chain.add_or_place_near(grown, push_radius_, kPushAttempts);
   const bool automatic = options_.iterations <= 0;
   const long long total = automatic ? 0 : options_.iterations;
   const long long progress_every = automatic ? 10000 : std::max<long long>(1, total / 100);
-  StationarityRule rule(options_.max_iterations, options_.run_on && options_.start.empty(),
+  StationarityRule rule(options_.max_iterations, options_.run_on && start.empty(),
                         static_cast<int>(model_.categories.size()));
   CompressionSchedule compression(options_.compression);
   long long step = 1;

@@ -100,6 +100,9 @@ struct SampleResult {
   // category, then pairs per interaction parameter) at the end, and every observe_every steps.
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
+  // The steps before the chain that made `observations` and `trend`: a layered model's layers
+  // but its last (whose chain holds the earlier layers fixed); 0 otherwise.
+  long long observed_from = 0;
   int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
   // The compressing burn-in's steps and the count it reached at the end of its first phase (0
   // without one).
@@ -154,6 +157,14 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   SamplerOptions options_;
   std::unique_ptr<const ChainTables> tables_;
   std::unique_ptr<const ChainRegion> region_;  // the whole domain, or the free region
+  // A layered model's stages (model::CategoryParameters::layer), each with births of its own
+  // categories only; empty for a model of one layer.
+  std::vector<std::unique_ptr<const ChainTables>> layers_;
+  // One chain with `tables`, from `fixed` and `start`: the whole run of an unlayered model, or one
+  // layer's given those below.
+  SampleResult sample_layer(const ChainTables& tables, const std::vector<geometry::Element>& fixed,
+                            const std::vector<geometry::Element>& start, core::Random& random,
+                            const synthesis::ChainControl& control) const;
   // The compressing burn-in's growth stages: the model with its hard cores scaled
   // (compression.hpp), smallest first, or for a crystal's growth one model for every stage (its
   // births near neighbours); empty without compression.

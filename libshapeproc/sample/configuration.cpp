@@ -36,7 +36,7 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
   grid_.for_each_candidate(xi.position, [&](int slot) {
     if (slot == skip) return;
     const Element& other = elements_[static_cast<std::size_t>(slot)];
-    if (!interaction_.interacts(xi.category, other.category)) return;
+    if (!interaction_.sees(xi.category, other.category)) return;
     const Vec3 t = geometry::minimum_image(other.position - xi.position, period_);
     // Shape distances are at least the reference positions' distance minus both radii (t is
     // the nearest image in every coordinate, so no other image is nearer).
@@ -78,6 +78,16 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
     near_.emplace_back(slot, effect);
   }
   if (forbidden) return -std::numeric_limits<double>::infinity();
+  // An anchored category lives on its base only: some base lies closer than the reach (an
+  // anchor pair's distances are measured to the reach's side).
+  if (const int anchor = interaction_.anchor(xi.category); anchor >= 0) {
+    const double reach = interaction_.anchor_reach(xi.category);
+    const bool on_base = std::any_of(near_.begin(), near_.end(), [&](const auto& near) {
+      return elements_[static_cast<std::size_t>(near.first)].category == anchor &&
+             near.second.distance < reach;
+    });
+    if (!on_base) return -std::numeric_limits<double>::infinity();
+  }
   double total = 0.0;
   for (auto& [slot, effect] : near_) {
     const Element& other = elements_[static_cast<std::size_t>(slot)];

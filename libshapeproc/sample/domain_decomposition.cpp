@@ -64,7 +64,7 @@ double pilot_density(const model::ShapeProcessModel& model, const ChainTables& t
                  (tables.dimension == 3 ? kPilotReaches3 : kPilotReaches2) * tables.reach);
   const geometry::Domain torus(geometry::Box3(box.min(), box.min() + sizes), tables.dimension,
                                geometry::Boundary::torus);
-  const ChainTables pilot_tables(model, torus);
+  const ChainTables pilot_tables(model, torus, nullptr, false, tables.layer);
   ChainRegion region{torus, torus.box()};
   region.shift_probability = whole.shift_probability;
   region.near_birth_share = whole.near_birth_share;

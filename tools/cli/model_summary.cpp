@@ -107,6 +107,10 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
     out << "  " << std::left << std::setw(16) << c.name << std::right << " " << g(c.beta);
     if (std::isfinite(c.beta_standard_error)) out << " ± " << g(c.beta_standard_error, 2);
     if (c.beta_status == model::ParameterStatus::unbounded) out << " (unbounded)";
+    if (c.layer > 0) out << "  layer " << c.layer;
+    if (c.anchor >= 0)
+      out << ", on '" << model.categories[static_cast<std::size_t>(c.anchor)].name << "' (within "
+          << g(c.anchor_reach, 3) << ")";
     out << '\n';
   }
   if (!model.shape_classes.empty()) {

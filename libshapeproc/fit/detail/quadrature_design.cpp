@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "libshapeproc/core/parallel_for.hpp"
+#include "libshapeproc/fit/anchored_quadrature.hpp"
 #include "libshapeproc/fit/line_quadrature.hpp"
 #include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
@@ -19,6 +20,12 @@ using geometry::Element;
 using geometry::Vec3;
 
 namespace {
+
+// Monte Carlo points around each base of an anchored category (anchored_quadrature.hpp). The
+// integral over the part of a base's disc where the category may lie has a relative error of
+// about 1/√(points there): 11% for one base whose ring holds a fifth of its disc, and β rests on
+// the sum over the bases (4% over ten).
+constexpr int kAnchoredPointsPerBase = 400;
 
 using FitProgress = std::function<void(const char*, long long, long long)>;
 
@@ -310,6 +317,8 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
   }
   for (std::size_t d = 0; d < dummies.size(); ++d) {
     for (CellPart& part : parts[d]) {
+      // An anchored category's integral is its own (anchored_quadrature.hpp).
+      if (interaction.anchor(dummies[d].element.category) >= 0) continue;
       QuadraturePoint q;
       q.weight = out.lines ? dummies[d].line_weight *
                                  line_scale[static_cast<std::size_t>(dummies[d].element.category)] *
@@ -320,6 +329,9 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
       design.points.push_back(std::move(q));
     }
   }
+  for (QuadraturePoint& q : anchored_quadrature(exemplar, region, measurer, interaction, shapes_of,
+                                                window, kAnchoredPointsPerBase))
+    design.points.push_back(std::move(q));
   return out;
 }
 

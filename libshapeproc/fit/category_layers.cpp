@@ -1,0 +1,147 @@
+#include "libshapeproc/fit/category_layers.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "libshapeproc/core/format.hpp"
+#include "libshapeproc/fit/fit_defaults.hpp"
+
+namespace shapeproc::fit {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Per category, the median bounding radius of its elements' shapes (0 for points).
+std::vector<double> median_radii(const geometry::Scene& exemplar,
+                                 const geometry::PairMeasurer& measurer) {
+  std::vector<std::vector<double>> radii(exemplar.categories.size());
+  for (const geometry::Element& e : exemplar.elements)
+    radii[static_cast<std::size_t>(e.category)].push_back(measurer.radius(e.shape));
+  std::vector<double> out;
+  for (std::vector<double>& r : radii) {
+    if (r.empty()) {
+      out.push_back(0.0);
+      continue;
+    }
+    std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
+    out.push_back(r[r.size() / 2]);
+  }
+  return out;
+}
+
+// nearest[i][a]: the shape distance from element i to the nearest element of category a among
+// the measured pairs (∞ when none is within the measurer's cut-off).
+std::vector<std::vector<double>> nearest_by_category(
+    const geometry::Scene& exemplar, const std::vector<geometry::PairRecord>& pairs) {
+  std::vector<std::vector<double>> nearest(
+      exemplar.elements.size(), std::vector<double>(exemplar.categories.size(), kInfinity));
+  for (const geometry::PairRecord& p : pairs) {
+    const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
+    const auto ci = static_cast<std::size_t>(exemplar.elements[i].category);
+    const auto cj = static_cast<std::size_t>(exemplar.elements[j].category);
+    nearest[i][cj] = std::min(nearest[i][cj], p.measurement.distance);
+    nearest[j][ci] = std::min(nearest[j][ci], p.measurement.distance);
+  }
+  return nearest;
+}
+
+// Splits every axis of the pair (a, b) at `distance` (a band with γ 1, to be fitted), unless it
+// is a threshold already; false when some axis cannot take it (at or beyond its last threshold,
+// at or below its hard core).
+bool split_at(model::ShapeProcessModel& model, int a, int b, double distance) {
+  const int index = model.interaction_index(a, b);
+  if (index < 0) return false;
+  std::vector<model::AxisParameters>& axes =
+      model.interactions[static_cast<std::size_t>(index)].axes;
+  for (const model::AxisParameters& axis : axes)
+    if (!(axis.thresholds.size() >= 2 && distance > axis.thresholds.front() &&
+          distance < axis.thresholds.back()))
+      return false;
+  for (model::AxisParameters& axis : axes) {
+    const auto at = std::lower_bound(axis.thresholds.begin(), axis.thresholds.end(), distance);
+    if (*at == distance) continue;
+    const auto band = at - axis.thresholds.begin();  // the new band's index
+    axis.thresholds.insert(at, distance);
+    axis.gammas.insert(axis.gammas.begin() + band, 1.0);
+    axis.gamma_standard_errors.insert(axis.gamma_standard_errors.begin() + band,
+                                      std::numeric_limits<double>::quiet_NaN());
+    axis.status.insert(axis.status.begin() + band, model::ParameterStatus::free);
+    axis.observed_pairs.insert(axis.observed_pairs.begin() + band, 0);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<LayerDependence> layer_dependences(const geometry::Scene& exemplar,
+                                               const std::vector<geometry::PairRecord>& pairs,
+                                               const geometry::PairMeasurer& measurer,
+                                               double share) {
+  std::vector<LayerDependence> out;
+  const std::size_t categories = exemplar.categories.size();
+  if (categories < 2 || share > 1.0) return out;
+  const std::vector<double> radius = median_radii(exemplar, measurer);
+  const std::vector<std::vector<double>> nearest = nearest_by_category(exemplar, pairs);
+  for (std::size_t c = 0; c < categories; ++c) {
+    for (std::size_t a = 0; a < categories; ++a) {
+      if (a == c || !(radius[a] > radius[c])) continue;
+      double on = 0.0, count = 0.0, farthest = -kInfinity;
+      for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
+        if (static_cast<std::size_t>(exemplar.elements[i].category) != c) continue;
+        count += 1.0;
+        on += nearest[i][a] < 0 ? 1.0 : 0.0;
+        farthest = std::max(farthest, nearest[i][a]);
+      }
+      if (count > 0 && on / count >= share)
+        out.push_back({static_cast<int>(c), static_cast<int>(a), on / count, farthest});
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> assign_layers(model::ShapeProcessModel& model,
+                                       const geometry::Scene& exemplar,
+                                       const std::vector<geometry::PairRecord>& pairs,
+                                       const geometry::PairMeasurer& measurer, double share) {
+  const std::vector<LayerDependence> found = layer_dependences(exemplar, pairs, measurer, share);
+  std::vector<std::string> notes;
+  if (found.empty()) return notes;
+  // Bases are strictly larger, so the categories by decreasing radius meet every base first.
+  const std::vector<double> radius = median_radii(exemplar, measurer);
+  std::vector<int> order(model.categories.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return radius[static_cast<std::size_t>(a)] > radius[static_cast<std::size_t>(b)];
+  });
+  for (model::CategoryParameters& c : model.categories) c.layer = 0;
+  for (int c : order)
+    for (const LayerDependence& d : found)
+      if (d.category == c)
+        model.categories[static_cast<std::size_t>(c)].layer =
+            std::max(model.categories[static_cast<std::size_t>(c)].layer,
+                     model.categories[static_cast<std::size_t>(d.base)].layer + 1);
+  for (const LayerDependence& d : found) {
+    model::CategoryParameters& c = model.categories[static_cast<std::size_t>(d.category)];
+    std::string note = "layer " + std::to_string(c.layer) + ": '" + c.name + "' placed after '" +
+                       model.categories[static_cast<std::size_t>(d.base)].name + "' (" +
+                       core::format_general(d.share, 2) +
+                       " of its elements overlap or lie inside one)";
+    // Every element on a base, or off one by less than the slack: anchored there. The reach is a
+    // hair past the farthest, so that its band holds every element.
+    const double slack = kFitDefaults.anchor_slack * radius[static_cast<std::size_t>(d.category)];
+    const double reach =
+        d.farthest <= 0 ? 0.0 : d.farthest + 1e-6 * std::max(1.0, std::abs(d.farthest));
+    if (c.anchor < 0 && d.farthest <= slack && split_at(model, d.category, d.base, reach)) {
+      c.anchor = d.base;
+      c.anchor_reach = reach;
+      note += "; every one lies within " + core::format_general(reach, 3) +
+              " of one, so its intensity is 0 farther off";
+    }
+    notes.push_back(std::move(note));
+  }
+  return notes;
+}
+
+}  // namespace shapeproc::fit
