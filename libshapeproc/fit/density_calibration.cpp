@@ -8,6 +8,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
+#include "libshapeproc/fit/effective_sample_size.hpp"
 #include "libshapeproc/fit/fit_defaults.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/model/interaction.hpp"
@@ -19,6 +20,9 @@ namespace shapeproc::fit {
 namespace {
 
 constexpr double kLargestStep = kFitDefaults.calibration_largest_step;
+constexpr double kLeastElasticity = kFitDefaults.calibration_least_elasticity;
+// Observations a chain's mean needs for its own Monte Carlo error to be estimated.
+constexpr std::size_t kLeastObservations = 20;
 
 // The torus of `multiple` windows along x and y, at the window's origin. A 3D exemplar keeps its
 // depth: it is a layer (pebbles on the ground), and its outputs extend it sideways; a torus of
@@ -31,8 +35,22 @@ geometry::Domain calibration_domain(const geometry::Scene& exemplar, double mult
 
 struct Chain {
   bool ran_away = false;
-  std::vector<double> ratio;  // per category
+  std::vector<double> ratio;    // per category
+  std::vector<double> allowed;  // per category: the largest |ratio − 1| that agrees
 };
+
+// The chain agrees on a category within the tolerance or within two Monte Carlo standard errors
+// of its mean count (from its observations' effective sample size; two Poisson standard errors
+// of a single state when it has too few observations).
+double allowed_error(const std::vector<std::vector<double>>& observations, std::size_t first,
+                     std::size_t end, std::size_t c, double expected, double tolerance) {
+  if (end - first < kLeastObservations)
+    return std::max(tolerance, 2.0 / std::sqrt(std::max(1.0, expected)));
+  std::vector<double> column;
+  for (std::size_t i = first; i < end; ++i) column.push_back(observations[i][c]);
+  const EffectiveSize size = effective_size(column, 1, 0, {{0, static_cast<int>(column.size())}});
+  return std::max(tolerance, 2.0 * size.standard_error / std::max(1.0, expected));
+}
 
 // `geometry`: the proxies of the model's shapes on `domain`, built once for every chain (the
 // check changes β and γ, never the shapes or thresholds). The ratio is the chain's mean count per
@@ -41,8 +59,8 @@ struct Chain {
 // (no run-on).
 Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& domain,
                 const std::shared_ptr<const sample::ChainGeometry>& geometry,
-                const std::vector<double>& expected, double exemplar_density, std::uint64_t seed,
-                int threads) {
+                const std::vector<double>& expected, double exemplar_density, double tolerance,
+                std::uint64_t seed, int threads) {
   OutputSampling sampling;
   sampling.exemplar_density = exemplar_density;
   sampling.threads = threads;
@@ -62,46 +80,87 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
     chain.ran_away = true;  // the runaway stop: the only refusal a valid model's chain makes
     return chain;
   }
-  // The observed chain's own steps (a layered model's last layer; the earlier layers' counts are
-  // those it holds fixed).
-  const long long steps = result.iterations - result.observed_from;
-  const long long from = std::max(result.compression_steps, steps / 2);
+  // Each category's mean over the second half of its own chain: the whole run's (after any
+  // burn-in), or a layered model's chain of its layer.
+  const std::size_t n = result.observations.size();
   std::vector<double> counts(expected.size(), 0.0);
-  double kept = 0.0;
-  for (std::size_t i = 0; i < result.observations.size(); ++i) {
-    if (static_cast<long long>(i + 1) * options.observe_every <= from) continue;
-    for (std::size_t c = 0; c < expected.size(); ++c) counts[c] += result.observations[i][c];
-    kept += 1.0;
-  }
-  if (kept == 0.0) {  // a run too short to observe: its last state
+  for (std::size_t c = 0; c < expected.size(); ++c) {
+    std::size_t first = std::max<std::size_t>(
+        n / 2, static_cast<std::size_t>(result.compression_steps / options.observe_every));
+    std::size_t end = n;
+    if (!result.layer_observations.empty()) {
+      const auto layer = static_cast<std::size_t>(model.categories[c].layer);
+      const std::size_t start = result.layer_observations[layer];
+      end = layer + 1 < result.layer_observations.size() ? result.layer_observations[layer + 1] : n;
+      first = start + (end - start) / 2;
+    }
+    double kept = 0.0;
+    for (std::size_t i = first; i < end; ++i, kept += 1.0) counts[c] += result.observations[i][c];
+    chain.allowed.push_back(
+        allowed_error(result.observations, first, end, c, expected[c], tolerance));
+    if (kept > 0) {
+      counts[c] /= kept;
+      continue;
+    }
+    counts[c] = 0.0;  // a run too short to observe: its last state
     for (const geometry::Element& e : result.scene.elements)
-      counts[static_cast<std::size_t>(e.category)] += 1;
-    kept = 1.0;
+      counts[c] += e.category == static_cast<int>(c) ? 1.0 : 0.0;
   }
+  std::vector<double> last(expected.size(), 0.0);  // the final state's counts
+  for (const geometry::Element& e : result.scene.elements)
+    last[static_cast<std::size_t>(e.category)] += 1.0;
+  for (std::size_t c = 0; c < expected.size(); ++c) chain.ratio.push_back(counts[c] / expected[c]);
+  // An anchored category's count follows its bases': its ratio is per base of those its chain
+  // held (its β sets how many each base carries; the bases' own β, how many bases there are).
   for (std::size_t c = 0; c < expected.size(); ++c)
-    chain.ratio.push_back(counts[c] / kept / expected[c]);
-  // An anchored category's count follows its bases': its ratio is per base (its β sets how many
-  // each base carries; the bases' own β, how many bases there are).
-  std::vector<double> per_base = chain.ratio;
-  for (std::size_t c = 0; c < expected.size(); ++c)
-    if (const int anchor = model.categories[c].anchor; anchor >= 0)
-      per_base[c] = chain.ratio[static_cast<std::size_t>(anchor)] > 0
-                        ? chain.ratio[c] / chain.ratio[static_cast<std::size_t>(anchor)]
-                        : 0.0;
-  chain.ratio = std::move(per_base);
+    if (const int anchor = model.categories[c].anchor; anchor >= 0) {
+      const double bases =
+          last[static_cast<std::size_t>(anchor)] / expected[static_cast<std::size_t>(anchor)];
+      chain.ratio[c] = bases > 0 ? chain.ratio[c] / bases : 0.0;
+    }
   return chain;
 }
 
-bool category_agrees(double ratio, double expected, double tolerance) {
-  const double allowed = std::max(tolerance, 2.0 / std::sqrt(std::max(1.0, expected)));
-  return std::abs(ratio - 1.0) <= allowed;
+bool category_agrees(const Chain& chain, std::size_t c) {
+  return std::abs(chain.ratio[c] - 1.0) <= chain.allowed[c];
 }
 
-bool agrees(const std::vector<double>& ratio, const std::vector<double>& expected,
-            double tolerance) {
-  for (std::size_t c = 0; c < ratio.size(); ++c)
-    if (!category_agrees(ratio[c], expected[c], tolerance)) return false;
+bool agrees(const Chain& chain) {
+  for (std::size_t c = 0; c < chain.ratio.size(); ++c)
+    if (!category_agrees(chain, c)) return false;
   return true;
+}
+
+// A β step and the chain's ratios before it.
+struct Step {
+  std::vector<double> beta, ratio;
+};
+
+bool has_attraction(const model::ShapeProcessModel& model) {
+  for (const model::PairInteraction& pair : model.interactions)
+    for (const model::AxisParameters& axis : pair.axes)
+      for (double g : axis.gammas)
+        if (g > 1.0) return true;
+  return false;
+}
+
+// Whether the densities are too high and β does not bring them down: every category over the
+// tolerance whose β the last step lowered moved by less than kLeastElasticity of that step (in
+// log), as counts that the attraction holds up do (amacrine: β × 0.26 took 2.6 times the
+// exemplar's count to 1.97 times it). The attraction is then what is wrong.
+bool held_by_attraction(const model::ShapeProcessModel& model, const Step& previous,
+                        const Chain& chain) {
+  if (previous.beta.empty() || !has_attraction(model)) return false;
+  const std::vector<double>& ratio = chain.ratio;
+  bool over = false;
+  for (std::size_t c = 0; c < ratio.size(); ++c) {
+    if (ratio[c] <= 1.0 || category_agrees(chain, c)) continue;
+    over = true;
+    const double step = std::log(previous.beta[c] / model.categories[c].beta);
+    if (!(step > 0) || !(previous.ratio[c] > 0) || !(ratio[c] > 0)) return false;
+    if (std::log(previous.ratio[c] / ratio[c]) >= kLeastElasticity * step) return false;
+  }
+  return over;
 }
 
 void shrink_attraction(model::ShapeProcessModel& model, double factor) {
@@ -129,10 +188,12 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
   const double density = static_cast<double>(exemplar.elements.size()) / exemplar.window_measure();
   // A β the pseudo-likelihood could not bound follows its quadrature's data share, not the data
   // (1e-15 for trees that no location of a grassy window could take): the chains start it at
-  // the category's density, as the maximum likelihood does.
+  // the category's density, as the maximum likelihood does. An anchored category's β is not
+  // free of its anchor bands' γ (every element of it has one such band, so only their product is
+  // fitted): it keeps its estimate.
   for (std::size_t c = 0; c < categories; ++c) {
     model::CategoryParameters& category = model.categories[c];
-    if (category.beta_status != model::ParameterStatus::unbounded) continue;
+    if (category.beta_status != model::ParameterStatus::unbounded || category.anchor >= 0) continue;
     const double start = expected[c] / scale / exemplar.window_measure();
     record.beta_factor[c] = start / category.beta;
     category.beta = start;
@@ -140,13 +201,14 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
   const auto geometry =
       std::make_shared<const sample::ChainGeometry>(model, model::Interaction(model), domain);
   double best_worst = std::numeric_limits<double>::infinity();
-  std::vector<double> best_beta(categories, 0.0);
+  model::ShapeProcessModel best = model;
   std::vector<double> low(categories, 0.0),
       high(categories, std::numeric_limits<double>::infinity());  // β brackets
+  Step previous;  // the last β step, to tell a density β moves from one the interaction holds
   for (int round = 1; round <= options.rounds; ++round) {
     if (options.progress) options.progress(round, options.rounds);
     const Chain chain =
-        run_chain(model, domain, geometry, expected, density,
+        run_chain(model, domain, geometry, expected, density, options.tolerance,
                   options.seed + static_cast<std::uint64_t>(round - 1), options.threads);
     record.rounds = round;
     if (chain.ran_away) {
@@ -156,7 +218,7 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
       continue;
     }
     if (record.ratio_before.empty()) record.ratio_before = chain.ratio;
-    if (agrees(chain.ratio, expected, options.tolerance)) {
+    if (agrees(chain)) {
       record.ratio_after = chain.ratio;
       record.converged = true;
       break;
@@ -167,12 +229,23 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     if (worst < best_worst) {
       best_worst = worst;
       record.ratio_after = chain.ratio;
-      for (std::size_t c = 0; c < categories; ++c) best_beta[c] = model.categories[c].beta;
+      best = model;
     }
     if (round == options.rounds) break;
+    if (held_by_attraction(model, previous, chain)) {
+      record.attraction_shrink *= 0.5;
+      shrink_attraction(model, 0.5);
+      std::fill(low.begin(), low.end(), 0.0);
+      std::fill(high.begin(), high.end(), std::numeric_limits<double>::infinity());
+      previous = {};
+      continue;
+    }
+    previous.ratio = chain.ratio;
+    previous.beta.clear();
+    for (const model::CategoryParameters& c : model.categories) previous.beta.push_back(c.beta);
     for (std::size_t c = 0; c < categories; ++c) {
       // A category that agrees keeps its β: a step on its chain's noise would only add noise.
-      if (category_agrees(chain.ratio[c], expected[c], options.tolerance)) continue;
+      if (category_agrees(chain, c)) continue;
       const double r = chain.ratio[c], beta = model.categories[c].beta;
       // The count grows with β: a β known too low or too high brackets the answer, and once
       // both ends are known the next β halves the bracket (in log β), as a crystal's nucleation
@@ -189,10 +262,9 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     }
   }
   if (!record.converged && std::isfinite(best_worst)) {
-    for (std::size_t c = 0; c < categories; ++c) {
-      record.beta_factor[c] *= best_beta[c] / model.categories[c].beta;
-      model.categories[c].beta = best_beta[c];
-    }
+    for (std::size_t c = 0; c < categories; ++c)
+      record.beta_factor[c] *= best.categories[c].beta / model.categories[c].beta;
+    model = std::move(best);
   }
   record.seconds = clock.seconds();
   return record;

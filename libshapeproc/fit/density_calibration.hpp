@@ -33,7 +33,8 @@ struct CalibrationOptions {
   // The torus: the exemplar's window times this along x and y (3D: the depth as it is).
   double multiple = kFitDefaults.calibration_multiple;
   // A category's density agrees when its ratio to the exemplar's is within this, or within two
-  // Poisson standard errors of its expected count (2 / √expected), whichever is wider.
+  // Monte Carlo standard errors of the chain's mean count (from its effective sample size; two
+  // Poisson standard errors, 2 / √expected, for a chain too short to tell), whichever is wider.
   double tolerance = kFitDefaults.calibration_tolerance;
   // Chains at most (each correction is followed by a chain that checks it).
   int rounds = kFitDefaults.calibration_rounds;

@@ -114,6 +114,24 @@ std::vector<double> thresholds_from(std::vector<double> distances,
   return thresholds;
 }
 
+// The distances the quantiles are taken of: all of them, or where the highest quantile lies at or
+// beyond the range cap (an exemplar of many elements: its quantiles of every pair in the window
+// lie far past its spacing), those below the cap, so that the bands divide the range the pair
+// may have rather than collapse into one band up to the cap (amacrine: one band from its hard
+// core to 2.5 spacings, where its cells' inhibition acts within one).
+std::vector<double> within_range(const std::vector<double>& distances,
+                                 const std::vector<double>& quantiles, double cap) {
+  if (quantiles.empty() || distances.size() < 2 || !(cap > 0)) return distances;
+  std::vector<double> sorted = distances;
+  std::sort(sorted.begin(), sorted.end());
+  const double top = *std::max_element(quantiles.begin(), quantiles.end());
+  if (quantile(sorted, top) < cap) return distances;
+  std::vector<double> below;
+  for (double d : distances)
+    if (d < cap) below.push_back(d);
+  return below.size() >= 2 ? below : distances;
+}
+
 // The hard core of an axis (its first threshold, a hair below its closest pair) comes down to the
 // pair's closest distance over all axes where the axis's own minimum is what chance gives: the
 // minimum of m distances lies well above the true lower end when m is small (two-kinds: 18.9 px
@@ -312,6 +330,10 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
                                 model.categories[static_cast<std::size_t>(b)].name + "'";
       bool noted_pool = false;
       std::vector<std::vector<double>> per_axis;
+      const double cap =
+          range_cap(options.budget, exemplar.window_measure(), exemplar.dimension,
+                    static_cast<double>(std::max(counts[static_cast<std::size_t>(a)],
+                                                 counts[static_cast<std::size_t>(b)])));
       for (int i = 0; i < axes; ++i) {
         if (fixed_thresholds) {
           per_axis.push_back(options.thresholds);
@@ -338,8 +360,9 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
               noted_pool = true;
             }
           }
-          per_axis.push_back(
-              thresholds_from(*source, options.quantiles, shell_jitter, exemplar.elements.size()));
+          per_axis.push_back(thresholds_from(within_range(*source, options.quantiles, cap),
+                                             options.quantiles, shell_jitter,
+                                             exemplar.elements.size()));
           if (source != &pooled && source != &all_distances)
             pool_hard_core(per_axis.back(), *source, pooled, shell_jitter);
         }
@@ -350,13 +373,9 @@ void add_thresholds(model::ShapeProcessModel& model, const geometry::Scene& exem
       if (!fixed_thresholds)
         for (std::vector<double>& t : per_axis) split_at_nesting(t, nest_width, shell_jitter);
       if (!fixed_thresholds) {
-        const std::size_t na = counts[static_cast<std::size_t>(a)],
-                          nb = counts[static_cast<std::size_t>(b)];
-        const double cap = range_cap(options.budget, exemplar.window_measure(), exemplar.dimension,
-                                     static_cast<double>(std::max(na, nb)));
-        std::vector<double> isotropic =
-            thresholds_from(pooled.size() >= 2 ? pooled : all_distances, options.quantiles,
-                            shell_jitter, exemplar.elements.size());
+        std::vector<double> isotropic = thresholds_from(
+            within_range(pooled.size() >= 2 ? pooled : all_distances, options.quantiles, cap),
+            options.quantiles, shell_jitter, exemplar.elements.size());
         split_at_nesting(isotropic, nest_width, shell_jitter);
         cap_range(isotropic, cap);
         for (std::vector<double>& t : per_axis) cap_range(t, cap);

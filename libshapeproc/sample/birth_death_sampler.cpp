@@ -168,13 +168,16 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   long long steps = 0;
   MoveCounts moves;
   std::vector<synthesis::TracePoint> trace;
+  std::vector<std::vector<double>> observations;
+  std::vector<std::size_t> starts;
   for (std::size_t layer = 0; layer < layers_.size(); ++layer) {
     std::vector<Element> start;
     for (const Element& e : options_.start)
       if (model_.categories[static_cast<std::size_t>(e.category)].layer == static_cast<int>(layer))
         start.push_back(e);
     result = sample_layer(*layers_[layer], placed, start, random, control);
-    result.observed_from = steps;
+    starts.push_back(observations.size());
+    for (std::vector<double>& o : result.observations) observations.push_back(std::move(o));
     for (synthesis::TracePoint point : result.trace) {
       point.step += steps;
       trace.push_back(point);
@@ -186,6 +189,8 @@ SampleResult ShapeProcessSampler::sample(core::Random& random,
   result.iterations = steps;
   result.moves = moves;
   result.trace = std::move(trace);
+  result.observations = std::move(observations);
+  result.layer_observations = std::move(starts);
   return result;
 }
 

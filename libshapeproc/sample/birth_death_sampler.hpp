@@ -100,9 +100,9 @@ struct SampleResult {
   // category, then pairs per interaction parameter) at the end, and every observe_every steps.
   std::vector<double> statistics;
   std::vector<std::vector<double>> observations;
-  // The steps before the chain that made `observations` and `trend`: a layered model's layers
-  // but its last (whose chain holds the earlier layers fixed); 0 otherwise.
-  long long observed_from = 0;
+  // A layered model's: the index in `observations` where each layer's chain starts (its
+  // observations count the layers below as they were left); empty otherwise.
+  std::vector<std::size_t> layer_observations;
   int start_kept = 0, start_left_out = 0;  // of SamplerOptions::start
   // The compressing burn-in's steps and the count it reached at the end of its first phase (0
   // without one).

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "tests/disc_scene.hpp"
@@ -158,6 +159,30 @@ TEST(ParameterBudget, PruneNeutralPairsOnlyOnEvidence) {
   EXPECT_EQ(m.interactions[1].axes[0].gammas.size(), 2u);  // |log 1.5| = 4.05 standard errors
   EXPECT_EQ(m.interactions[2].axes[0].gammas.size(), 2u);  // no information
   EXPECT_TRUE(m.interactions[2].choice.empty());
+}
+
+// 400 points on a jittered grid of spacing 5 in a 100 x 100 window: the 20% quantile of every
+// pair's distance (about 45) lies far past the range cap (2.5 spacings, 12.5), so the bands come
+// from the pairs within the cap and divide it, rather than one band from the hard core to it.
+TEST(ParameterBudget, BandsOfAManyElementExemplarDivideTheCappedRange) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
+  scene.category_index("points");
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(5);
+  for (int k = 0; k < 400; ++k) {
+    geometry::Element e;
+    e.position = geometry::Vec3(2.5 + 5 * (k % 20) + random.uniform(-1.5, 1.5),
+                                2.5 + 5 * (k / 20) + random.uniform(-1.5, 1.5), 0);
+    scene.elements.push_back(e);
+  }
+  const FitResult fit = fit_shape_process(scene, FitOptions{});
+  ASSERT_EQ(fit.model.interactions.size(), 1u);
+  for (const model::AxisParameters& axis : fit.model.interactions[0].axes) {
+    EXPECT_GE(axis.thresholds.size(), 3u);  // a hard core and two bands at least
+    EXPECT_LT(axis.thresholds.back(), 12.5 + 1e-9);
+    EXPECT_LT(axis.thresholds[1], 7.0);  // the first band ends within about one spacing
+  }
 }
 
 }  // namespace
