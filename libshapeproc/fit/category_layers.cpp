@@ -1,6 +1,7 @@
 #include "libshapeproc/fit/category_layers.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -84,18 +85,28 @@ std::vector<LayerDependence> layer_dependences(const geometry::Scene& exemplar,
   if (categories < 2 || share > 1.0) return out;
   const std::vector<double> radius = median_radii(exemplar, measurer);
   const std::vector<std::vector<double>> nearest = nearest_by_category(exemplar, pairs);
+  const std::vector<std::size_t> counts = geometry::category_counts(exemplar);
   for (std::size_t c = 0; c < categories; ++c) {
     for (std::size_t a = 0; a < categories; ++a) {
-      if (a == c || !(radius[a] > radius[c])) continue;
+      // Shapes: a larger base that the elements overlap. Points: a base with fewer points, which
+      // each point lies within half the base's spacing of.
+      const bool points = radius[a] == 0.0 && radius[c] == 0.0;
+      if (a == c || (points ? counts[a] >= counts[c] : !(radius[a] > radius[c]))) continue;
+      const double contact =
+          points ? kFitDefaults.point_contact *
+                       std::pow(exemplar.window_measure() / static_cast<double>(counts[a]),
+                                1.0 / exemplar.dimension)
+                 : 0.0;
       double on = 0.0, count = 0.0, farthest = -kInfinity;
       for (std::size_t i = 0; i < exemplar.elements.size(); ++i) {
         if (static_cast<std::size_t>(exemplar.elements[i].category) != c) continue;
         count += 1.0;
-        on += nearest[i][a] < 0 ? 1.0 : 0.0;
+        on += nearest[i][a] < contact ? 1.0 : 0.0;
         farthest = std::max(farthest, nearest[i][a]);
       }
-      if (count > 0 && on / count >= share)
-        out.push_back({static_cast<int>(c), static_cast<int>(a), on / count, farthest});
+      const double needed = points ? std::max(share, kFitDefaults.point_layer_share) : share;
+      if (count > 0 && on / count >= needed)
+        out.push_back({static_cast<int>(c), static_cast<int>(a), on / count, farthest, contact});
     }
   }
   return out;
@@ -108,29 +119,28 @@ std::vector<std::string> assign_layers(model::ShapeProcessModel& model,
   const std::vector<LayerDependence> found = layer_dependences(exemplar, pairs, measurer, share);
   std::vector<std::string> notes;
   if (found.empty()) return notes;
-  // Bases are strictly larger, so the categories by decreasing radius meet every base first.
-  const std::vector<double> radius = median_radii(exemplar, measurer);
-  std::vector<int> order(model.categories.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return radius[static_cast<std::size_t>(a)] > radius[static_cast<std::size_t>(b)];
-  });
+  // Bases are strictly larger (or, of points, fewer), so the dependences have no cycle: each
+  // pass settles one more layer.
   for (model::CategoryParameters& c : model.categories) c.layer = 0;
-  for (int c : order)
+  for (std::size_t pass = 0; pass < model.categories.size(); ++pass)
     for (const LayerDependence& d : found)
-      if (d.category == c)
-        model.categories[static_cast<std::size_t>(c)].layer =
-            std::max(model.categories[static_cast<std::size_t>(c)].layer,
-                     model.categories[static_cast<std::size_t>(d.base)].layer + 1);
+      model.categories[static_cast<std::size_t>(d.category)].layer =
+          std::max(model.categories[static_cast<std::size_t>(d.category)].layer,
+                   model.categories[static_cast<std::size_t>(d.base)].layer + 1);
+  const std::vector<double> radius = median_radii(exemplar, measurer);
   for (const LayerDependence& d : found) {
     model::CategoryParameters& c = model.categories[static_cast<std::size_t>(d.category)];
     std::string note = "layer " + std::to_string(c.layer) + ": '" + c.name + "' placed after '" +
                        model.categories[static_cast<std::size_t>(d.base)].name + "' (" +
                        core::format_general(d.share, 2) +
-                       " of its elements overlap or lie inside one)";
+                       (d.contact > 0 ? " of its points lie within " +
+                                            core::format_general(d.contact, 3) + " of one)"
+                                      : " of its elements overlap or lie inside one)");
     // Every element on a base, or off one by less than the slack: anchored there. The reach is a
     // hair past the farthest, so that its band holds every element.
-    const double slack = kFitDefaults.anchor_slack * radius[static_cast<std::size_t>(d.category)];
+    const double slack =
+        d.contact > 0 ? d.contact
+                      : kFitDefaults.anchor_slack * radius[static_cast<std::size_t>(d.category)];
     const double reach =
         d.farthest <= 0 ? 0.0 : d.farthest + 1e-6 * std::max(1.0, std::abs(d.farthest));
     if (c.anchor < 0 && d.farthest <= slack && split_at(model, d.category, d.base, reach)) {

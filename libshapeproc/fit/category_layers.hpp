@@ -6,7 +6,10 @@
 // placed given the ones before. Here the order is read from the exemplar: category b lies a
 // layer above category a when at least a given share of b's elements overlap or lie inside an
 // element of a (a negative shape distance) and a's elements are the larger (median bounding
-// radius). The model of a layered exemplar is then a sequence of conditional processes:
+// radius). Points have no overlap: a category of points lies a layer above one with fewer points
+// when nearly all of them (FitDefaults::point_layer_share) lie within half that one's mean
+// spacing of one of its points (under independence about half would), as visitors around hosts.
+// The model of a layered exemplar is then a sequence of conditional processes:
 //   layer 0 is a pairwise process of its own categories;
 //   layer k, given the elements of layers below, is a pairwise process of its categories whose
 //   intensity also counts the elements below, through the pairs' γ and hard cores;
@@ -33,6 +36,7 @@ struct LayerDependence {
   int category = 0, base = 0;
   double share = 0.0;
   double farthest = 0.0;
+  double contact = 0.0;  // "on a base" means closer than this: 0 for shapes, a distance for points
 };
 
 // The dependences of `exemplar`'s categories at `share` or more (none above 1), each towards a

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_shape_process.hpp"
 #include "libshapeproc/geometry/domain.hpp"
@@ -120,6 +122,42 @@ TEST(CategoryLayers, TheLowerLayerIgnoresTheUpperAndDotsStayOnBases) {
     EXPECT_LT(nearest, 0.0);
   }
   EXPECT_GT(dots, 0);
+}
+
+// Points: 36 hosts on a jittered grid of spacing 20, each with two visitors within 3 of it. The
+// visitors outnumber the hosts and all lie within half the hosts' spacing of one (under
+// independence about half would), so they lie a layer above them, anchored within 3.
+TEST(CategoryLayers, VisitorPointsAroundHostsAreAnchoredToThem) {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(120, 120, 0));
+  scene.category_index("host");
+  scene.category_index("visitor");
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(11);
+  const auto add = [&](double x, double y, int c) {
+    geometry::Element e;
+    e.position = geometry::Vec3(x, y, 0);
+    e.category = c;
+    scene.elements.push_back(e);
+  };
+  for (int k = 0; k < 36; ++k) {
+    const double x = 10 + 20 * (k % 6) + random.uniform(-3, 3);
+    const double y = 10 + 20 * (k / 6) + random.uniform(-3, 3);
+    add(x, y, 0);
+    for (int v = 0; v < 2; ++v) {
+      const double r = random.uniform(1, 3), angle = random.uniform(0, 6.283185307179586);
+      add(x + r * std::cos(angle), y + r * std::sin(angle), 1);
+    }
+  }
+  const FitResult fit = fit_shape_process(scene, FitOptions{});
+  const model::ShapeProcessModel& m = fit.model;
+  EXPECT_EQ(m.categories[0].layer, 0);
+  EXPECT_EQ(m.categories[1].layer, 1);
+  EXPECT_EQ(m.categories[1].anchor, 0);
+  EXPECT_GT(m.categories[1].anchor_reach, 1.0);
+  EXPECT_LE(m.categories[1].anchor_reach, 3.0 + 1e-5);
+  // The hosts, fewer, never lie a layer above the visitors.
+  EXPECT_EQ(m.categories[0].anchor, -1);
 }
 
 }  // namespace
