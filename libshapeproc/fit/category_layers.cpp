@@ -105,7 +105,11 @@ std::vector<LayerDependence> layer_dependences(const geometry::Scene& exemplar,
         farthest = std::max(farthest, nearest[i][a]);
       }
       const double needed = points ? std::max(share, kFitDefaults.point_layer_share) : share;
-      if (count > 0 && on / count >= needed)
+      // Shapes far smaller than another category's come after it whether they overlap it or
+      // not (trees before the grass around them), as Ecormier-Nocca et al. place larger discs
+      // first: a large element is rarely born into a field of small ones.
+      const bool smaller = !points && radius[a] >= kFitDefaults.layer_size_ratio * radius[c];
+      if (count > 0 && (on / count >= needed || smaller))
         out.push_back({static_cast<int>(c), static_cast<int>(a), on / count, farthest, contact});
     }
   }
@@ -130,12 +134,18 @@ std::vector<std::string> assign_layers(model::ShapeProcessModel& model,
   const std::vector<double> radius = median_radii(exemplar, measurer);
   for (const LayerDependence& d : found) {
     model::CategoryParameters& c = model.categories[static_cast<std::size_t>(d.category)];
-    std::string note = "layer " + std::to_string(c.layer) + ": '" + c.name + "' placed after '" +
-                       model.categories[static_cast<std::size_t>(d.base)].name + "' (" +
-                       core::format_general(d.share, 2) +
-                       (d.contact > 0 ? " of its points lie within " +
-                                            core::format_general(d.contact, 3) + " of one)"
-                                      : " of its elements overlap or lie inside one)");
+    std::string note =
+        "layer " + std::to_string(c.layer) + ": '" + c.name + "' placed after '" +
+        model.categories[static_cast<std::size_t>(d.base)].name + "' (" +
+        core::format_general(d.share, 2) +
+        (d.contact > 0
+             ? " of its points lie within " + core::format_general(d.contact, 3) + " of one)"
+             : " of its elements overlap or lie inside one, and they "
+               "are " +
+                   core::format_general(radius[static_cast<std::size_t>(d.base)] /
+                                            radius[static_cast<std::size_t>(d.category)],
+                                        2) +
+                   " times larger)");
     // Every element on a base, or off one by less than the slack: anchored there. The reach is a
     // hair past the farthest, so that its band holds every element.
     const double slack =

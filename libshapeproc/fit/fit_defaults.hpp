@@ -58,6 +58,10 @@ struct FitDefaults {
   // a category of points is placed after one with fewer points when at least point_layer_share
   // of its points are (under independence 1 − exp(−π/4) ≈ 0.54 would be: data/corpus
   // cross-attraction's visitors, all within 5 of a host whose spacing is 15.8).
+  // A category of shapes whose median radius is at least this many times another's is placed
+  // before it, overlapping or not: forest's trees (radius 30–42) among 400 grass discs were
+  // never born into the grass when both were sampled at once (×0.001 of their density).
+  double layer_size_ratio = 3.0;
   double point_contact = 0.5;
   double point_layer_share = 0.95;
 
