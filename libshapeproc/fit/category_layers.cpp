@@ -7,6 +7,7 @@
 
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/fit/fit_defaults.hpp"
+#include "libshapeproc/fit/quantile.hpp"
 
 namespace shapeproc::fit {
 
@@ -17,19 +18,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Per category, the median bounding radius of its elements' shapes (0 for points).
 std::vector<double> median_radii(const geometry::Scene& exemplar,
                                  const geometry::PairMeasurer& measurer) {
-  std::vector<std::vector<double>> radii(exemplar.categories.size());
-  for (const geometry::Element& e : exemplar.elements)
-    radii[static_cast<std::size_t>(e.category)].push_back(measurer.radius(e.shape));
-  std::vector<double> out;
-  for (std::vector<double>& r : radii) {
-    if (r.empty()) {
-      out.push_back(0.0);
-      continue;
-    }
-    std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2), r.end());
-    out.push_back(r[r.size() / 2]);
-  }
-  return out;
+  return category_medians(exemplar,
+                          [&](const geometry::Element& e) { return measurer.radius(e.shape); });
 }
 
 // nearest[i][a]: the shape distance from element i to the nearest element of category a among

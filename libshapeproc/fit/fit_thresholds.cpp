@@ -187,23 +187,12 @@ void split_at_nesting(std::vector<double>& thresholds, double width, double w) {
 
 // The median over a category's elements of its shape's narrower side (0 for points).
 std::vector<double> category_widths(const geometry::Scene& exemplar) {
-  std::vector<std::vector<double>> widths(exemplar.categories.size());
-  for (const Element& e : exemplar.elements) {
-    const geometry::Box3 box =
-        geometry::bounding_box(exemplar.shapes[static_cast<std::size_t>(e.shape)]);
-    widths[static_cast<std::size_t>(e.category)].push_back(
-        box.sizes().head(exemplar.dimension).minCoeff());
-  }
-  std::vector<double> out;
-  for (std::vector<double>& w : widths) {
-    if (w.empty()) {
-      out.push_back(0.0);
-      continue;
-    }
-    std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(w.size() / 2), w.end());
-    out.push_back(w[w.size() / 2]);
-  }
-  return out;
+  return category_medians(exemplar, [&](const Element& e) {
+    return geometry::bounding_box(exemplar.shapes[static_cast<std::size_t>(e.shape)])
+        .sizes()
+        .head(exemplar.dimension)
+        .minCoeff();
+  });
 }
 
 }  // namespace
