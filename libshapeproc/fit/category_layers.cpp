@@ -39,27 +39,31 @@ std::vector<std::vector<double>> nearest_by_category(
 }
 
 // Splits every axis of the pair (a, b) at `distance` (a band with γ 1, to be fitted), unless it
-// is a threshold already; false when some axis cannot take it (at or beyond its last threshold,
-// at or below its hard core).
+// is a threshold already; an axis whose range ends at or below it is extended to it. False when
+// some axis cannot take it (at or below its hard core).
 bool split_at(model::ShapeProcessModel& model, int a, int b, double distance) {
   const int index = model.interaction_index(a, b);
   if (index < 0) return false;
   std::vector<model::AxisParameters>& axes =
       model.interactions[static_cast<std::size_t>(index)].axes;
   for (const model::AxisParameters& axis : axes)
-    if (!(axis.thresholds.size() >= 2 && distance > axis.thresholds.front() &&
-          distance < axis.thresholds.back()))
-      return false;
+    if (axis.thresholds.empty() || !(distance > axis.thresholds.front())) return false;
   for (model::AxisParameters& axis : axes) {
     const auto at = std::lower_bound(axis.thresholds.begin(), axis.thresholds.end(), distance);
-    if (*at == distance) continue;
-    const auto band = at - axis.thresholds.begin();  // the new band's index
+    if (at != axis.thresholds.end() && *at == distance) continue;
+    // The new band: below `distance` when it splits one, above the last threshold when it
+    // extends the range.
+    const auto band = at == axis.thresholds.end()
+                          ? axis.gammas.size()
+                          : static_cast<std::size_t>(at - axis.thresholds.begin() - 1);
     axis.thresholds.insert(at, distance);
-    axis.gammas.insert(axis.gammas.begin() + band, 1.0);
-    axis.gamma_standard_errors.insert(axis.gamma_standard_errors.begin() + band,
-                                      std::numeric_limits<double>::quiet_NaN());
-    axis.status.insert(axis.status.begin() + band, model::ParameterStatus::free);
-    axis.observed_pairs.insert(axis.observed_pairs.begin() + band, 0);
+    axis.gammas.insert(axis.gammas.begin() + static_cast<std::ptrdiff_t>(band), 1.0);
+    axis.gamma_standard_errors.insert(
+        axis.gamma_standard_errors.begin() + static_cast<std::ptrdiff_t>(band),
+        std::numeric_limits<double>::quiet_NaN());
+    axis.status.insert(axis.status.begin() + static_cast<std::ptrdiff_t>(band),
+                       model::ParameterStatus::free);
+    axis.observed_pairs.insert(axis.observed_pairs.begin() + static_cast<std::ptrdiff_t>(band), 0);
   }
   return true;
 }
@@ -94,7 +98,9 @@ std::vector<LayerDependence> layer_dependences(const geometry::Scene& exemplar,
         on += nearest[i][a] < contact ? 1.0 : 0.0;
         farthest = std::max(farthest, nearest[i][a]);
       }
-      const double needed = points ? std::max(share, kFitDefaults.point_layer_share) : share;
+      // Points only on the evidence of all of them (independent points would put about half
+      // within that distance), and then anchored: a point's layer is nothing else.
+      const double needed = points ? 1.0 : share;
       // Shapes far smaller than another category's come after it whether they overlap it or
       // not (trees before the grass around them), as Ecormier-Nocca et al. place larger discs
       // first: a large element is rarely born into a field of small ones.

@@ -7,8 +7,8 @@
 // layer above category a when at least a given share of b's elements overlap or lie inside an
 // element of a (a negative shape distance) and a's elements are the larger (median bounding
 // radius). Points have no overlap: a category of points lies a layer above one with fewer points
-// when nearly all of them (FitDefaults::point_layer_share) lie within half that one's mean
-// spacing of one of its points (under independence about half would), as visitors around hosts.
+// when every one of them lies within half that one's mean spacing of one of its points (under
+// independence each would with probability 0.54), as visitors around hosts, and is anchored.
 // The model of a layered exemplar is then a sequence of conditional processes:
 //   layer 0 is a pairwise process of its own categories;
 //   layer k, given the elements of layers below, is a pairwise process of its categories whose

@@ -54,16 +54,15 @@ struct FitDefaults {
   // radius: an overlap the drawing has and the proxies' chords lose (data/corpus edge-clusters:
   // 8 of its 100 decorations).
   double anchor_slack = 0.5;
-  // Points are on a base point when closer than this share of the base category's mean spacing;
-  // a category of points is placed after one with fewer points when at least point_layer_share
-  // of its points are (under independence 1 − exp(−π/4) ≈ 0.54 would be: data/corpus
-  // cross-attraction's visitors, all within 5 of a host whose spacing is 15.8).
   // A category of shapes whose median radius is at least this many times another's is placed
-  // before it, overlapping or not: forest's trees (radius 30–42) among 400 grass discs were
+  // after it, overlapping or not: forest's trees (radius 30–42) among 400 grass discs were
   // never born into the grass when both were sampled at once (×0.001 of their density).
   double layer_size_ratio = 3.0;
+  // Points are on a base point when closer than this share of the base category's mean spacing;
+  // a category of points is placed after one with fewer points when every one of its points is
+  // (under independence each would be with probability 1 − exp(−π/4) ≈ 0.54: data/corpus
+  // cross-attraction's visitors, all within 5 of a host whose spacing is 15.8).
   double point_contact = 0.5;
-  double point_layer_share = 0.95;
 
   // ---- Estimator (fit_exemplar.hpp) ----
   // The maximum likelihood runs on tiles and on exemplars of at most this many elements: its
