@@ -29,7 +29,7 @@ def summary(show):
             out[-1] = f"- {pair}: {line.strip()[len('chosen: '):]}"
         elif line.startswith("path:"):
             out.insert(0, f"- {line}")
-        elif line.startswith("note: density on a torus"):
+        elif line.startswith("note: density on a torus") or line.startswith("note: layer "):
             out.append(f"- {line[len('note: '):]}")
     return out
 
@@ -57,7 +57,8 @@ def main():
              "Each exemplar: `shapeproc fit EXEMPLAR FLAGS` (FLAGS from data/corpus/MANIFEST.tsv), "
              "then `shapeproc show`: the fit's path, per pair of categories the axes and bands "
              "kept and why (docs/fit.md, \"As many parameters as the data carry\"), the count of "
-             "band strengths γ, and the density check on a torus of 2 x 2 windows.", ""]
+             "band strengths γ, the layers (docs/fit.md, \"Layers and anchors\") and the "
+             "density check on a torus of 2 x 2 windows.", ""]
     for name in names:
         row = rows[name]
         with tempfile.TemporaryDirectory() as work:
