@@ -133,8 +133,10 @@ void FitFlags::add_to(CLI::App& command) {
                   "quadrature cells along the window's longest side (default 48 in 2D, 8 in 3D)")
       ->check(non_negative_number());
   command
-      .add_option("--shapes-per-location", shapes_per_location,
-                  "shapes crossed with each quadrature location, in rotation (default: all)")
+      .add_option(
+          "--shapes-per-location", shapes_per_location,
+          "shapes crossed with each quadrature location, in rotation (default: every distinct "
+          "shape, up to 64)")
       ->check(non_negative_number());
   command.add_flag(
       "--quadrature-lines", lines,
