@@ -83,7 +83,10 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
   // Each category's mean over the second half of its own chain: the whole run's (after any
   // burn-in), or a layered model's chain of its layer.
   const std::size_t n = result.observations.size();
-  std::vector<double> counts(expected.size(), 0.0);
+  std::vector<double> last(expected.size(), 0.0);  // the final state's counts
+  for (const geometry::Element& e : result.scene.elements)
+    last[static_cast<std::size_t>(e.category)] += 1.0;
+  std::vector<double> counts = last;  // a run too short to observe keeps its last state
   for (std::size_t c = 0; c < expected.size(); ++c) {
     std::size_t first = std::max<std::size_t>(
         n / 2, static_cast<std::size_t>(result.compression_steps / options.observe_every));
@@ -94,21 +97,13 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
       end = layer + 1 < result.layer_observations.size() ? result.layer_observations[layer + 1] : n;
       first = start + (end - start) / 2;
     }
-    double kept = 0.0;
-    for (std::size_t i = first; i < end; ++i, kept += 1.0) counts[c] += result.observations[i][c];
     chain.allowed.push_back(
         allowed_error(result.observations, first, end, c, expected[c], tolerance));
-    if (kept > 0) {
-      counts[c] /= kept;
-      continue;
-    }
-    counts[c] = 0.0;  // a run too short to observe: its last state
-    for (const geometry::Element& e : result.scene.elements)
-      counts[c] += e.category == static_cast<int>(c) ? 1.0 : 0.0;
+    if (end <= first) continue;
+    double sum = 0.0;
+    for (std::size_t i = first; i < end; ++i) sum += result.observations[i][c];
+    counts[c] = sum / static_cast<double>(end - first);
   }
-  std::vector<double> last(expected.size(), 0.0);  // the final state's counts
-  for (const geometry::Element& e : result.scene.elements)
-    last[static_cast<std::size_t>(e.category)] += 1.0;
   for (std::size_t c = 0; c < expected.size(); ++c) chain.ratio.push_back(counts[c] / expected[c]);
   // An anchored category's count follows its bases': its ratio is per base of those its chain
   // held (its β sets how many each base carries; the bases' own β, how many bases there are).
