@@ -5,7 +5,6 @@
 
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/geometry/domain.hpp"
-#include "libshapeproc/geometry/neighbour_grid.hpp"
 
 namespace shapeproc::fit {
 
@@ -22,25 +21,6 @@ struct Disc {
   double radius;
 };
 
-// The statistic t(ξ | exemplar) of a candidate point, or false where λ is 0 (a hard core, or off
-// every base).
-bool point_counts(const Element& xi, const std::vector<Element>& data,
-                  const geometry::NeighbourGrid& grid, double reach,
-                  const geometry::PairMeasurer& measurer, const model::Interaction& interaction,
-                  model::InteractionCounts& counts) {
-  counts = {};
-  bool allowed = true;
-  grid.for_each_candidate_within(xi.position, reach, [&](int j) {
-    if (!allowed) return;
-    const Element& other = data[static_cast<std::size_t>(j)];
-    const model::PairEffect effect = model::pair_effect(interaction, measurer, xi, other);
-    if (effect.band == model::Interaction::kHardCore) allowed = false;
-    if (effect.band >= 0)
-      counts.add(interaction.parameter(xi.category, other.category, effect.axis, effect.band));
-  });
-  return allowed && interaction.anchored(xi.category, counts.counts);
-}
-
 }  // namespace
 
 std::vector<QuadraturePoint> anchored_quadrature(const geometry::Scene& exemplar,
@@ -48,17 +28,11 @@ std::vector<QuadraturePoint> anchored_quadrature(const geometry::Scene& exemplar
                                                  const geometry::PairMeasurer& measurer,
                                                  const model::Interaction& interaction,
                                                  const std::vector<std::vector<int>>& shapes_of,
-                                                 const geometry::Domain& window, int per_base) {
+                                                 const geometry::Domain& window,
+                                                 const PointCounter& counter, int per_base) {
   const bool periodic = window.periodic();
   std::vector<QuadraturePoint> out;
   if (exemplar.dimension != 2) return out;
-  double max_radius = 0.0;
-  for (std::size_t s = 0; s < exemplar.shapes.size(); ++s)
-    max_radius = std::max(max_radius, measurer.radius(static_cast<int>(s)));
-  const double reach = interaction.range() + 2 * max_radius;
-  geometry::NeighbourGrid grid(exemplar.window, 2, std::max(reach, 1e-12), periodic);
-  for (std::size_t k = 0; k < exemplar.elements.size(); ++k)
-    grid.insert(static_cast<int>(k), exemplar.elements[k].position);
   const Vec3& period = window.period();
   core::Random random(kSeed);
   for (int c = 0; c < interaction.category_count(); ++c) {
@@ -91,9 +65,7 @@ std::vector<QuadraturePoint> anchored_quadrature(const geometry::Scene& exemplar
               geometry::minimum_image(xi.position - other.centre, period).norm() < other.radius;
         QuadraturePoint q;
         model::InteractionCounts counts;
-        if (covering == 0 ||
-            !point_counts(xi, exemplar.elements, grid, reach, measurer, interaction, counts))
-          continue;
+        if (covering == 0 || !counter.counts(xi, counts)) continue;
         q.weight = weight / covering;
         q.category = c;
         q.counts = std::move(counts.counts);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "libshapeproc/fit/exemplar_statistics.hpp"
+#include "libshapeproc/fit/point_counts.hpp"
 #include "libshapeproc/fit/pseudo_likelihood.hpp"
 #include "libshapeproc/geometry/domain.hpp"
 #include "libshapeproc/geometry/pair_measurements.hpp"
@@ -20,13 +21,15 @@
 namespace shapeproc::fit {
 
 // The quadrature points of every anchored category of `interaction`, `per_base` per base element
-// (drawn from a fixed seed: the same exemplar gives the same points). `window`: the exemplar's
-// window as a domain (a torus for the periodic edge treatment).
+// (drawn from a fixed seed: the same exemplar gives the same points), each point's statistic from
+// `counter`. `window`: the exemplar's window as a domain (a torus for the periodic edge
+// treatment).
 std::vector<QuadraturePoint> anchored_quadrature(const geometry::Scene& exemplar,
                                                  const FitRegion& region,
                                                  const geometry::PairMeasurer& measurer,
                                                  const model::Interaction& interaction,
                                                  const std::vector<std::vector<int>>& shapes_of,
-                                                 const geometry::Domain& window, int per_base);
+                                                 const geometry::Domain& window,
+                                                 const PointCounter& counter, int per_base);
 
 }  // namespace shapeproc::fit

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/check.hpp"
+#include "libshapeproc/model/saturation.hpp"
 
 namespace shapeproc::fit {
 
@@ -11,6 +12,25 @@ using model::Interaction;
 
 namespace {
 constexpr double kBorderTolerance = 1e-9;  // of the window's longest side
+
+// Each element's own counts in the saturated bands, and its statistic there,
+// t(z_n | z \ z_n) (model/saturation.hpp): a neighbour's own count without z_n is its count in z
+// less one.
+void add_saturated_counts(const Interaction& interaction,
+                          const std::vector<std::vector<std::pair<int, int>>>& saturated,
+                          ExemplarStatistics& s) {
+  s.own_saturated.resize(saturated.size());
+  for (std::size_t k = 0; k < saturated.size(); ++k)
+    for (const auto& [j, parameter] : saturated[k]) s.own_saturated[k].add(parameter);
+  for (std::size_t k = 0; k < saturated.size(); ++k) {
+    const model::InteractionCounts counts =
+        model::saturated_counts(interaction, saturated[k], [&](int j, int parameter) {
+          return s.own_saturated[static_cast<std::size_t>(j)].count_of(parameter) - 1;
+        });
+    for (const auto& [parameter, count] : counts.counts) s.per_element[k].add(parameter, count);
+  }
+}
+
 }  // namespace
 
 FitRegion fit_region(const geometry::Scene& exemplar, geometry::EdgeTreatment edge, double range) {
@@ -35,6 +55,8 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
   const std::size_t n = exemplar.elements.size();
   ExemplarStatistics s;
   s.per_element.resize(n);
+  // Per element, its neighbours in saturated bands: (element, θ index).
+  std::vector<std::vector<std::pair<int, int>>> saturated(interaction.saturated() ? n : 0);
   for (const geometry::PairRecord& p : pairs) {
     const Element& a = exemplar.elements[static_cast<std::size_t>(p.i)];
     const Element& b = exemplar.elements[static_cast<std::size_t>(p.j)];
@@ -54,16 +76,23 @@ ExemplarStatistics exemplar_statistics(const geometry::Scene& exemplar,
     }
     if (band < 0) continue;
     const int parameter = interaction.parameter(a.category, b.category, p.measurement.axis, band);
-    // Each side counts the pair when its intensity sees the other (both, within a layer).
-    if (interaction.sees(a.category, b.category))
-      s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
-    if (interaction.sees(b.category, a.category))
-      s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
+    if (interaction.saturation(parameter) > 0) {
+      // Within one layer: both sides see each other.
+      saturated[static_cast<std::size_t>(p.i)].emplace_back(p.j, parameter);
+      saturated[static_cast<std::size_t>(p.j)].emplace_back(p.i, parameter);
+    } else {
+      // Each side counts the pair when its intensity sees the other (both, within a layer).
+      if (interaction.sees(a.category, b.category))
+        s.per_element[static_cast<std::size_t>(p.i)].add(parameter);
+      if (interaction.sees(b.category, a.category))
+        s.per_element[static_cast<std::size_t>(p.j)].add(parameter);
+    }
     const Interaction::Location where = interaction.locate(parameter);
     ++model.interactions[static_cast<std::size_t>(where.pair)]
           .axes[static_cast<std::size_t>(where.axis)]
           .observed_pairs[static_cast<std::size_t>(where.band)];
   }
+  add_saturated_counts(interaction, saturated, s);
   const std::size_t categories = model.categories.size();
   s.data_sum.assign(static_cast<std::size_t>(interaction.parameter_count()), 0.0);
   s.per_category.assign(categories, 0);

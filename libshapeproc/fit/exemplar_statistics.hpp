@@ -34,6 +34,9 @@ FitRegion fit_region(const geometry::Scene& exemplar, geometry::EdgeTreatment ed
 
 struct ExemplarStatistics {
   std::vector<model::InteractionCounts> per_element;  // t(z_n | z \ z_n), every element
+  // Every element's own count of neighbours t_n(z) in each saturated band (model/saturation.hpp);
+  // empty without saturated bands.
+  std::vector<model::InteractionCounts> own_saturated;
   std::vector<double> data_sum;   // Σ_n t(z_n) over the region, β entries included
   std::vector<int> per_category;  // elements of each category inside the region
   int data_points = 0;            // elements inside the region

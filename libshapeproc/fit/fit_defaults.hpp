@@ -5,6 +5,7 @@
 // from these.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 namespace shapeproc::fit {
@@ -63,6 +64,17 @@ struct FitDefaults {
   // (under independence each would be with probability 1 − exp(−π/4) ≈ 0.54: data/corpus
   // cross-attraction's visitors, all within 5 of a host whose spacing is 15.8).
   double point_contact = 0.5;
+
+  // ---- Saturation (saturation_choice.hpp) ----
+  // A band is a candidate for saturation when its pseudo-likelihood γ is above 1 by more than
+  // this many standard errors (a one-sided Wald test at about 2.5%).
+  double saturation_z = 2.0;
+  // The candidates' s: these quantiles of the exemplar's own counts per element in the band
+  // (the elements with a neighbour there), and s = ∞.
+  std::array<double, 4> saturation_quantiles{0.5, 0.75, 0.9, 1.0};
+  // A saturated candidate replaces the pairwise model when its log pseudo-likelihood is higher by
+  // at least this: Akaike's penalty for the one more parameter, s.
+  double saturation_gain = 1.0;
 
   // ---- Estimator (fit_exemplar.hpp) ----
   // The maximum likelihood runs on tiles and on exemplars of at most this many elements: its

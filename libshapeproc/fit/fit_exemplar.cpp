@@ -7,6 +7,7 @@
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/fit/tile_fit.hpp"
+#include "libshapeproc/model/interaction.hpp"
 
 namespace shapeproc::fit {
 
@@ -53,7 +54,9 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
   const bool likelihood = options.likelihood &&
                           (options.tile || exemplar.elements.size() <= options.likelihood_elements);
   const auto pseudo_likelihood = [&](const geometry::Scene& scene, int repeats) {
-    FitResult result = fit_shape_process(scene, repeated_options(scene, repeats, options.fit));
+    FitOptions fit_options = repeated_options(scene, repeats, options.fit);
+    fit_options.saturation = fit_options.saturation && !options.tile;
+    FitResult result = fit_shape_process(scene, fit_options);
     // A pseudo-likelihood without a finite maximum (a packed exemplar) has standard errors that
     // say nothing; where the maximum likelihood follows, it judges the strengths instead.
     if (options.prune_neutral && !(likelihood && packed_exemplar(result.model))) {
@@ -66,12 +69,14 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
   };
   const auto maximum_likelihood = [&](const geometry::Scene& scene, int repeats, FitResult mpl) {
     if (!likelihood) return mpl;
-    if (mpl.model.layer_count() > 1) {
+    const bool saturated = model::Interaction(mpl.model).saturated();
+    if (mpl.model.layer_count() > 1 || saturated) {
       // Each layer's likelihood is conditional on the exemplar's layers below, which chains from
-      // empty do not hold fixed; the layered model is left to its pseudo-likelihood.
+      // empty do not hold fixed; the layered model is left to its pseudo-likelihood. So is a
+      // saturated one, whose profile over s was of the pseudo-likelihood.
       const std::string note =
-          "maximum likelihood not run: a layered model, fitted by its pseudo-likelihood and "
-          "checked on the output's scale";
+          std::string("maximum likelihood not run: a ") + (saturated ? "saturated" : "layered") +
+          " model, fitted by its pseudo-likelihood and checked on the output's scale";
       mpl.notes.push_back(note);
       if (mpl.model.fit) mpl.model.fit->notes.push_back(note);
       return mpl;

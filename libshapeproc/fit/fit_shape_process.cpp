@@ -11,6 +11,7 @@
 #include "libshapeproc/fit/exemplar_statistics.hpp"
 #include "libshapeproc/fit/fit_thresholds.hpp"
 #include "libshapeproc/fit/neighbour_offsets.hpp"
+#include "libshapeproc/fit/saturation_choice.hpp"
 #include "libshapeproc/fit/shape_classes.hpp"
 #include "libshapeproc/model/interaction.hpp"
 
@@ -89,6 +90,41 @@ FitResult fit_shape_process(const geometry::Scene& exemplar, const FitOptions& o
 
   assign_estimates(model, interaction, mple);
   add_existence_notes(mple, follows_share, result.notes);
+  // Attraction between points is saturated where the data prefer it: a pairwise γ > 1 between
+  // points has no density (the chain condenses, Kelly & Ripley 1976); shapes kept apart by their
+  // hard core do.
+  if (options.saturation && model.shapes.empty()) {
+    const std::vector<int> bands = attractive_bands(model, interaction, kFitDefaults.saturation_z);
+    if (!bands.empty()) {
+      stage("saturation");
+      clock.restart();
+      // Each candidate fitted on its own sampled quadrature, from the same start.
+      const auto fit_candidate = [&](const model::ShapeProcessModel& candidate) {
+        model::ShapeProcessModel counted = candidate;  // its observed pairs are counted again
+        const model::Interaction saturated(counted);
+        const ExemplarStatistics own =
+            exemplar_statistics(exemplar, pairs, saturated, region, counted);
+        QuadratureDesign sampled = quadrature_design(exemplar, options, region, measurer, saturated,
+                                                     own, shapes_of, window);
+        merge_equal_points(sampled.design);
+        return maximise_pseudo_likelihood(sampled.design, start);
+      };
+      const std::vector<double> levels(kFitDefaults.saturation_quantiles.begin(),
+                                       kFitDefaults.saturation_quantiles.end());
+      SaturationChoice choice =
+          choose_saturation(model, interaction, bands,
+                            saturation_candidates(pairs, exemplar, interaction, bands, levels),
+                            kFitDefaults.saturation_gain, fit_candidate);
+      result.notes.push_back(choice.note);
+      if (choice.saturated) {
+        set_saturations(model, interaction, bands, choice.saturations);
+        assign_estimates(model, model::Interaction(model), choice.mple);
+        mple = std::move(choice.mple);
+        result.log_pseudo_likelihood = mple.log_pseudo_likelihood;
+      }
+      result.seconds.optimisation += clock.seconds();
+    }
+  }
   model.fit = pseudo_likelihood_record(exemplar, options, result, quadrature.cells_along, mple);
   return result;
 }

@@ -59,6 +59,10 @@ struct FitOptions {
   // category's are placed after it, given its elements (category_layers.hpp); above 1: one
   // layer, every pair symmetric.
   double layer_share = kFitDefaults.layer_share;
+  // Whether attractive bands of a point pattern may be saturated where the profile
+  // pseudo-likelihood prefers it (saturation_choice.hpp). A tile's fit does without: its
+  // attraction is a lattice's contact.
+  bool saturation = true;
   // The share of the maximum-likelihood chains' birth proposals drawn near a neighbour, recorded
   // in the model for every later chain (model::NeighbourOffsets::share; docs/mathematics.md,
   // "Births near neighbours"); in [0, 1), or kAutomaticNearBirths.

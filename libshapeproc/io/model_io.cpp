@@ -250,6 +250,8 @@ std::string model_to_json(const ShapeProcessModel& model) {
                    {"gamma_standard_errors", errors},
                    {"status", status}};
       if (!a.observed_pairs.empty()) axis["observed_pairs"] = a.observed_pairs;
+      if (std::any_of(a.saturations.begin(), a.saturations.end(), [](int s) { return s > 0; }))
+        axis["saturations"] = a.saturations;
       axes.push_back(axis);
     }
     json entry = {{"categories", {pair.first, pair.second}}, {"axes", axes}};
@@ -382,6 +384,11 @@ AxisParameters parse_axis(const json& value, const std::string& at, int dimensio
   if (value.contains("observed_pairs")) {
     for (const json& v : r.array(value["observed_pairs"], at + ".observed_pairs"))
       axis.observed_pairs.push_back(r.integer(v, at + ".observed_pairs"));
+  }
+  if (value.contains("saturations")) {
+    const json& saturations = r.array(value["saturations"], at + ".saturations");
+    if (saturations.size() != bands) r.fail(at + ".saturations", "expected one per gamma");
+    for (const json& v : saturations) axis.saturations.push_back(r.integer(v, at + ".saturations"));
   }
   return axis;
 }

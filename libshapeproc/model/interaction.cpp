@@ -30,6 +30,7 @@ Interaction::Interaction(const ShapeProcessModel& model)
     anchor_reach_.push_back(model.categories[static_cast<std::size_t>(c)].anchor_reach);
   }
   anchor_band_.assign(static_cast<std::size_t>(categories_), 0);
+  saturation_.assign(static_cast<std::size_t>(categories_), 0);
   for (std::size_t p = 0; p < model.interactions.size(); ++p) {
     const PairInteraction& source = model.interactions[p];
     Pair pair;
@@ -43,6 +44,8 @@ Interaction::Interaction(const ShapeProcessModel& model)
       axis.first_parameter = parameters_;
       for (std::size_t k = 0; k < a.gammas.size(); ++k) {
         locations_.push_back({static_cast<int>(p), static_cast<int>(i), static_cast<int>(k)});
+        saturation_.push_back(a.saturation(k));
+        saturated_ = saturated_ || a.saturation(k) > 0;
       }
       // An anchor pair's bands that end at or below the reach: an element in one is on its base.
       const double reach = anchor_reach_of(source.first, source.second);
@@ -151,14 +154,21 @@ bool Interaction::anchored(int category, const std::vector<std::pair<int, int>>&
   return false;
 }
 
-void InteractionCounts::add(int parameter) {
+void InteractionCounts::add(int parameter, int count) {
+  if (count == 0) return;
   const auto it = std::lower_bound(counts.begin(), counts.end(), std::make_pair(parameter, 0),
                                    [](const auto& a, const auto& b) { return a.first < b.first; });
   if (it != counts.end() && it->first == parameter) {
-    ++it->second;
+    it->second += count;
   } else {
-    counts.insert(it, {parameter, 1});
+    counts.insert(it, {parameter, count});
   }
+}
+
+int InteractionCounts::count_of(int parameter) const {
+  const auto it = std::lower_bound(counts.begin(), counts.end(), std::make_pair(parameter, 0),
+                                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  return it != counts.end() && it->first == parameter ? it->second : 0;
 }
 
 double InteractionCounts::dot(const std::vector<double>& theta) const {

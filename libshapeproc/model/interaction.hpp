@@ -56,6 +56,11 @@ class Interaction {
   bool anchor_band(int parameter) const {
     return anchor_band_[static_cast<std::size_t>(parameter)] != 0;
   }
+  // The saturation s of a θ index's band (model::AxisParameters::saturations); 0: pairwise.
+  int saturation(int parameter) const { return saturation_[static_cast<std::size_t>(parameter)]; }
+  // Whether some band is saturated (a Geyer term: the conditional intensity also depends on the
+  // neighbours' own counts, docs/mathematics.md "Saturation").
+  bool saturated() const { return saturated_; }
   // Below this distance the pair is a hard-core violation whatever the axis; at or beyond
   // max_range it does not interact. Between, the axis decides.
   double min_hard_core(int ca, int cb) const { return pairs_[pair_of(ca, cb)].min_hard_core; }
@@ -123,6 +128,8 @@ class Interaction {
   std::vector<int> anchor_;           // per category
   std::vector<double> anchor_reach_;  // per category
   std::vector<char> anchor_band_;     // per θ index
+  std::vector<int> saturation_;       // per θ index
+  bool saturated_ = false;
   std::vector<Pair> pairs_;
   std::vector<Location> locations_;
   std::vector<double> theta_;  // θ: log β (betas, from the model) then log γ, by θ index
@@ -158,7 +165,8 @@ struct InteractionCounts {
   bool hard_core = false;
   std::vector<std::pair<int, int>> counts;
 
-  void add(int parameter);
+  void add(int parameter, int count = 1);
+  int count_of(int parameter) const;
   // θ · t for the interaction part (−∞ on a hard core).
   double dot(const std::vector<double>& theta) const;
 };

@@ -124,6 +124,29 @@ void validate_axis(const AxisParameters& axis, const std::string& at,
     if (!(std::isfinite(g) && g >= 0))
       fail(at + ".gammas[" + std::to_string(k) + "]", "must be finite and >= 0, got " + number(g));
   }
+  if (!axis.saturations.empty() && axis.saturations.size() != axis.gammas.size()) {
+    fail(at + ".saturations", "expected " + std::to_string(axis.gammas.size()) +
+                                  " values (one per band), got " +
+                                  std::to_string(axis.saturations.size()));
+  }
+  for (std::size_t k = 0; k < axis.saturations.size(); ++k)
+    if (axis.saturations[k] < 0)
+      fail(at + ".saturations[" + std::to_string(k) + "]",
+           "must be >= 0 (0: a pairwise band), got " + std::to_string(axis.saturations[k]));
+}
+
+// A saturated band counts each element's neighbours of the other category, which it sees only
+// when both lie in one layer.
+void validate_saturation(const ShapeProcessModel& model, const PairInteraction& pair,
+                         const std::string& where) {
+  bool saturated = false;
+  for (const AxisParameters& axis : pair.axes)
+    for (int s : axis.saturations) saturated = saturated || s > 0;
+  const auto layer = [&](int c) { return model.categories[static_cast<std::size_t>(c)].layer; };
+  if (saturated && layer(pair.first) != layer(pair.second))
+    fail(where + ".axes", "a saturated band needs both categories in one layer, got layers " +
+                              std::to_string(layer(pair.first)) + " and " +
+                              std::to_string(layer(pair.second)));
 }
 
 // The pairs' interactions: category indices, each pair once, the axes the directions give.
@@ -155,6 +178,7 @@ void validate_interactions(const ShapeProcessModel& model, const geometry::Direc
       validate_axis(pair.axes[i], where + ".axes[" + std::to_string(i) + "]",
                     bins.axis_direction(static_cast<int>(i)), model.dimension);
     }
+    validate_saturation(model, pair, where);
   }
 }
 

@@ -59,6 +59,14 @@ struct AxisParameters {
   std::vector<double> gamma_standard_errors;  // NaN where not estimated
   std::vector<ParameterStatus> status;        // per band
   std::vector<int> observed_pairs;            // exemplar pairs per band (fit only)
+  // Per band, the saturation s of a Geyer term (docs/mathematics.md, "Saturation"); empty, or 0
+  // for a band, is a pairwise band. A saturated band counts, for each element of the pair's
+  // categories, at most s of its neighbours in the band: its factor in the density is
+  // γ^{Σ_i min(s, t_i(x))}, so that an attraction clusters without condensing.
+  std::vector<int> saturations;
+  int saturation(std::size_t band) const {
+    return band < saturations.size() ? saturations[band] : 0;
+  }
 };
 
 // The interaction of one unordered pair of categories: one entry per axis bin, or a single one

@@ -199,10 +199,11 @@ SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
                                                const std::vector<Element>& start,
                                                core::Random& random,
                                                const synthesis::ChainControl& control) const {
-  // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain.
+  // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain. Nor
+  // does it hold its cells' surroundings' own links, which a saturated band's intensity reads.
   if (options_.decompose && fixed.empty() && options_.free_region.isEmpty() &&
       options_.observe_every == 0 && !options_.compression.enabled() &&
-      decomposable(domain_, reach()))
+      !tables.interaction->saturated() && decomposable(domain_, reach()))
     return sample_by_cells(model_, tables, *region_, options_, random, control);
   SampleResult result;
   long long growth_steps = 0;

@@ -84,8 +84,8 @@ struct SamplerOptions {
   CompressionOptions compression;
   // Parallel sampling of this one output by domain decomposition (domain_decomposition.hpp) on
   // `threads` threads (0: one per core), where the domain is large enough to cut into cells of
-  // the model's reach; otherwise, and with fixed elements, a free region or observations, the
-  // whole-domain chain. The output does not depend on the threads.
+  // the model's reach; otherwise, and with fixed elements, a free region, observations or a
+  // saturated band, the whole-domain chain. The output does not depend on the threads.
   bool decompose = false;
   int threads = 0;
 };

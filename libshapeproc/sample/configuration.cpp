@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "libshapeproc/core/assert.hpp"
+#include "libshapeproc/model/saturation.hpp"
 
 namespace shapeproc::sample {
 
@@ -102,7 +103,45 @@ double Configuration::log_interaction(const Element& xi, int skip, std::vector<L
       total += value;
     }
   }
+  return interaction_.saturated() ? linked_sum(links, skip) : total;
+}
+
+int Configuration::links_in(int slot, int parameter, int skip) const {
+  int count = 0;
+  for (const Link& l : links_[static_cast<std::size_t>(slot)])
+    count += l.parameter == parameter && l.slot != skip;
+  return count;
+}
+
+double Configuration::linked_sum(const std::vector<Link>& links, int skip) const {
+  double total = 0.0;
+  saturated_.clear();
+  for (const Link& l : links) {
+    if (interaction_.saturation(l.parameter) > 0)
+      saturated_.emplace_back(l.slot, l.parameter);
+    else
+      total += l.log_gamma;
+  }
+  if (saturated_.empty()) return total;
+  const model::InteractionCounts counts = model::saturated_counts(
+      interaction_, saturated_,
+      [&](int slot, int parameter) { return links_in(slot, parameter, skip); });
+  for (const auto& [parameter, count] : counts.counts)
+    total += interaction_.log_gamma_of(parameter) * count;
   return total;
+}
+
+void Configuration::add_saturated_statistics(int slot, const std::vector<Link>& links,
+                                             double sign) {
+  saturated_.clear();
+  for (const Link& l : links)
+    if (interaction_.saturation(l.parameter) > 0) saturated_.emplace_back(l.slot, l.parameter);
+  if (saturated_.empty()) return;
+  const model::InteractionCounts counts = model::saturated_counts(
+      interaction_, saturated_,
+      [&](int neighbour, int parameter) { return links_in(neighbour, parameter, slot); });
+  for (const auto& [parameter, count] : counts.counts)
+    statistics_[static_cast<std::size_t>(parameter)] += sign * count;
 }
 
 void Configuration::add(const Element& e, double local, const std::vector<Link>& links) {
@@ -171,9 +210,28 @@ void Configuration::statistics_in(const geometry::Box3& region, std::vector<doub
     out[static_cast<std::size_t>(e.category)] += 1.0;
     if (const int k = interaction_.class_statistic(e.shape); k >= 0)
       out[static_cast<std::size_t>(k)] += 1.0;
-    for (const Link& l : links_[static_cast<std::size_t>(slot)])
-      if (l.slot > slot && inside(l.slot) && !wraps(e.position, at(l.slot).position))
+    counted_.clear();  // a saturated band's links of this element: its own count t_i
+    for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
+      if (!inside(l.slot) || wraps(e.position, at(l.slot).position)) continue;
+      if (interaction_.saturation(l.parameter) > 0)
+        counted_.emplace_back(l.parameter, 1);
+      else if (l.slot > slot)
         out[static_cast<std::size_t>(l.parameter)] += 1.0;
+    }
+    add_capped_counts(out);
+  }
+}
+
+// Adds min(s, t_i) per saturated band to `out`, from the element's links in counted_.
+void Configuration::add_capped_counts(std::vector<double>& out) const {
+  std::sort(counted_.begin(), counted_.end());
+  for (std::size_t begin = 0; begin < counted_.size();) {
+    const int parameter = counted_[begin].first;
+    std::size_t end = begin;
+    while (end < counted_.size() && counted_[end].first == parameter) ++end;
+    out[static_cast<std::size_t>(parameter)] +=
+        std::min(interaction_.saturation(parameter), static_cast<int>(end - begin));
+    begin = end;
   }
 }
 
@@ -190,11 +248,15 @@ void Configuration::link(int slot, double local, const std::vector<Link>& links)
   links_[static_cast<std::size_t>(slot)] = links;
   for (const Link& l : links) {
     links_[static_cast<std::size_t>(l.slot)].push_back({slot, l.parameter, l.log_gamma});
-    statistics_[static_cast<std::size_t>(l.parameter)] += 1.0;
+    if (interaction_.saturation(l.parameter) == 0)
+      statistics_[static_cast<std::size_t>(l.parameter)] += 1.0;
   }
+  if (interaction_.saturated()) add_saturated_statistics(slot, links, 1.0);
 }
 
 void Configuration::unlink(int slot) {
+  if (interaction_.saturated())
+    add_saturated_statistics(slot, links_[static_cast<std::size_t>(slot)], -1.0);
   for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
     std::vector<Link>& back = links_[static_cast<std::size_t>(l.slot)];
     const auto it =
@@ -202,7 +264,8 @@ void Configuration::unlink(int slot) {
     SHAPEPROC_ASSERT(it != back.end(), "links are symmetric");
     *it = back.back();
     back.pop_back();
-    statistics_[static_cast<std::size_t>(l.parameter)] -= 1.0;
+    if (interaction_.saturation(l.parameter) == 0)
+      statistics_[static_cast<std::size_t>(l.parameter)] -= 1.0;
   }
   links_[static_cast<std::size_t>(slot)].clear();
 }

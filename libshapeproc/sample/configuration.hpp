@@ -50,10 +50,14 @@ class Configuration {
   // axes of the neighbours in range.
   double log_interaction(const Element& xi, int skip, std::vector<Link>& links) const;
 
-  // log λ(x | x \ x) − log β_c of an element of the configuration, from its links.
+  // log λ(x | x \ x) − log β_c of an element of the configuration, from its links (and, for
+  // saturated bands, its neighbours' links: model/saturation.hpp).
   double log_lambda_over_beta(int slot) const {
+    const std::vector<Link>& links = links_[static_cast<std::size_t>(slot)];
+    if (interaction_.saturated())
+      return local_[static_cast<std::size_t>(slot)] + linked_sum(links, slot);
     double total = local_[static_cast<std::size_t>(slot)];
-    for (const Link& link : links_[static_cast<std::size_t>(slot)]) total += link.log_gamma;
+    for (const Link& link : links) total += link.log_gamma;
     return total;
   }
 
@@ -78,8 +82,9 @@ class Configuration {
   const Vec3& period() const { return period_; }
 
   // The sufficient statistics t(x) of the configuration (Interaction::statistic_count): by θ
-  // index elements per category, then pairs per interaction parameter (each pair once), then
-  // elements per shape class. Kept up to date by add, remove and move.
+  // index elements per category, then pairs per interaction parameter (each pair once; for a
+  // saturated band, Σ_i min(s, t_i): model/saturation.hpp), then elements per shape class. Kept
+  // up to date by add, remove and move.
   const std::vector<double>& statistics() const { return statistics_; }
   // The same statistics of the elements whose reference positions lie in `region` (closed), and
   // of the pairs with both there: a window's view of the configuration (the stationary MLE's).
@@ -89,6 +94,15 @@ class Configuration {
   void link(int slot, double local, const std::vector<Link>& links);
 
   void unlink(int slot);
+  // Σ log Γ over `links` of an element, whose saturated bands count as model/saturation.hpp says,
+  // with the neighbours' own counts taken without `skip`.
+  double linked_sum(const std::vector<Link>& links, int skip) const;
+  // The links of `slot` in band `parameter`, not counting one to `skip`.
+  int links_in(int slot, int parameter, int skip) const;
+  // The change of the saturated bands' statistics when `slot`, linked to `links`, joins (+1) or
+  // leaves (−1): to call before its neighbours gain the links back, or after they lost them.
+  void add_saturated_statistics(int slot, const std::vector<Link>& links, double sign);
+  void add_capped_counts(std::vector<double>& out) const;
 
   const model::Interaction& interaction_;
   const geometry::PairMeasurer& measurer_;
@@ -113,6 +127,8 @@ class Configuration {
   mutable std::vector<Candidate> candidates_;  // scratch of log_interaction
   mutable std::vector<std::pair<int, model::PairEffect>>
       near_;  // scratch of log_interaction: (slot, effect in range)
+  mutable std::vector<std::pair<int, int>> saturated_;  // scratch: (slot, θ index) of links
+  mutable std::vector<std::pair<int, int>> counted_;    // scratch of statistics_in
 };
 
 }  // namespace shapeproc::sample

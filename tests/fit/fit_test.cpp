@@ -135,6 +135,7 @@ TEST(Fit, NarrowBandsMatchFineIntegrationAtTheDefaultCells) {
     options.measurement.directions = 1;
     options.thresholds = thresholds;
     options.boundary = geometry::Boundary::torus;
+    options.saturation = false;  // the exact cells of a pairwise model (saturated ones are sampled)
     const FitResult cells = fit_shape_process(scene, options);
     options.lines = true;
     options.quadrature = 1500;

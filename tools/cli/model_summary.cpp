@@ -23,7 +23,7 @@ std::string direction_degrees(const geometry::Vec3& d, int dimension) {
   return "(" + g(d.x(), 2) + ", " + g(d.y(), 2) + ", " + g(d.z(), 2) + ")";
 }
 
-std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
+std::string gamma_value_text(const model::AxisParameters& a, std::size_t k) {
   const model::ParameterStatus status =
       k < a.status.size() ? a.status[k] : model::ParameterStatus::fixed;
   switch (status) {
@@ -43,6 +43,13 @@ std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
     text += " ± " + g(a.gamma_standard_errors[k], 2);
   if (k < a.observed_pairs.size()) text += " (" + std::to_string(a.observed_pairs[k]) + ")";
   return text;
+}
+
+// A band's γ, and its saturation when it has one (docs/mathematics.md, "Saturation").
+std::string gamma_text(const model::AxisParameters& a, std::size_t k) {
+  const int s = a.saturation(k);
+  return gamma_value_text(a, k) +
+         (s > 0 ? ", saturated at " + std::to_string(s) + " neighbours per element" : "");
 }
 
 // The maximum-likelihood fit's goodness of fit, as spatstat prints a fit: per statistic the

@@ -11,6 +11,7 @@
 #include "libshapeproc/core/parallel_for.hpp"
 #include "libshapeproc/fit/anchored_quadrature.hpp"
 #include "libshapeproc/fit/line_quadrature.hpp"
+#include "libshapeproc/fit/point_counts.hpp"
 #include "libshapeproc/fit/quadrature_cell.hpp"
 #include "libshapeproc/geometry/neighbour_grid.hpp"
 
@@ -26,6 +27,7 @@ namespace {
 // about 1/√(points there): 11% for one base whose ring holds a fifth of its disc, and β rests on
 // the sum over the bases (4% over ten).
 constexpr int kAnchoredPointsPerBase = 400;
+constexpr int kMostSubdivisions = 8;
 // Distinct shapes a category's cells are all crossed with by default; more take turns over the
 // cells, 64 at each (longleaf's 584 trunk sizes: 1.3 million dummies, over a minute of
 // quadrature, instead of 150,000). The Hero tiles have fewer.
@@ -288,6 +290,29 @@ std::vector<std::vector<CellPart>> integrate_dummies(
   return parts;
 }
 
+// Sub-points per cell along each axis for a saturated model: spaced at most a twelfth of the
+// interaction range apart, at most kMostSubdivisions.
+int saturated_subdivisions(const CellGrid& grid, const model::Interaction& interaction) {
+  const double step = interaction.range() / 12.0;
+  const double cell = grid.longest / grid.cells_along;
+  return std::clamp(static_cast<int>(std::ceil(cell / step)), 1, kMostSubdivisions);
+}
+
+// Each dummy's cell sampled at sub-points (point_counts.hpp).
+std::vector<std::vector<CellPart>> sample_dummies(const std::vector<Dummy>& dummies,
+                                                  const CellGrid& grid, const PointCounter& counter,
+                                                  int dimension, int subdivisions, int threads) {
+  std::vector<std::vector<CellPart>> parts(dummies.size());
+  Vec3 cell = Vec3::Zero();
+  for (int axis = 0; axis < dimension; ++axis)
+    cell[axis] = grid.sizes[axis] / grid.count[static_cast<std::size_t>(axis)];
+  on_threads(threads, [&](std::size_t begin, std::size_t step) {
+    for (std::size_t d = begin; d < dummies.size(); d += step)
+      parts[d] = sampled_cell(counter, dummies[d].element, cell, dimension, subdivisions);
+  });
+  return parts;
+}
+
 }  // namespace
 
 QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOptions& options,
@@ -312,10 +337,15 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
       place_dummies(grid, region, options, measurer, statistics, shapes_of,
                     data_by_cell(exemplar, region, grid, categories), block_start, design);
   out.data_points = design.points.size();
-  out.lines = options.lines && interaction.range() > 0;
+  // A saturated band's statistic reads each neighbour's own count: its cells are sampled.
+  const bool saturated = interaction.saturated();
+  out.lines = options.lines && interaction.range() > 0 && !saturated;
+  const PointCounter counter(exemplar, window.periodic(), measurer, interaction, &statistics);
   std::vector<std::vector<CellPart>> parts =
-      integrate_dummies(dummies, block_start, grid, region, exemplar, options, measurer,
-                        interaction, window, out.lines);
+      saturated ? sample_dummies(dummies, grid, counter, dimension,
+                                 saturated_subdivisions(grid, interaction), options.threads)
+                : integrate_dummies(dummies, block_start, grid, region, exemplar, options, measurer,
+                                    interaction, window, out.lines);
 
   // Lines: the data points' share comes off every line of their category alike, so that the
   // weights still sum to |W|.
@@ -340,7 +370,7 @@ QuadratureDesign quadrature_design(const geometry::Scene& exemplar, const FitOpt
     }
   }
   for (QuadraturePoint& q : anchored_quadrature(exemplar, region, measurer, interaction, shapes_of,
-                                                window, kAnchoredPointsPerBase))
+                                                window, counter, kAnchoredPointsPerBase))
     design.points.push_back(std::move(q));
   return out;
 }
