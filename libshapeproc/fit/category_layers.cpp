@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 
@@ -109,7 +110,20 @@ std::vector<LayerDependence> layer_dependences(const geometry::Scene& exemplar,
         out.push_back({static_cast<int>(c), static_cast<int>(a), on / count, farthest, contact});
     }
   }
-  return out;
+  // A category of points near several sparser ones lies above the sparsest only, its host (the
+  // centres of a clustered pattern's clusters rather than a class clustered with it).
+  const auto host = [&](const LayerDependence& d) {
+    if (d.contact <= 0) return true;
+    return std::none_of(out.begin(), out.end(), [&](const LayerDependence& other) {
+      const std::size_t a = static_cast<std::size_t>(other.base),
+                        b = static_cast<std::size_t>(d.base);
+      return other.category == d.category && other.contact > 0 &&
+             (counts[a] < counts[b] || (counts[a] == counts[b] && a < b));
+    });
+  };
+  std::vector<LayerDependence> hosts;
+  std::copy_if(out.begin(), out.end(), std::back_inserter(hosts), host);
+  return hosts;
 }
 
 std::vector<std::string> assign_layers(model::ShapeProcessModel& model,

@@ -84,8 +84,8 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
   // burn-in), or a layered model's chain of its layer.
   const std::size_t n = result.observations.size();
   std::vector<double> last(expected.size(), 0.0);  // the final state's counts
-  for (const geometry::Element& e : result.scene.elements)
-    last[static_cast<std::size_t>(e.category)] += 1.0;
+  for (const std::vector<geometry::Element>* elements : {&result.scene.elements, &result.hidden})
+    for (const geometry::Element& e : *elements) last[static_cast<std::size_t>(e.category)] += 1.0;
   std::vector<double> counts = last;  // a run too short to observe keeps its last state
   for (std::size_t c = 0; c < expected.size(); ++c) {
     std::size_t first = std::max<std::size_t>(

@@ -85,6 +85,10 @@ class Reader {
       fail(where, "expected an integer in the range of an int, got " + v.dump());
     return v.get<int>();
   }
+  bool boolean(const json& v, const std::string& where) const {
+    if (!v.is_boolean()) fail(where, "expected true or false, got " + v.dump());
+    return v.get<bool>();
+  }
   std::string text(const json& v, const std::string& where) const {
     if (!v.is_string()) fail(where, "expected a string, got " + v.dump());
     return v.get<std::string>();
@@ -231,6 +235,7 @@ std::string model_to_json(const ShapeProcessModel& model) {
       categories.back()["anchor"] = c.anchor;
       categories.back()["anchor_reach"] = c.anchor_reach;
     }
+    if (c.hidden) categories.back()["hidden"] = true;
   }
   json interaction = json::array();
   for (const PairInteraction& pair : model.interactions) {
@@ -345,6 +350,8 @@ std::vector<CategoryParameters> parse_categories(const json& document, const Rea
       category.anchor = r.integer(categories[c]["anchor"], where + ".anchor");
     if (categories[c].contains("anchor_reach"))
       category.anchor_reach = r.number(categories[c]["anchor_reach"], where + ".anchor_reach");
+    if (categories[c].contains("hidden"))
+      category.hidden = r.boolean(categories[c]["hidden"], where + ".hidden");
     out.push_back(category);
   }
   return out;

@@ -48,6 +48,9 @@ struct CategoryParameters {
   // intensity is 0 elsewhere. -1: none.
   int anchor = -1;
   double anchor_reach = 0.0;
+  // A category the model places but an output does not draw: the centres of a clustered
+  // pattern's clusters, which its visible categories are anchored to (docs/fit.md, "Clusters").
+  bool hidden = false;
 };
 
 struct AxisParameters {

@@ -159,8 +159,22 @@ bool ShapeProcessSampler::torus_smaller_than_reach() const {
 
 SampleResult ShapeProcessSampler::sample(core::Random& random,
                                          const synthesis::ChainControl& control) const {
-  if (layers_.empty())
-    return sample_layer(*tables_, options_.fixed, options_.start, random, control);
+  SampleResult result =
+      layers_.empty() ? sample_layer(*tables_, options_.fixed, options_.start, random, control)
+                      : sample_layers(random, control);
+  // The hidden categories' elements leave the output.
+  std::vector<Element>& elements = result.scene.elements;
+  const auto hidden = [&](const Element& e) {
+    return model_.categories[static_cast<std::size_t>(e.category)].hidden;
+  };
+  for (const Element& e : elements)
+    if (hidden(e)) result.hidden.push_back(e);
+  elements.erase(std::remove_if(elements.begin(), elements.end(), hidden), elements.end());
+  return result;
+}
+
+SampleResult ShapeProcessSampler::sample_layers(core::Random& random,
+                                                const synthesis::ChainControl& control) const {
   // A layered model: each layer given the elements of those below (the earlier results are its
   // fixed elements); the result is the last layer's, with every layer's steps and moves.
   SampleResult result;

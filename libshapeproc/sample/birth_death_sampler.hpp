@@ -92,6 +92,9 @@ struct SamplerOptions {
 
 struct SampleResult {
   geometry::Scene scene;  // the model's shapes, the sampled elements, the domain's box as window
+  // The elements of hidden categories (model::CategoryParameters::hidden), placed by the chain
+  // and left out of `scene`.
+  std::vector<geometry::Element> hidden;
   long long iterations = 0;
   MoveCounts moves;
   bool stationary = true;  // false when the automatic rule hit max_iterations
@@ -160,6 +163,8 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   // A layered model's stages (model::CategoryParameters::layer), each with births of its own
   // categories only; empty for a model of one layer.
   std::vector<std::unique_ptr<const ChainTables>> layers_;
+  // A layered model's layers in turn, each given the elements of those below.
+  SampleResult sample_layers(core::Random& random, const synthesis::ChainControl& control) const;
   // One chain with `tables`, from `fixed` and `start`: the whole run of an unlayered model, or one
   // layer's given those below.
   SampleResult sample_layer(const ChainTables& tables, const std::vector<geometry::Element>& fixed,

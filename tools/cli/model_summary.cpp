@@ -118,6 +118,7 @@ void print_model_summary(const model::ShapeProcessModel& model, std::ostream& ou
     if (c.anchor >= 0)
       out << ", on '" << model.categories[static_cast<std::size_t>(c.anchor)].name << "' (within "
           << g(c.anchor_reach, 3) << ")";
+    if (c.hidden) out << "  (hidden: placed, not drawn)";
     out << '\n';
   }
   if (!model.shape_classes.empty()) {
