@@ -16,6 +16,16 @@ cmake -S "$source/tests/install/consumer" -B "$work/cmake" -G Ninja -DCMAKE_BUIL
   -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
 cmake --build "$work/cmake" > /dev/null
 echo "find_package consumer: $("$work/cmake/consumer" "$exemplar")"
+# A component the package does not have fails the configuration, naming it.
+mkdir -p "$work/unknown"
+printf 'cmake_minimum_required(VERSION 3.22)\nproject(unknown LANGUAGES CXX)\nfind_package(shapeproc REQUIRED COMPONENTS gui)\n' \
+  > "$work/unknown/CMakeLists.txt"
+if cmake -S "$work/unknown" -B "$work/unknown/build" -DCMAKE_PREFIX_PATH="$prefix" \
+  > "$work/unknown.log" 2>&1; then
+  echo "find_package with COMPONENTS gui succeeded" >&2
+  exit 1
+fi
+grep -q "no component 'gui'" "$work/unknown.log" && echo "unknown component: refused"
 pc_dir=$(dirname "$(find "$prefix" -name shapeproc.pc | head -n 1)")
 libdir=$(PKG_CONFIG_PATH=$pc_dir pkg-config --variable=libdir shapeproc)
 # shellcheck disable=SC2046
