@@ -116,7 +116,7 @@ FitResult refit_after_torus_failure(const geometry::Scene& exemplar, const FitOp
   }
   add_first_note(drawn, first + ", nor from the estimate of the window as drawn (" +
                             attempt(estimator.iterations, estimator.seconds) +
-                            "), so the window was fitted as drawn (--edge none); its outputs "
+                            "), so the window was fitted as drawn (no edge treatment); its outputs "
                             "may be denser or sparser than the exemplar near its edges");
   drawn.model.fit->path = model::FitPath::likelihood_own_after_stationary;
   return drawn;

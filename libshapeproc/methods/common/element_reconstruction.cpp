@@ -25,8 +25,9 @@ Reconstruction parse_reconstruction(const std::string& text) {
   for (Reconstruction r : {Reconstruction::rigid, Reconstruction::similarity, Reconstruction::tps,
                            Reconstruction::tps_approx})
     if (text == to_string(r)) return r;
-  throw core::ArgumentError("--reconstruction",
-                            "expected rigid, similarity, tps or tps-approx, got '" + text + "'");
+  throw core::ArgumentError(
+      "element reconstruction",
+      "reconstruction: expected rigid, similarity, tps or tps-approx, got '" + text + "'");
 }
 
 Similarity fit_similarity(const std::vector<Vec3>& from, const std::vector<Vec3>& to, int dimension,

@@ -67,7 +67,7 @@ EmExemplar analyse_exemplar(const geometry::Scene& scene, geometry::Boundary bou
                             const SampleOptions& options) {
   if (scene.elements.size() < 2)
     throw core::ArgumentError("neighbourhood EM", "the exemplar needs at least 2 elements");
-  if (!(rings > 0)) throw core::ArgumentError("neighbourhood EM", "--neighbourhood must be > 0");
+  if (!(rings > 0)) throw core::ArgumentError("neighbourhood EM", "rings must be > 0");
   EmExemplar ex;
   ex.scene = scene;
   ex.boundary = boundary;

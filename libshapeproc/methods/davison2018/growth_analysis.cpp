@@ -15,16 +15,17 @@ namespace {
 
 void check_options(const GrowthOptions& o) {
   if (!(o.rings > 0 && o.rings <= 10))
-    throw core::ArgumentError("--neighbourhood", "expected rings in (0, 10]");
-  if (o.k < 1 || o.k > 100) throw core::ArgumentError("--k", "expected 1 to 100");
-  if (!(o.alpha >= 0)) throw core::ArgumentError("--alpha", "the weight must be >= 0");
-  if (!(o.ratio > 1.0)) throw core::ArgumentError("--ratio", "the ratio must be > 1");
+    throw core::ArgumentError("region growing", "rings: expected rings in (0, 10]");
+  if (o.k < 1 || o.k > 100) throw core::ArgumentError("region growing", "k: expected 1 to 100");
+  if (!(o.alpha >= 0))
+    throw core::ArgumentError("region growing", "alpha: the weight must be >= 0");
+  if (!(o.ratio > 1.0)) throw core::ArgumentError("region growing", "ratio: the ratio must be > 1");
   if (!(o.patch_radius >= 0))
-    throw core::ArgumentError("--patch-radius", "the patch radius must be >= 0");
+    throw core::ArgumentError("region growing", "patch_radius: the patch radius must be >= 0");
   if (!(o.seed_separation > 0 && o.seed_separation <= 1))
     throw core::ArgumentError("region growing", "the seed separation must be in (0, 1]");
   if (!(o.bounding_radius >= 0))
-    throw core::ArgumentError("--bounding-radius", "expected a radius >= 0");
+    throw core::ArgumentError("region growing", "bounding_radius: expected a radius >= 0");
 }
 
 // Half of each exemplar element's nearest distance (its shape's bounding circle when it has no

@@ -25,7 +25,7 @@ double graph_reach(const SeedGrowthExemplar& ex, const SeedGrowthOptions& o) {
 
 void check_options(const SeedGrowthOptions& o) {
   if (!(o.w1 >= 0 && o.w2 >= 0 && o.w3 >= 0 && std::isfinite(o.w1 + o.w2 + o.w3)))
-    throw core::ArgumentError("--weights", "the weights must be finite and >= 0");
+    throw core::ArgumentError("seed-and-grow", "weights: the weights must be finite and >= 0");
   if (o.relax_hops < 0 || o.relax_sweeps < 0 || o.final_sweeps < 0)
     throw core::ArgumentError("seed-and-grow", "relaxation counts must be >= 0");
 }
@@ -48,7 +48,8 @@ RotationMode parse_rotation_mode(const std::string& text) {
   if (text == "none") return RotationMode::none;
   if (text == "best") return RotationMode::best;
   if (text == "flow-field") return RotationMode::flow_field;
-  throw core::ArgumentError("--rotation", "expected none, best or flow-field, got '" + text + "'");
+  throw core::ArgumentError("seed-and-grow",
+                            "rotation: expected none, best or flow-field, got '" + text + "'");
 }
 
 SeedGrowthExemplar analyse_seed_growth_exemplar(const geometry::Scene& drawn,
@@ -114,11 +115,12 @@ SeedAndGrow::SeedAndGrow(const geometry::Scene& exemplar, geometry::Boundary exe
     throw core::ArgumentError("seed-and-grow", "Ijiri's growth makes 2D outputs");
   for (const Vec3& s : options_.seeds)
     if (!domain_.periodic() && !domain_.contains(s))
-      throw core::ArgumentError("--seeds", "the seed (" + core::format_number(s.x()) + ", " +
-                                               core::format_number(s.y()) +
-                                               ") lies outside the output");
+      throw core::ArgumentError("seed-and-grow", "seeds: the seed (" + core::format_number(s.x()) +
+                                                     ", " + core::format_number(s.y()) +
+                                                     ") lies outside the output");
   if (!options_.priority.empty() && options_.priority.size() != exemplar_.scene.categories.size())
-    throw core::ArgumentError("--priority", "expected one priority per exemplar category");
+    throw core::ArgumentError("seed-and-grow",
+                              "priority: expected one priority per exemplar category");
 }
 
 std::vector<std::pair<std::string, std::string>> SeedAndGrow::record_options() const {

@@ -31,8 +31,8 @@ Initialisation parse_initialisation(const std::string& text) {
     if (text == to_string(i)) return i;
   }
   throw core::ArgumentError(
-      "--initialisation",
-      "expected patch-copy, random-copy or incremental-add, got '" + text + "'");
+      "neighbourhood EM",
+      "initialisation: expected patch-copy, random-copy or incremental-add, got '" + text + "'");
 }
 
 void InitialOutput::add(const EmExemplar& exemplar, int source, const Vec3& position,

@@ -15,23 +15,25 @@ namespace {
 void check_options(const EmOptions& o, const geometry::Scene& exemplar,
                    const geometry::Domain& domain) {
   if (!(o.rings > 0 && o.rings <= 10))
-    throw core::ArgumentError("--neighbourhood", "expected rings in (0, 10]");
-  if (o.k < 1 || o.k > 100) throw core::ArgumentError("--k", "expected 1 to 100");
+    throw core::ArgumentError("neighbourhood EM", "rings: expected rings in (0, 10]");
+  if (o.k < 1 || o.k > 100) throw core::ArgumentError("neighbourhood EM", "k: expected 1 to 100");
   if (!(o.alpha >= 0) || !(o.lambda >= 0))
-    throw core::ArgumentError("--alpha", "the weights must be >= 0");
+    throw core::ArgumentError("neighbourhood EM", "alpha: the weights must be >= 0");
   if (o.iterations < 0 || o.iterations > 10000)
-    throw core::ArgumentError("--iterations", "expected 0 to 10000 EM iterations");
+    throw core::ArgumentError("neighbourhood EM", "iterations: expected 0 to 10000 EM iterations");
   if (o.samples.per_element < 0 || o.samples.per_element > kMaxSamplesPerElement)
-    throw core::ArgumentError("--samples-per-element",
-                              "expected 1 to " + std::to_string(kMaxSamplesPerElement));
+    throw core::ArgumentError("neighbourhood EM", "samples.per_element: expected 1 to " +
+                                                      std::to_string(kMaxSamplesPerElement));
   if (exemplar.dimension != domain.dimension())
     throw core::ArgumentError(
         "neighbourhood EM", "the exemplar is " + std::to_string(exemplar.dimension) +
                                 "D but the domain is " + std::to_string(domain.dimension()) + "D");
   if (o.physics_steps < 0 || o.physics_steps > 1000)
-    throw core::ArgumentError("--physics-steps", "expected 0 to 1000 engine steps per iteration");
+    throw core::ArgumentError("neighbourhood EM",
+                              "physics_steps: expected 0 to 1000 engine steps per iteration");
   if (!o.orientation.empty() && exemplar.dimension != 2)
-    throw core::ArgumentError("--orientation-field", "orientation fields are for 2D outputs");
+    throw core::ArgumentError("neighbourhood EM",
+                              "orientation: orientation fields are for 2D outputs");
 }
 
 // The output with its positions moved by `step` of `displacement` and its sources replaced.
