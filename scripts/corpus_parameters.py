@@ -18,6 +18,10 @@ SHAPEPROC = os.environ.get("SHAPEPROC", os.path.join(ROOT, "build", "tools", "sh
 CORPUS = os.path.join(ROOT, "data", "corpus")
 
 
+# The fit's notes that say what it chose: layers, saturation, clusters and the density check.
+CHOICE_NOTES = ("note: density on a torus", "note: layer ", "note: saturation ", "note: clusters: ")
+
+
 def summary(show):
     """The lines of `show` that say what was chosen."""
     out, pair = [], None
@@ -29,8 +33,10 @@ def summary(show):
             out[-1] = f"- {pair}: {line.strip()[len('chosen: '):]}"
         elif line.startswith("path:"):
             out.insert(0, f"- {line}")
-        elif line.startswith("note: density on a torus") or line.startswith("note: layer "):
+        elif line.startswith(CHOICE_NOTES) or "of clustered categories set to 1" in line:
             out.append(f"- {line[len('note: '):]}")
+        elif "saturated at" in line and pair:
+            out[-1] += " (some bands saturated: see `show`)" if "saturated" not in out[-1] else ""
     return out
 
 
