@@ -35,14 +35,15 @@ void check_budget(const ResourceEstimate& estimate, const ResourceBudget& budget
                                   ? "about " + format_general(estimate.elements, 3)
                                   : std::string("an unbounded number of");
     throw UsageError(what + " would hold " + count + " elements (" + estimate.basis +
-                     "), more than --max-elements " + format_general(budget.max_elements, 6) +
-                     "; lower " + lower + " or raise --max-elements");
+                     "), more than " + budget.elements_name + " " +
+                     format_general(budget.max_elements, 6) + "; lower " + lower + " or raise " +
+                     budget.elements_name);
   }
   if (!(estimate.bytes <= budget.max_memory)) {
     throw UsageError(what + " would need about " + format_bytes(estimate.bytes) + " of memory (" +
-                     estimate.basis + "), more than --max-memory " +
-                     format_bytes(budget.max_memory) + "; lower " + lower +
-                     " or raise --max-memory");
+                     estimate.basis + "), more than " + budget.memory_name + " " +
+                     format_bytes(budget.max_memory) + "; lower " + lower + " or raise " +
+                     budget.memory_name);
   }
 }
 

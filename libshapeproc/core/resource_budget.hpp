@@ -1,6 +1,6 @@
 // Requests that would exhaust memory or run for hours are refused before any work starts: each
 // command estimates what it will need (elements, bytes, work) and checks it against a budget that
-// the user can raise (--max-elements, --max-memory).
+// the user can raise.
 #pragma once
 
 #include <string>
@@ -10,6 +10,10 @@ namespace shapeproc::core {
 struct ResourceBudget {
   double max_elements = 2e6;             // elements in one output (or one exemplar to fit)
   double max_memory = default_memory();  // bytes
+  // What a refusal calls the two limits: these fields' names, or a caller's own (the command
+  // line names its flags).
+  std::string elements_name = "max_elements";
+  std::string memory_name = "max_memory";
 
   // 16 GiB, or three quarters of the machine's memory when it has less.
   static double default_memory();

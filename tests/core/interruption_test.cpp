@@ -50,12 +50,21 @@ TEST(ResourceBudget, RefusesWithTheEstimateItsBasisAndTheLimit) {
   budget.max_memory = 1 << 20;
   check_budget({999, 1000, "x"}, budget, "the output", "--size");
   try {
-    check_budget({2e6, 10, "density times area"}, budget, "the output", "--size");
+    check_budget({2e6, 10, "density times area"}, budget, "the output", "size");
     FAIL();
   } catch (const UsageError& e) {
     EXPECT_STREQ(e.what(),
                  "the output would hold about 2e+06 elements (density times area), more than "
-                 "--max-elements 1000; lower --size or raise --max-elements");
+                 "max_elements 1000; lower size or raise max_elements");
+  }
+  budget.elements_name = "--max-elements";  // the command line names its flags
+  try {
+    check_budget({2e6, 10, "density times area"}, budget, "the output", "--size");
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than --max-elements 1000; lower --size or raise "
+                                         "--max-elements"),
+              std::string::npos);
   }
   EXPECT_THROW(check_budget({10, 2e6, "x"}, budget, "the fit", "--quadrature"), UsageError);
   EXPECT_THROW(check_budget({std::nan(""), 1, "x"}, budget, "the fit", "--quadrature"), UsageError);
