@@ -158,6 +158,7 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
                                         std::move(mpl), *options.likelihood);
   };
   ExemplarFit fit;
+  int centres = -1;  // the hidden category of a clustered pattern's centres
   std::vector<std::string> tile_notes;
   if (options.tile && exemplar.dimension == 2) {
     TileFit tile = fit_tile(exemplar, pseudo_likelihood, maximum_likelihood);
@@ -167,7 +168,7 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
     tile_notes = std::move(tile.notes);
   } else {
     fit.exemplar = exemplar;
-    const int centres = add_cluster_centres(fit.exemplar, options, tile_notes);
+    centres = add_cluster_centres(fit.exemplar, options, tile_notes);
     fit.result = maximum_likelihood(fit.exemplar, 1, pseudo_likelihood(fit.exemplar, 1));
     if (centres >= 0) {
       fit.result.model.categories[static_cast<std::size_t>(centres)].hidden = true;
@@ -191,6 +192,21 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
     fit.result.notes.push_back(note);
   }
   if (options.calibration) calibrate(fit, options);
+  // Centres that the check could not hold (a small exemplar's separated data: its points' bands
+  // around the centres unbounded, the chains running away) leave the model worse than none: it is
+  // fitted again without them.
+  const auto& check = fit.result.model.fit->calibration;
+  if (centres >= 0 && check && check->ran_away && !check->converged) {
+    ExemplarFitOptions without = options;
+    without.clusters = false;
+    ExemplarFit again = fit_exemplar(exemplar, without);
+    const std::string note =
+        "clusters: the model with cluster centres ran away on the output's scale; fitted without "
+        "them";
+    again.result.notes.push_back(note);
+    again.result.model.fit->notes.push_back(note);
+    return again;
+  }
   return fit;
 }
 

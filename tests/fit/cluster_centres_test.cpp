@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_exemplar.hpp"
@@ -98,6 +100,31 @@ TEST(ClusterCentres, AClusteredExemplarIsSampledAroundHiddenCentres) {
   };
   for (const geometry::Element& e : out.scene.elements) EXPECT_EQ(e.category, 0);
   EXPECT_LT(mean_nearest(out.scene.elements, 200), 1.5 * mean_nearest(exemplar.elements, 1e9));
+}
+
+// Two tight groups of six points: clustered, but too few points to bound the points' bands around
+// two centres (the pseudo-likelihood has no finite maximum and the chains run away). The fit
+// falls back to the model without centres, and says so.
+TEST(ClusterCentres, CentresThatRunAwayAreDropped) {
+  core::Random random(1);
+  std::vector<Vec3> points;
+  for (const Vec3& centre : {Vec3(20, 20, 0), Vec3(80, 70, 0)})
+    for (int k = 0; k < 6; ++k) {
+      const double r = std::sqrt(-2 * std::log(1 - random.uniform()));
+      const double a = 2 * 3.14159265358979 * random.uniform();
+      points.push_back(centre + Vec3(r * std::cos(a), r * std::sin(a), 0));
+    }
+  const geometry::Scene exemplar = points_on(points);
+  ASSERT_TRUE(find_clusters(exemplar, false).clustered);
+  ExemplarFitOptions options;
+  options.likelihood.reset();
+  const ExemplarFit fit = fit_exemplar(exemplar, options);
+  ASSERT_EQ(fit.result.model.categories.size(), 1u);
+  EXPECT_FALSE(fit.result.model.categories[0].hidden);
+  const std::vector<std::string>& notes = fit.result.model.fit->notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("fitted without them") != std::string::npos;
+  }));
 }
 
 }  // namespace
