@@ -113,34 +113,29 @@ int Configuration::links_in(int slot, int parameter, int skip) const {
   return count;
 }
 
+model::InteractionCounts Configuration::saturated_change(const std::vector<Link>& links,
+                                                         int skip) const {
+  saturated_.clear();
+  for (const Link& l : links)
+    if (interaction_.saturation(l.parameter) > 0) saturated_.emplace_back(l.slot, l.parameter);
+  if (saturated_.empty()) return {};
+  return model::saturated_counts(interaction_, saturated_, [&](int neighbour, int parameter) {
+    return links_in(neighbour, parameter, skip);
+  });
+}
+
 double Configuration::linked_sum(const std::vector<Link>& links, int skip) const {
   double total = 0.0;
-  saturated_.clear();
-  for (const Link& l : links) {
-    if (interaction_.saturation(l.parameter) > 0)
-      saturated_.emplace_back(l.slot, l.parameter);
-    else
-      total += l.log_gamma;
-  }
-  if (saturated_.empty()) return total;
-  const model::InteractionCounts counts = model::saturated_counts(
-      interaction_, saturated_,
-      [&](int slot, int parameter) { return links_in(slot, parameter, skip); });
-  for (const auto& [parameter, count] : counts.counts)
+  for (const Link& l : links)
+    if (interaction_.saturation(l.parameter) == 0) total += l.log_gamma;
+  for (const auto& [parameter, count] : saturated_change(links, skip).counts)
     total += interaction_.log_gamma_of(parameter) * count;
   return total;
 }
 
 void Configuration::add_saturated_statistics(int slot, const std::vector<Link>& links,
                                              double sign) {
-  saturated_.clear();
-  for (const Link& l : links)
-    if (interaction_.saturation(l.parameter) > 0) saturated_.emplace_back(l.slot, l.parameter);
-  if (saturated_.empty()) return;
-  const model::InteractionCounts counts = model::saturated_counts(
-      interaction_, saturated_,
-      [&](int neighbour, int parameter) { return links_in(neighbour, parameter, slot); });
-  for (const auto& [parameter, count] : counts.counts)
+  for (const auto& [parameter, count] : saturated_change(links, slot).counts)
     statistics_[static_cast<std::size_t>(parameter)] += sign * count;
 }
 
@@ -210,28 +205,17 @@ void Configuration::statistics_in(const geometry::Box3& region, std::vector<doub
     out[static_cast<std::size_t>(e.category)] += 1.0;
     if (const int k = interaction_.class_statistic(e.shape); k >= 0)
       out[static_cast<std::size_t>(k)] += 1.0;
-    counted_.clear();  // a saturated band's links of this element: its own count t_i
+    model::InteractionCounts own;  // a saturated band's links of this element: its count t_i
     for (const Link& l : links_[static_cast<std::size_t>(slot)]) {
       if (!inside(l.slot) || wraps(e.position, at(l.slot).position)) continue;
       if (interaction_.saturation(l.parameter) > 0)
-        counted_.emplace_back(l.parameter, 1);
+        own.add(l.parameter);
       else if (l.slot > slot)
         out[static_cast<std::size_t>(l.parameter)] += 1.0;
     }
-    add_capped_counts(out);
-  }
-}
-
-// Adds min(s, t_i) per saturated band to `out`, from the element's links in counted_.
-void Configuration::add_capped_counts(std::vector<double>& out) const {
-  std::sort(counted_.begin(), counted_.end());
-  for (std::size_t begin = 0; begin < counted_.size();) {
-    const int parameter = counted_[begin].first;
-    std::size_t end = begin;
-    while (end < counted_.size() && counted_[end].first == parameter) ++end;
-    out[static_cast<std::size_t>(parameter)] +=
-        std::min(interaction_.saturation(parameter), static_cast<int>(end - begin));
-    begin = end;
+    for (const auto& [parameter, count] : own.counts)
+      out[static_cast<std::size_t>(parameter)] +=
+          std::min(interaction_.saturation(parameter), count);
   }
 }
 

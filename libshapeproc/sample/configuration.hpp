@@ -99,10 +99,11 @@ class Configuration {
   double linked_sum(const std::vector<Link>& links, int skip) const;
   // The links of `slot` in band `parameter`, not counting one to `skip`.
   int links_in(int slot, int parameter, int skip) const;
-  // The change of the saturated bands' statistics when `slot`, linked to `links`, joins (+1) or
-  // leaves (−1): to call before its neighbours gain the links back, or after they lost them.
+  // The change an element linked to `links` makes to the saturated bands' statistics
+  // (model/saturation.hpp), its neighbours' own counts taken without `skip`.
+  model::InteractionCounts saturated_change(const std::vector<Link>& links, int skip) const;
+  // Adds that change, times `sign`, for `slot` joining (+1) or leaving (−1) the configuration.
   void add_saturated_statistics(int slot, const std::vector<Link>& links, double sign);
-  void add_capped_counts(std::vector<double>& out) const;
 
   const model::Interaction& interaction_;
   const geometry::PairMeasurer& measurer_;
@@ -128,7 +129,6 @@ class Configuration {
   mutable std::vector<std::pair<int, model::PairEffect>>
       near_;  // scratch of log_interaction: (slot, effect in range)
   mutable std::vector<std::pair<int, int>> saturated_;  // scratch: (slot, θ index) of links
-  mutable std::vector<std::pair<int, int>> counted_;    // scratch of statistics_in
 };
 
 }  // namespace shapeproc::sample
