@@ -9,6 +9,7 @@
 
 #include "libshapeproc/fit/cluster_centres.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
+#include "libshapeproc/fit/independent_marks.hpp"
 #include "libshapeproc/fit/parameter_budget.hpp"
 #include "libshapeproc/fit/tile_fit.hpp"
 #include "libshapeproc/model/interaction.hpp"
@@ -60,20 +61,18 @@ bool point_pattern(const geometry::Scene& exemplar) {
          });
 }
 
-// The exemplar with its clusters' centres as one more category, when it is a clustered point
-// pattern (cluster_centres.hpp); its index, or -1 (the exemplar unchanged).
-int add_cluster_centres(geometry::Scene& exemplar, const ExemplarFitOptions& options,
-                        std::vector<std::string>& notes) {
-  // One category: anchored to centres, several small classes each carry a radial profile and
-  // class pairs of a few points, too many γ for their data (data/corpus cluster-classes: 117
-  // bands, its classes at ×0.003–×18 after the density check).
-  if (!options.clusters || options.tile || !point_pattern(exemplar) ||
-      exemplar.categories.size() != 1)
-    return -1;
-  const ClusterFit clusters =
-      find_clusters(exemplar, options.fit.boundary == geometry::Boundary::torus);
+// The clusters of a 2D point pattern (cluster_centres.hpp), when the options ask for them and it
+// is one (not a tile); the test's note joins `notes`.
+ClusterFit exemplar_clusters(const geometry::Scene& exemplar, const ExemplarFitOptions& options,
+                             std::vector<std::string>& notes) {
+  if (!options.clusters || options.tile || !point_pattern(exemplar)) return {};
+  ClusterFit clusters = find_clusters(exemplar, options.fit.boundary == geometry::Boundary::torus);
   notes.push_back(clusters.note);
-  if (!clusters.clustered) return -1;
+  return clusters;
+}
+
+// Adds `centres` to the exemplar as one more category; returns its index.
+int add_centres(geometry::Scene& exemplar, const std::vector<geometry::Vec3>& centres) {
   std::string name = "cluster centre";
   const auto taken = [&](const std::string& n) {
     return std::any_of(exemplar.categories.begin(), exemplar.categories.end(),
@@ -81,7 +80,7 @@ int add_cluster_centres(geometry::Scene& exemplar, const ExemplarFitOptions& opt
   };
   while (taken(name)) name += "'";
   const int category = exemplar.category_index(name);
-  for (const geometry::Vec3& c : clusters.centres) exemplar.elements.push_back({0, category, c});
+  for (const geometry::Vec3& c : centres) exemplar.elements.push_back({0, category, c});
   return category;
 }
 
@@ -126,9 +125,12 @@ void children_given_centres(model::ShapeProcessModel& model, int centres,
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options) {
   const bool likelihood = options.likelihood &&
                           (options.tile || exemplar.elements.size() <= options.likelihood_elements);
+  int centres = -1;     // the hidden category of a clustered pattern's centres
+  bool pooled = false;  // its categories fitted as one (independent_marks.hpp)
   const auto pseudo_likelihood = [&](const geometry::Scene& scene, int repeats) {
     FitOptions fit_options = repeated_options(scene, repeats, options.fit);
-    fit_options.saturation = fit_options.saturation && !options.tile;
+    // A saturated band counts an element's neighbours of every category: not one to split.
+    fit_options.saturation = fit_options.saturation && !options.tile && !pooled;
     FitResult result = fit_shape_process(scene, fit_options);
     // A pseudo-likelihood without a finite maximum (a packed exemplar) has standard errors that
     // say nothing; where the maximum likelihood follows, it judges the strengths instead.
@@ -158,7 +160,6 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
                                         std::move(mpl), *options.likelihood);
   };
   ExemplarFit fit;
-  int centres = -1;  // the hidden category of a clustered pattern's centres
   std::vector<std::string> tile_notes;
   if (options.tile && exemplar.dimension == 2) {
     TileFit tile = fit_tile(exemplar, pseudo_likelihood, maximum_likelihood);
@@ -168,17 +169,29 @@ ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptio
     tile_notes = std::move(tile.notes);
   } else {
     fit.exemplar = exemplar;
-    centres = add_cluster_centres(fit.exemplar, options, tile_notes);
-    fit.result = maximum_likelihood(fit.exemplar, 1, pseudo_likelihood(fit.exemplar, 1));
+    const ClusterFit clusters = exemplar_clusters(exemplar, options, tile_notes);
+    pooled = clusters.clustered && exemplar.categories.size() > 1;
+    geometry::Scene scene = pooled ? pool_categories(exemplar) : geometry::Scene{};
+    geometry::Scene& fitted = pooled ? scene : fit.exemplar;
+    if (clusters.clustered) centres = add_centres(fitted, clusters.centres);
+    fit.result = maximum_likelihood(fitted, 1, pseudo_likelihood(fitted, 1));
     if (centres >= 0) {
       fit.result.model.categories[static_cast<std::size_t>(centres)].hidden = true;
       children_given_centres(fit.result.model, centres, tile_notes);
+    }
+    if (pooled) {
+      split_into_marks(fit.result.model, 0, exemplar);
+      centres = add_centres(fit.exemplar, clusters.centres);
+      tile_notes.push_back("clusters: the " + std::to_string(exemplar.categories.size()) +
+                           " categories fitted as one, then split in their shares (independent "
+                           "marks): each cluster's mix of categories is not modelled");
     }
   }
   for (const std::string& note : fit.exemplar.notes) fit.result.notes.push_back("reading: " + note);
   if (!fit.result.model.fit) fit.result.model.fit.emplace();
   model::FitRecord& record = *fit.result.model.fit;
   if (fit.repeats > 1) record.tile_repeats = fit.repeats;
+  if (centres >= 0) record.elements = static_cast<long long>(exemplar.elements.size());
   for (const std::string& note : tile_notes) {
     record.notes.push_back(note);
     fit.result.notes.push_back(note);

@@ -34,8 +34,9 @@ struct ExemplarFitOptions {
   // not for a packed exemplar (a pseudo-likelihood without a finite maximum) that the maximum
   // likelihood then fits.
   bool prune_neutral = true;
-  // A clustered 2D point pattern of one category (not a tile) gains its clusters' centres as a
-  // hidden category that its points are anchored to (cluster_centres.hpp).
+  // A clustered 2D point pattern (not a tile) gains its clusters' centres as a hidden category
+  // that its points are anchored to (cluster_centres.hpp); one of several categories is fitted
+  // with them pooled, as independent marks (independent_marks.hpp).
   bool clusters = true;
   // The exemplar is one period of a seamless 2D repeat (read with --tile): fitted with periodic
   // edges, on a repeat of it where needed.

@@ -75,6 +75,21 @@ PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
   return out;
 }
 
+void reduce_to_hard_core(model::PairInteraction& pair) {
+  if (pair.axes.empty()) return;
+  // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
+  model::AxisParameters axis = pair.axes.front();
+  for (const model::AxisParameters& a : pair.axes)
+    axis.thresholds.front() = std::min(axis.thresholds.front(), a.thresholds.front());
+  axis.thresholds.resize(1);
+  axis.gammas.clear();
+  axis.gamma_standard_errors.clear();
+  axis.status.clear();
+  axis.observed_pairs.clear();
+  axis.saturations.clear();
+  pair.axes = {axis};
+}
+
 std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, double z) {
   std::vector<std::string> notes;
   for (model::PairInteraction& pair : model.interactions) {
@@ -95,16 +110,7 @@ std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, do
         model.categories[static_cast<std::size_t>(pair.first)].anchor == pair.second ||
         model.categories[static_cast<std::size_t>(pair.second)].anchor == pair.first;
     if (!neutral || anchor_pair || pair.axes.front().gammas.empty()) continue;
-    // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
-    model::AxisParameters axis = pair.axes.front();
-    for (const model::AxisParameters& a : pair.axes)
-      axis.thresholds.front() = std::min(axis.thresholds.front(), a.thresholds.front());
-    axis.thresholds.resize(1);
-    axis.gammas.clear();
-    axis.gamma_standard_errors.clear();
-    axis.status.clear();
-    axis.observed_pairs.clear();
-    pair.axes = {axis};
+    reduce_to_hard_core(pair);
     std::ostringstream text;
     text << "hard core only: no γ of the pseudo-likelihood differs from 1 by more than " << z
          << " standard errors (at most " << std::setprecision(2) << largest << ")";

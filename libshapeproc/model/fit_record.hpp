@@ -100,7 +100,8 @@ struct ModelEdit {
 };
 
 struct FitRecord {
-  // The exemplar's window (its dimension's coordinates) and its elements.
+  // The exemplar's window (its dimension's coordinates) and its elements (those drawn: not the
+  // hidden ones the fit adds, such as clusters' centres).
   std::vector<double> window_min, window_max;
   long long elements = 0;
   std::string edge;  // the edge treatment's name
