@@ -9,10 +9,20 @@
 // InternalError or any other exception is an internal failure (exit code 1).
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace shapeproc::core {
+
+// Messages of InputError and UsageError may name an option of the call as {name}: the name of the
+// field or parameter that holds it ({window}, {category_by}). what() shows the name itself; a
+// caller that knows its users by other names (the command line: flags) shows them with `shown`.
+using OptionNamer = std::function<std::string(std::string_view name)>;
+
+// `text` with every {name} (lower case letters and _) replaced by namer(name); other text as it is.
+std::string name_options(std::string_view text, const OptionNamer& namer);
 
 // A problem in an input file. what() reads "FILE:LINE: MESSAGE", or "FILE: MESSAGE" when the
 // line is unknown (line 0).
@@ -21,16 +31,24 @@ class InputError : public std::runtime_error {
   InputError(std::string file, int line, const std::string& message);
   const std::string& file() const { return file_; }
   int line() const { return line_; }
+  // what(), its options named by `namer`.
+  std::string shown(const OptionNamer& namer) const;
 
  private:
   std::string file_;
   int line_;
+  std::string message_;  // with its {name} marks
 };
 
 // A bad option value or combination, independent of any file's contents.
 class UsageError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& message);
+  // what(), its options named by `namer`.
+  std::string shown(const OptionNamer& namer) const;
+
+ private:
+  std::string message_;  // with its {name} marks
 };
 
 // A library function's argument outside its domain. what() reads "FUNCTION: MESSAGE".

@@ -30,7 +30,7 @@ sample::SamplerOptions output_sampler_options(const model::ShapeProcessModel& mo
   if (options.compression.enabled() && options.iterations > 0) {
     if (options.iterations < 8)
       throw core::UsageError(
-          "--iterations: this model's outputs start with the compressing burn-in (its fit "
+          "{iterations}: this model's outputs start with the compressing burn-in (its fit "
           "found a packed exemplar), which needs at least 8 steps");
     options.compression.release_steps = options.iterations / 4;
   }

@@ -87,12 +87,12 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
     throw core::InputError(file_name, 1, "a radius column makes discs, which are 2D: drop z");
   if (!options.window) {
     throw core::InputError(file_name, 0,
-                           std::string("a CSV point pattern needs --window xmin,xmax,ymin,ymax") +
+                           std::string("a CSV point pattern needs {window} xmin,xmax,ymin,ymax") +
                                (dimension == 3 ? ",zmin,zmax" : ""));
   }
   if (options.window->dimension != dimension) {
     throw core::InputError(file_name, 0,
-                           "the points are " + std::to_string(dimension) + "D but --window is " +
+                           "the points are " + std::to_string(dimension) + "D but {window} is " +
                                std::to_string(options.window->dimension) + "D");
   }
   geometry::Scene scene;
@@ -151,7 +151,7 @@ geometry::Scene parse_csv_points(std::string_view text, const std::string& file_
     const geometry::Vec3& p = element.position;
     const geometry::Box3& w = scene.window;
     if ((p.array() < w.min().array()).any() || (p.array() > w.max().array()).any()) {
-      throw core::InputError(file_name, line_number, "the point lies outside --window");
+      throw core::InputError(file_name, line_number, "the point lies outside {window}");
     }
     scene.elements.push_back(element);
   }

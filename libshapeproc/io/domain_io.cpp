@@ -40,7 +40,7 @@ geometry::Raster read_domain_mask(const std::string& path) {
   const std::string extension = extension_of(path);
   if (extension == "png") return read_grayscale_png(path);
   if (extension != "svg")
-    throw core::UsageError("--domain: expected an .svg (filled shapes) or a .png mask, got '" +
+    throw core::UsageError("{domain}: expected an .svg (filled shapes) or a .png mask, got '" +
                            path + "'");
   const geometry::Scene shapes = read_scene(path, {});
   if (shapes.dimension != 2 || shapes.elements.empty())
@@ -64,16 +64,16 @@ geometry::Domain read_domain(const DomainFiles& files, int dimension) {
     std::string given;
     for (std::size_t i = 0; i < sizes.size(); ++i)
       given += (i ? "," : "") + core::format_number(sizes[i]);
-    throw core::UsageError("--size: expected " + std::string(dimension == 2 ? "W,H" : "W,H,D") +
+    throw core::UsageError("{size}: expected " + std::string(dimension == 2 ? "W,H" : "W,H,D") +
                            " (positive) for a " + std::to_string(dimension) + "D model, got '" +
                            given + "'");
   }
   if (dimension != 2 && (!files.mask.empty() || !files.intensity.empty())) {
-    throw core::UsageError("--domain and --intensity are for 2D models");
+    throw core::UsageError("{domain} and {intensity} are for 2D models");
   }
   if (files.boundary == "torus" && !files.mask.empty()) {
     throw core::UsageError(
-        "--boundary torus needs a rectangular domain: drop --domain or use --boundary open");
+        "{boundary}=torus needs a rectangular domain: drop {domain} or use {boundary}=open");
   }
   const geometry::Boundary boundary =
       files.boundary.empty()

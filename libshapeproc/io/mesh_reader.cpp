@@ -255,7 +255,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
     throw core::InputError(name, 0, "the file is empty");
   if (!std::ifstream(file)) throw core::InputError(name, 0, "cannot open the file for reading");
   if (options.mesh_split == MeshSplit::groups && ext != "obj") {
-    throw core::UsageError("--split groups needs an OBJ file, got " + name);
+    throw core::UsageError("{mesh_split}=groups needs an OBJ file, got " + name);
   }
   check_mesh_header(file);
   const MeshTriangles mesh = read_triangles(name, ext);
@@ -267,7 +267,7 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
       elements_of_triangles(file, name, mesh, options, element_names);
 
   if (options.window && options.window->dimension != 3)
-    throw core::UsageError("--window for a mesh needs six numbers (x, y and z ranges)");
+    throw core::UsageError("{window} for a mesh needs six numbers (x, y and z ranges)");
   const geometry::Box3 window = options.window ? options.window->box : box;
   // A tile: pieces cut by the window's faces join their counterparts across the opposite faces,
   // each moved by whole periods to make its element whole (mesh_tile_seams.hpp).
@@ -293,17 +293,17 @@ geometry::Scene read_mesh_scene(const std::filesystem::path& file, const ReaderO
   scene.units = "1";
   add_elements(mesh, element_of_triangle, element_names, periods_of_triangle, window, scene);
   if (seams.joined_pieces > 0)
-    scene.notes.push_back("--tile: " + std::to_string(seams.joined_pieces) +
+    scene.notes.push_back("tile: " + std::to_string(seams.joined_pieces) +
                           " pieces cut by the window's faces joined their counterparts across "
                           "them into whole elements");
   if (seams.wraps)
     scene.notes.push_back(
-        "--tile: a motif meets itself around the repeat; it is kept as one "
+        "tile: a motif meets itself around the repeat; it is kept as one "
         "element, unwrapped as far as it first joined");
   scene.window = window;
   const geometry::Vec3 sizes = scene.window.sizes();
   if (!(sizes.minCoeff() > 0.0)) {
-    throw core::InputError(name, 0, "the window has zero size (a flat scene): give --window");
+    throw core::InputError(name, 0, "the window has zero size (a flat scene): give {window}");
   }
   return scene;
 }

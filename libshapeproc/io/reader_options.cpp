@@ -22,7 +22,7 @@ CategoryRule CategoryRule::parse(const std::string& text) {
     rule.attribute = text.substr(5);
   } else {
     throw core::UsageError(
-        "--category-by: expected none, fill, stroke, class, layer or attr:NAME, got '" + text +
+        "{category_by}: expected none, fill, stroke, class, layer or attr:NAME, got '" + text +
         "'");
   }
   return rule;
@@ -49,7 +49,7 @@ std::string CategoryRule::to_string() const {
 WindowOption WindowOption::parse(const std::string& text) {
   const auto values = parse_number_list(text);
   if (!values || (values->size() != 4 && values->size() != 6)) {
-    throw core::UsageError("--window: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text +
+    throw core::UsageError("{window}: expected xmin,xmax,ymin,ymax[,zmin,zmax], got '" + text +
                            "'");
   }
   const auto& v = *values;
@@ -60,7 +60,7 @@ WindowOption WindowOption::parse(const std::string& text) {
   const char* axes = "xyz";
   for (int axis = 0; axis < window.dimension; ++axis) {
     if (!(v[2 * axis] < v[2 * axis + 1])) {
-      throw core::UsageError(std::string("--window: ") + axes[axis] + "min must be below " +
+      throw core::UsageError(std::string("{window}: ") + axes[axis] + "min must be below " +
                              axes[axis] + "max, got '" + text + "'");
     }
   }

@@ -348,7 +348,7 @@ void SvgReader::note_groups_of_many_pieces() {
   if (pieces >= 8 && pieces >= 4 * elements) {
     scene_.notes.push_back(std::to_string(elements) + " groups hold " + std::to_string(pieces) +
                            " separate pieces of ink: if those are the drawing's elements, try "
-                           "--elements visual");
+                           "elements=visual");
   }
 }
 
@@ -367,8 +367,8 @@ void SvgReader::regroup_as_seen() {
   if (rule_ == ElementRule::visual && subpaths >= 8 && elements * 8 <= subpaths) {
     regrouped.scene.notes.push_back(
         std::to_string(subpaths) + " subpaths formed " + std::to_string(elements) +
-        " elements as seen: if the drawing's elements are smaller, try --nested separate or "
-        "--elements subpaths");
+        " elements as seen: if the drawing's elements are smaller, try nested_separate or "
+        "elements=subpaths");
   }
   // A file of a few paths that read as seen makes a few elements more or fewer: likely one path
   // per element, with pieces of ink the reader sees apart (or joined).
@@ -376,7 +376,7 @@ void SvgReader::regroup_as_seen() {
       elements <= 2 * drawn) {
     regrouped.scene.notes.push_back(
         "the file draws " + std::to_string(drawn) + " shapes, read as seen they make " +
-        std::to_string(elements) + " elements: if each shape is one element, try --elements paths");
+        std::to_string(elements) + " elements: if each shape is one element, try elements=paths");
   }
   scene_ = std::move(regrouped.scene);
 }

@@ -63,6 +63,20 @@ TEST(Assert, ThrowsAnInternalErrorNamingFileLineAndCondition) {
   EXPECT_THROW(SHAPEPROC_ASSERT(false, ""), InternalError);
 }
 
+// Options named as {name} read as the name itself in what(), and as the caller names them in
+// shown(); braces around anything else are left as they are.
+TEST(OptionNames, ReadAsTheLibraryNamesThemOrAsTheCallerDoes) {
+  const auto flag = [](std::string_view name) { return "--" + std::string(name); };
+  EXPECT_EQ(name_options("{window}: expected 4 numbers, {x} {Y} {} {a_b", flag),
+            "--window: expected 4 numbers, --x {Y} {} {a_b");
+  const UsageError usage("{size} and {boundary}=torus");
+  EXPECT_STREQ(usage.what(), "size and boundary=torus");
+  EXPECT_EQ(usage.shown(flag), "--size and --boundary=torus");
+  const InputError input("p.csv", 2, "outside {window}");
+  EXPECT_STREQ(input.what(), "p.csv:2: outside window");
+  EXPECT_EQ(input.shown(flag), "p.csv:2: outside --window");
+}
+
 TEST(InputError, ReadsFileLineMessage) {
   EXPECT_STREQ(InputError("a.svg", 3, "bad path").what(), "a.svg:3: bad path");
   EXPECT_STREQ(InputError("a.svg", 0, "empty").what(), "a.svg: empty");

@@ -73,7 +73,7 @@ TEST_P(CsvBadInput, ThrowsWithLine) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, CsvBadInput,
     ::testing::Values(BadCsv{"empty", "", "0,1,0,1", "empty", 0},
-                      BadCsv{"no_window", "x,y\n1,1\n", "", "--window", 0},
+                      BadCsv{"no_window", "x,y\n1,1\n", "", "needs window", 0},
                       BadCsv{"wrong_dimension", "x,y,z\n1,1,1\n", "0,2,0,2", "3D", 0},
                       BadCsv{"no_x", "a,y\n1,1\n", "0,2,0,2", "x and y", 1},
                       BadCsv{"bad_number", "x,y\n1,1\n1,abc\n", "0,2,0,2", "got 'abc'", 3},

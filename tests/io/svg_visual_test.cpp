@@ -189,7 +189,7 @@ TEST(VisualElements, ReaderNotesWhenSubpathsAndElementsDisagree) {
       read(R"(<path fill-rule="evenodd" d="M5 5h90v90h-90z M10 10h80v80h-80z)" + dots + R"("/>)");
   ASSERT_EQ(seen.elements.size(), 1u);
   ASSERT_EQ(seen.notes.size(), 1u);
-  EXPECT_NE(seen.notes[0].find("--nested separate"), std::string::npos);
+  EXPECT_NE(seen.notes[0].find("nested_separate"), std::string::npos);
   // The reverse: two groups holding 4 separate squares each are two elements by the groups
   // rule (a single group would be a wrapper that only carries style).
   std::string squares[2];
@@ -199,7 +199,7 @@ TEST(VisualElements, ReaderNotesWhenSubpathsAndElementsDisagree) {
   const Scene grouped = read("<g>" + squares[0] + "</g><g>" + squares[1] + "</g>");
   ASSERT_EQ(grouped.elements.size(), 2u);
   ASSERT_EQ(grouped.notes.size(), 1u);
-  EXPECT_NE(grouped.notes[0].find("--elements visual"), std::string::npos);
+  EXPECT_NE(grouped.notes[0].find("elements=visual"), std::string::npos);
 }
 
 TEST(VisualElements, MotifWrappingAroundTheTileIsNoted) {
@@ -239,7 +239,7 @@ TEST(VisualElements, PiecesAHairApartAtASeamAreOneElement) {
   const Scene apart = read(tiled_three_by_three(1.0), false, false, "0 0 120 120");
   EXPECT_EQ(apart.elements.size(), 21u);
   ASSERT_EQ(apart.notes.size(), 1u);
-  EXPECT_NE(apart.notes[0].find("--elements paths"), std::string::npos) << apart.notes[0];
+  EXPECT_NE(apart.notes[0].find("elements=paths"), std::string::npos) << apart.notes[0];
   // Shapes meeting at a corner a hair's breadth apart stay two: only outlines that run side by
   // side join.
   EXPECT_EQ(count(R"(<rect x="10" y="10" width="10" height="10"/>)"

@@ -127,10 +127,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   try {
     return action ? action(out) : 2;
   } catch (const core::InputError& e) {
-    err << "shapeproc: " << one_line(e.what()) << '\n';
+    err << "shapeproc: " << one_line(e.shown(flag_for)) << '\n';
     return 2;
   } catch (const core::UsageError& e) {
-    err << "shapeproc: " << one_line(e.what()) << '\n';
+    err << "shapeproc: " << one_line(e.shown(flag_for)) << '\n';
     return 2;
   } catch (const core::ArgumentError& e) {
     err << "shapeproc: " << one_line(e.what()) << '\n';

@@ -203,4 +203,11 @@ std::string one_line(std::string text) {
   return core::printable(text, 600);
 }
 
+std::string flag_for(std::string_view option) {
+  if (option == "mesh_split") return "--split";
+  std::string flag = "--" + std::string(option);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
 }  // namespace shapeproc::cli

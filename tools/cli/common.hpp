@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "libshapeproc/core/resource_budget.hpp"
@@ -88,5 +89,9 @@ io::Provenance make_provenance(const std::string& command,
 // An error message on one line, safe for a terminal and of bounded length: a bad value of 5 MB
 // or one holding escape sequences is not echoed whole.
 std::string one_line(std::string text);
+
+// The flag of a library option named in an error message (core::name_options): "{window}" is
+// --window, "{category_by}" --category-by, "{mesh_split}" --split.
+std::string flag_for(std::string_view option);
 
 }  // namespace shapeproc::cli

@@ -93,9 +93,9 @@ std::string run_one_method(SynthesizeArguments args, const std::vector<std::stri
   } catch (const core::Cancelled&) {
     throw;
   } catch (const core::InputError& e) {
-    return one_line(e.what());
+    return one_line(e.shown(flag_for));
   } catch (const core::UsageError& e) {
-    return one_line(e.what());
+    return one_line(e.shown(flag_for));
   } catch (const core::ArgumentError& e) {
     return one_line(e.what());
   } catch (const std::exception& e) {
