@@ -225,8 +225,27 @@ def discs_csv():
     write_csv("discs.csv", [(x, y, "disc", r) for x, y, r in discs], radius=True)
 
 
+def rings():
+    """Points on rings (a structured pattern, beyond pairwise interactions): 14 rings of 20
+    points, radii 4-6, centres at least 16 apart, 100 x 100."""
+    rng = random.Random(11)
+    centres = []
+    while len(centres) < 14:
+        c = (rng.uniform(10, 90), rng.uniform(10, 90))
+        if all(math.hypot(c[0] - d[0], c[1] - d[1]) > 16 for d in centres):
+            centres.append(c)
+    rows = []
+    for cx, cy in centres:
+        r, phase = rng.uniform(4, 6), rng.uniform(0, 2 * math.pi)
+        for k in range(20):
+            a = phase + 2 * math.pi * k / 20 + rng.gauss(0, 0.05)
+            rho = r + rng.gauss(0, 0.2)
+            rows.append((cx + rho * math.cos(a), cy + rho * math.sin(a), "point"))
+    write_csv("rings.csv", rows)
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     for make in (forest, rims, edge_clusters, many_sizes, matern_hard_core, strauss, thomas,
-                 matern_cluster_classes, cross_attraction, discs_csv):
+                 matern_cluster_classes, cross_attraction, discs_csv, rings):
         make()
