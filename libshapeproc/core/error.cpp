@@ -21,7 +21,8 @@ std::string name_options(std::string_view text, const OptionNamer& namer) {
     const std::size_t open = text.find('{', at);
     if (open == std::string_view::npos) break;
     std::size_t end = open + 1;
-    while (end < text.size() && (std::islower(static_cast<unsigned char>(text[end])) || text[end] == '_'))
+    while (end < text.size() &&
+           (std::islower(static_cast<unsigned char>(text[end])) || text[end] == '_'))
       ++end;
     out.append(text.substr(at, open - at));
     if (end < text.size() && text[end] == '}' && end > open + 1) {

@@ -46,9 +46,12 @@ void split_into_marks(model::ShapeProcessModel& model, int pooled, const geometr
   const std::vector<std::size_t> counts = geometry::category_counts(marked);
   const double total = static_cast<double>(marked.elements.size());
   const std::vector<std::vector<int>> to = new_indices(old_count, pooled, marks);
-  const auto share = [&](int m) { return static_cast<double>(counts[static_cast<std::size_t>(m)]) / total; };
+  const auto share = [&](int m) {
+    return static_cast<double>(counts[static_cast<std::size_t>(m)]) / total;
+  };
 
-  std::vector<model::CategoryParameters> categories(static_cast<std::size_t>(marks + old_count - 1));
+  std::vector<model::CategoryParameters> categories(
+      static_cast<std::size_t>(marks + old_count - 1));
   for (int c = 0; c < old_count; ++c) {
     const model::CategoryParameters& old = model.categories[static_cast<std::size_t>(c)];
     for (int n : to[static_cast<std::size_t>(c)]) {

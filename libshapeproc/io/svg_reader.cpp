@@ -374,9 +374,9 @@ void SvgReader::regroup_as_seen() {
   // per element, with pieces of ink the reader sees apart (or joined).
   if (rule_ == ElementRule::visual && drawn >= 4 && elements != drawn && 2 * elements >= drawn &&
       elements <= 2 * drawn) {
-    regrouped.scene.notes.push_back(
-        "the file draws " + std::to_string(drawn) + " shapes, read as seen they make " +
-        std::to_string(elements) + " elements: if each shape is one element, try elements=paths");
+    regrouped.scene.notes.push_back("the file draws " + std::to_string(drawn) +
+                                    " shapes, read as seen they make " + std::to_string(elements) +
+                                    " elements: if each shape is one element, try elements=paths");
   }
   scene_ = std::move(regrouped.scene);
 }

@@ -46,8 +46,4 @@ core::ResourceEstimate estimate_output(const model::ShapeProcessModel& model,
   return with_bytes(estimate, chains_at_once);
 }
 
-bool falls_short(double count, double wanted) {
-  return wanted > 0 && count < 0.9 * wanted && wanted - count > 3.0 * std::sqrt(wanted);
-}
-
 }  // namespace shapeproc::sample

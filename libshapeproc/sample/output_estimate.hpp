@@ -23,11 +23,4 @@ core::ResourceEstimate estimate_output(const model::ShapeProcessModel& model,
                                        const geometry::Domain& domain,
                                        std::optional<double> exemplar_density, int chains_at_once);
 
-// Whether an output of `count` elements falls short of the `wanted` count its exemplar's density
-// gives by more than chance: below 0.9 of it and more than three Poisson standard errors
-// (3 √wanted) below it. A small output of a loose exemplar varies by that much (two-kinds at 136
-// wanted: 120 is 1.4 standard errors short); a model that cannot fill its exemplar's packing from
-// empty falls far shorter (happy-intersection: 251 of 405).
-bool falls_short(double count, double wanted);
-
 }  // namespace shapeproc::sample

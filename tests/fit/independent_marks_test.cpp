@@ -124,8 +124,8 @@ TEST(IndependentMarks, AClusteredExemplarOfSeveralCategoriesKeepsTheirShares) {
       const double r = 2.0 * std::sqrt(-2 * std::log(1 - random.uniform()));
       const double a = 2 * 3.14159265358979 * random.uniform();
       const double u = random.uniform();
-      exemplar.elements.push_back(
-          {0, u < 1.0 / 6 ? 0 : (u < 0.5 ? 1 : 2), centre + Vec3(r * std::cos(a), r * std::sin(a), 0)});
+      exemplar.elements.push_back({0, u < 1.0 / 6 ? 0 : (u < 0.5 ? 1 : 2),
+                                   centre + Vec3(r * std::cos(a), r * std::sin(a), 0)});
     }
   }
   ExemplarFitOptions options;

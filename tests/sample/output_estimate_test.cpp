@@ -28,18 +28,5 @@ TEST(OutputEstimate, WithoutARecordedDensityThePoissonCountBoundsIt) {
   EXPECT_DOUBLE_EQ(estimate_output(model, domain, 0.001, 1).elements, 10.0);
 }
 
-// Short of the exemplar's count by more than chance: below 0.9 of it and more than 3 √wanted
-// below it. 120 of 136 is neither by chance (3 √136 = 35); 251 of 405 is; 7 of 16 is below 0.9
-// but within 3 √16 = 12; nothing is short of an empty exemplar.
-TEST(OutputEstimate, AnOutputFallsShortOnlyBeyondChance) {
-  EXPECT_FALSE(falls_short(120, 136));
-  EXPECT_TRUE(falls_short(100, 136));
-  EXPECT_TRUE(falls_short(251, 405));
-  EXPECT_FALSE(falls_short(7, 16));
-  EXPECT_TRUE(falls_short(3, 16));
-  EXPECT_FALSE(falls_short(0, 0));
-  EXPECT_FALSE(falls_short(370, 405));  // 0.91 of it
-}
-
 }  // namespace
 }  // namespace shapeproc::sample

@@ -10,7 +10,7 @@
 
 #include "libshapeproc/io/png_reader.hpp"
 #include "libshapeproc/render/raster.hpp"
-#include "libshapeproc/sample/output_estimate.hpp"
+#include "libshapeproc/synthesis/output_check.hpp"
 #include "tests/test_support.hpp"
 #include "tests/tools/cli_test_support.hpp"
 
@@ -393,7 +393,7 @@ TEST(CliSynthesize, StartsEmptyUnlessTheExemplarIsAskedFor) {
   EXPECT_NE(sought.find("[&quot;near_birth_share&quot;,&quot;0.5&quot;]"), std::string::npos);
   EXPECT_GT(sought_count, 0);
   EXPECT_EQ(sought_said.find("warning: the chain reached ") != std::string::npos,
-            sample::falls_short(sought_count, 16))
+            synthesis::falls_short(sought_count, 16))
       << sought_said;
   const auto [held, held_count, held_said] = run("held.svg", {"--start", "exemplar"});
   EXPECT_NE(held.find("[&quot;start&quot;,&quot;exemplar&quot;]"), std::string::npos);
@@ -452,7 +452,7 @@ TEST(CliFit, ATileIsRefittedOnARepeatThatHoldsItsInteractions) {
   EXPECT_GT(count, 8);
   EXPECT_LE(count, 32);
   EXPECT_EQ(synthesised.out.find("warning: the chain reached ") != std::string::npos,
-            sample::falls_short(count, 32))
+            synthesis::falls_short(count, 32))
       << synthesised.out;
   // The compressing burn-in needs a few steps of its own: fewer are refused, saying why.
   expect_one_line_error(run_cli({"sample", model, "-o", dir.file("few.svg").string(), "--size",

@@ -21,6 +21,7 @@
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/sample/output_estimate.hpp"
+#include "libshapeproc/synthesis/output_check.hpp"
 #include "libshapeproc/synthesis/run_chains.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
@@ -310,18 +311,8 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
       synthesis::run_chains(synthesizer, chains_options);
   bar.finish();
 
-  // An output its own chain emptied, run to its automatic stop, is nothing to write (a model
-  // whose chains either fill the domain or empty it, and this one emptied): said before any file
-  // is written. Given --iterations, the chain's state after them is what was asked for.
-  for (const synthesis::SynthesisResult& result : results) {
-    const double wanted = exemplar_density * result.scene.window_measure();
-    if (iterations <= 0 && result.scene.elements.empty() && wanted >= 1.0)
-      throw core::UsageError(
-          "chain " + std::to_string(result.record.chain) + " ended empty where the exemplar's " +
-          "density gives " + core::format_general(wanted, 4) +
-          " elements: the model's chains do not hold its exemplar's elements from empty; "
-          "nothing written");
-  }
+  // An emptied chain's output is nothing to write: refused before any file is written.
+  synthesis::refuse_emptied(results, exemplar_density, iterations <= 0);
 
   for (int c = 0; c < chains; ++c) {
     const synthesis::SynthesisResult& result = results[static_cast<std::size_t>(c)];
@@ -353,11 +344,12 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
           << result.record.steps << (sampler ? " steps" : " iterations")
           << "; the output may not be at equilibrium (give --iterations)\n";
     }
-    const double wanted = exemplar_density * result.scene.window_measure();
-    if (sample::falls_short(static_cast<double>(result.scene.elements.size()), wanted)) {
+    const synthesis::OutputCheck check =
+        synthesis::check_output(result, exemplar_density, iterations <= 0);
+    if (check.short_of_density) {
       out << "warning: the chain reached " << result.scene.elements.size() << " elements where "
-          << "the exemplar's density gives " << core::format_general(wanted, 4) << " (x"
-          << core::format_fixed(static_cast<double>(result.scene.elements.size()) / wanted, 2)
+          << "the exemplar's density gives " << core::format_general(check.wanted, 4) << " (x"
+          << core::format_fixed(check.ratio(), 2)
           << "): the model does not reach its exemplar's packing from empty\n";
     }
     out << "wrote " << file;
