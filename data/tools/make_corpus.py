@@ -244,8 +244,32 @@ def rings():
     write_csv("rings.csv", rows)
 
 
+def beds():
+    """Three crops in six rectangular beds (a segregated multi-class pattern): each bed one crop,
+    its points at least 2.2 apart, 213 points in 100 x 100."""
+    rng = random.Random(12)
+    plots = []
+    while len(plots) < 6:
+        w, h = rng.uniform(20, 35), rng.uniform(12, 20)
+        x, y = rng.uniform(2, 98 - w), rng.uniform(2, 98 - h)
+        if all(x + w + 4 < bx or bx + bw + 4 < x or y + h + 4 < by or by + bh + 4 < y
+               for bx, by, bw, bh, _ in plots):
+            plots.append((x, y, w, h, len(plots) % 3))
+    rows = []
+    for bx, by, bw, bh, crop in plots:
+        placed = 0
+        for _ in range(100000):
+            if placed == 36:
+                break
+            x, y = rng.uniform(bx, bx + bw), rng.uniform(by, by + bh)
+            if all(math.hypot(x - a, y - b) > 2.2 for a, b, _ in rows):
+                rows.append((x, y, "crop%d" % crop))
+                placed += 1
+    write_csv("beds.csv", rows[:213])
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     for make in (forest, rims, edge_clusters, many_sizes, matern_hard_core, strauss, thomas,
-                 matern_cluster_classes, cross_attraction, discs_csv, rings):
+                 matern_cluster_classes, cross_attraction, discs_csv, rings, beds):
         make()
