@@ -135,9 +135,12 @@ def main():
     os.makedirs(pictures, exist_ok=True)
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
+    # The output as the reader would type it: relative to the repository, or a placeholder.
+    out = os.path.abspath(args.out)
+    shown_out = os.path.relpath(out, ROOT) if out.startswith(ROOT + os.sep) else "OUT.md"
     shown = " ".join([f"--seeds {args.seeds}", f"--timeout {args.timeout:g}"]
                      + ([f"--only {args.only}"] if args.only else [])
-                     + [f"--tiles {os.path.relpath(t, ROOT)}" for t in args.tiles] + [args.out])
+                     + [f"--tiles {os.path.relpath(t, ROOT)}" for t in args.tiles] + [shown_out])
     lines = [
         "# The corpus: every exemplar, several seeds", "",
         f"Command: `python3 scripts/corpus_table.py {shown}` at commit {commit}, "
