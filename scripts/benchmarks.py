@@ -39,11 +39,17 @@ def run(program, repetitions, pattern):
     if pattern:
         command.append(f"--benchmark_filter={pattern}")
     out = subprocess.run(command, capture_output=True, text=True, check=True).stdout
-    runs = {}
+    runs, medians = {}, {}
     for b in json.loads(out)["benchmarks"]:
+        scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+        if b.get("run_type") == "aggregate":
+            # A benchmark that reports its aggregates only (its own repetitions): the median, with
+            # the coefficient of variation for the spread.
+            entry = medians.setdefault(b["run_name"], {})
+            entry[b.get("aggregate_name")] = (b["real_time"] * scale, b)
+            continue
         if b.get("run_type") != "iteration":
             continue
-        scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
         counters = {k: v for k, v in b.items() if k not in (
             "name", "family_index", "per_family_instance_index", "run_name", "run_type",
             "repetitions", "repetition_index", "threads", "iterations", "real_time", "cpu_time",
@@ -54,7 +60,17 @@ def run(program, repetitions, pattern):
     for name, values in runs.items():
         values.sort(key=lambda v: v[0])
         median = values[len(values) // 2]
-        table[name] = (median[0], values[0][0], values[-1][0], median[1])
+        table[name] = (median[0], f"{readable(values[0][0])} – {readable(values[-1][0])}",
+                       median[1])
+    for name, entry in medians.items():
+        if name in table or "median" not in entry:
+            continue
+        median, record = entry["median"]
+        cv = entry.get("cv", (None, {}))[1].get("real_time")
+        counters = {k: v for k, v in record.items() if isinstance(v, (int, float)) and k not in (
+            "family_index", "per_family_instance_index", "repetitions", "threads", "iterations",
+            "real_time", "cpu_time")}
+        table[name] = (median, "-" if cv is None else f"cv {100 * cv:.0f}%", counters)
     return table
 
 
@@ -84,9 +100,9 @@ def main():
         table = run(path, args.repetitions, args.filter)
         rows = [f"## {TITLES.get(program, program)}", "",
                 f"`build/benchmarks/{program}`", "",
-                "| benchmark | median | min – max | counters (median run) |", "|---|---|---|---|"]
-        for name, (median, low, high, counters) in table.items():
-            rows.append(f"| `{name}` | {readable(median)} | {readable(low)} – {readable(high)} | "
+                "| benchmark | median | min – max (or the coefficient of variation) | counters (median run) |", "|---|---|---|---|"]
+        for name, (median, range_text, counters) in table.items():
+            rows.append(f"| `{name}` | {readable(median)} | {range_text} | "
                         f"{counter_text(counters)} |")
         sections.append("\n".join(rows))
         print(f"{program}: {len(table)} benchmarks", flush=True)
@@ -102,7 +118,8 @@ def main():
         f"average {load_before:.2f} at the start and {load_after:.2f} at the end.", "",
         f"Each benchmark ran {args.repetitions} times (Google Benchmark repetitions); the table "
         "gives the median wall-clock time per iteration, the fastest and slowest repetition, and "
-        "the median run's counters. What each benchmark measures, and what its cost depends on: "
+        "the median run's counters; benchmarks that repeat themselves and report only their "
+        "aggregates give their coefficient of variation instead of the range. What each benchmark measures, and what its cost depends on: "
         "docs/performance.md.", ""]
     with open(args.out, "w") as f:
         f.write("\n".join(head + ["\n\n".join(sections)]) + "\n")
