@@ -11,13 +11,9 @@
 //   - an anchored category (fit/category_layers.hpp) is measured per base: its ratio over its
 //     base category's, since its count follows the bases' and its β sets how many each carries;
 //   - otherwise each category whose density is off by more than the tolerance has β_c multiplied
-//     by (exemplar density / chain density)^(1/e) (clamped to [1/8, 8]), e the elasticity of its
-//     count in β that the last step measured (1 on the first step, or where e is under 0.1): the
-//     counts' moment equation that the maximum likelihood solves, solved on the larger domain by
-//     secant steps in log β (a packed pattern's count moves far less than β); once a β too low
-//     and one too high are known, a step outside them halves that bracket in log β;
-//   - an over-dense category whose count moved by less than half the largest step of β
-//     (elasticity under 0.5 at β / 8) is held up by the attraction: every log γ > 0 is halved.
+//     by exemplar density / chain density (clamped to [1/8, 8]): the counts' moment equation that
+//     the maximum likelihood solves, solved on the larger domain by a few fixed-point steps; once
+//     a β too low and one too high are known, the next step halves that bracket in log β.
 // A check that never agrees keeps the β of its closest chain (by its worst category's ratio, in
 // log): a lattice whose crystal packs denser than its exemplar, say, has no β that gives the
 // exemplar's count. The record (model::CalibrationRecord) keeps the ratios before and after (the

@@ -123,10 +123,9 @@ struct FitDefaults {
   // Chains at most; β changes by at most this factor per round.
   int calibration_rounds = 5;
   double calibration_largest_step = 8.0;
-  // Over-dense categories whose count moved by less than this share of the largest β step (both
-  // in log) are held up by the attraction, which is then shrunk (every log γ > 0 halved): under
-  // a proportional law the share is 1, and amacrine's wide cross band gave 0.2. Smaller steps do
-  // not judge: a packed pattern's count moves little with them (cells).
+  // Over-dense categories whose count moved by less than this share of a β step (both in log)
+  // are held up by the attraction, which is then shrunk (every log γ > 0 halved): under a
+  // proportional law the share is 1, and amacrine's wide cross band gave 0.2.
   double calibration_least_elasticity = 0.5;
 };
 
