@@ -21,9 +21,6 @@ namespace {
 
 constexpr double kLargestStep = kFitDefaults.calibration_largest_step;
 constexpr double kLeastElasticity = kFitDefaults.calibration_least_elasticity;
-// Below this elasticity a secant step is noise over noise (two chains' ratios both near 1); the
-// step is then proportional.
-constexpr double kLeastSecantElasticity = 0.1;
 // Observations a chain's mean needs for its own Monte Carlo error to be estimated.
 constexpr std::size_t kLeastObservations = 20;
 
@@ -142,23 +139,10 @@ bool has_attraction(const model::ShapeProcessModel& model) {
   return false;
 }
 
-// The elasticity of category c's count in β over the last step: the change of log count over the
-// change of log β; NaN when there was no step.
-double elasticity(const model::ShapeProcessModel& model, const Step& previous, const Chain& chain,
-                  std::size_t c) {
-  if (previous.beta.size() <= c || !(previous.ratio[c] > 0) || !(chain.ratio[c] > 0))
-    return std::numeric_limits<double>::quiet_NaN();
-  const double step = std::log(model.categories[c].beta / previous.beta[c]);
-  if (!(std::abs(step) > 1e-9)) return std::numeric_limits<double>::quiet_NaN();
-  return std::log(chain.ratio[c] / previous.ratio[c]) / step;
-}
-
 // Whether the densities are too high and β does not bring them down: every category over the
-// tolerance whose β the last step lowered by the largest factor moved by less than
-// kLeastElasticity of that step (in log), as counts that the attraction holds up do (amacrine:
-// β × 0.26 took 2.6 times the exemplar's count to 1.97 times it). The attraction is then what is
-// wrong. A packed pattern's count also moves little with a small step of β (its hard cores leave
-// little room), so smaller steps, secants at the measured elasticity, come first.
+// tolerance whose β the last step lowered moved by less than kLeastElasticity of that step (in
+// log), as counts that the attraction holds up do (amacrine: β × 0.26 took 2.6 times the
+// exemplar's count to 1.97 times it). The attraction is then what is wrong.
 bool held_by_attraction(const model::ShapeProcessModel& model, const Step& previous,
                         const Chain& chain) {
   if (previous.beta.empty() || !has_attraction(model)) return false;
@@ -167,11 +151,9 @@ bool held_by_attraction(const model::ShapeProcessModel& model, const Step& previ
   for (std::size_t c = 0; c < ratio.size(); ++c) {
     if (ratio[c] <= 1.0 || category_agrees(chain, c)) continue;
     over = true;
-    // Only the largest step tells: a packed pattern's count moves little with a small one.
-    if (!(std::log(previous.beta[c] / model.categories[c].beta) >= std::log(kLargestStep) - 1e-9))
-      return false;
-    const double e = elasticity(model, previous, chain, c);
-    if (!std::isfinite(e) || e >= kLeastElasticity) return false;
+    const double step = std::log(previous.beta[c] / model.categories[c].beta);
+    if (!(step > 0) || !(previous.ratio[c] > 0) || !(ratio[c] > 0)) return false;
+    if (std::log(previous.ratio[c] / ratio[c]) >= kLeastElasticity * step) return false;
   }
   return over;
 }
@@ -253,7 +235,6 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
       previous = {};
       continue;
     }
-    const Step last = previous;
     previous.ratio = chain.ratio;
     previous.beta.clear();
     for (const model::CategoryParameters& c : model.categories) previous.beta.push_back(c.beta);
@@ -267,14 +248,8 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
       if (r < 1) low[c] = std::max(low[c], beta);
       if (r > 1) high[c] = std::min(high[c], beta);
       // None at all says only that β is far too low: the largest step, squared.
-      // The step that the last one's elasticity says reaches the count (a secant in log β):
-      // a packed pattern's count moves less than β, so a proportional step falls short.
-      const double e = elasticity(model, last, chain, c);
-      const double exponent =
-          r > 0 && std::isfinite(e) && e > kLeastSecantElasticity ? 1.0 / e : 1.0;
-      double next =
-          beta * (r > 0 ? std::clamp(std::pow(r, -exponent), 1.0 / kLargestStep, kLargestStep)
-                        : kLargestStep * kLargestStep);
+      double next = beta * (r > 0 ? std::clamp(1.0 / r, 1.0 / kLargestStep, kLargestStep)
+                                  : kLargestStep * kLargestStep);
       if (low[c] > 0 && std::isfinite(high[c]) && !(next > low[c] && next < high[c]))
         next = std::sqrt(low[c] * high[c]);
       record.beta_factor[c] *= next / beta;
