@@ -35,15 +35,14 @@ void check_budget(const ResourceEstimate& estimate, const ResourceBudget& budget
                                   ? "about " + format_general(estimate.elements, 3)
                                   : std::string("an unbounded number of");
     throw UsageError(what + " would hold " + count + " elements (" + estimate.basis +
-                     "), more than " + budget.elements_name + " " +
-                     format_general(budget.max_elements, 6) + "; lower " + lower + " or raise " +
-                     budget.elements_name);
+                     "), more than {max_elements} " + format_general(budget.max_elements, 6) +
+                     "; lower " + lower + " or raise {max_elements}");
   }
   if (!(estimate.bytes <= budget.max_memory)) {
     throw UsageError(what + " would need about " + format_bytes(estimate.bytes) + " of memory (" +
-                     estimate.basis + "), more than " + budget.memory_name + " " +
-                     format_bytes(budget.max_memory) + "; lower " + lower + " or raise " +
-                     budget.memory_name);
+                     estimate.basis + "), more than {max_memory} " +
+                     format_bytes(budget.max_memory) + "; lower " + lower +
+                     " or raise {max_memory}");
   }
 }
 

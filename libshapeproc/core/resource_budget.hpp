@@ -10,10 +10,6 @@ namespace shapeproc::core {
 struct ResourceBudget {
   double max_elements = 2e6;             // elements in one output (or one exemplar to fit)
   double max_memory = default_memory();  // bytes
-  // What a refusal calls the two limits: these fields' names, or a caller's own (the command
-  // line names its flags).
-  std::string elements_name = "max_elements";
-  std::string memory_name = "max_memory";
 
   // 16 GiB, or three quarters of the machine's memory when it has less.
   static double default_memory();

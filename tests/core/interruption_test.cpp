@@ -57,14 +57,16 @@ TEST(ResourceBudget, RefusesWithTheEstimateItsBasisAndTheLimit) {
                  "the output would hold about 2e+06 elements (density times area), more than "
                  "max_elements 1000; lower size or raise max_elements");
   }
-  budget.elements_name = "--max-elements";  // the command line names its flags
+  // The command line names its flags (core::name_options).
   try {
     check_budget({2e6, 10, "density times area"}, budget, "the output", "--size");
     FAIL();
   } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("more than --max-elements 1000; lower --size or raise "
-                                         "--max-elements"),
-              std::string::npos);
+    const std::string shown =
+        e.shown([](std::string_view name) { return "--" + std::string(name); });
+    EXPECT_NE(shown.find("more than --max_elements 1000; lower --size or raise --max_elements"),
+              std::string::npos)
+        << shown;
   }
   EXPECT_THROW(check_budget({10, 2e6, "x"}, budget, "the fit", "--quadrature"), UsageError);
   EXPECT_THROW(check_budget({std::nan(""), 1, "x"}, budget, "the fit", "--quadrature"), UsageError);

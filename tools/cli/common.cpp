@@ -26,8 +26,6 @@ void BudgetFlags::add_to(CLI::App& command) {
 
 core::ResourceBudget BudgetFlags::budget() const {
   core::ResourceBudget budget;
-  budget.elements_name = "--max-elements";
-  budget.memory_name = "--max-memory";
   budget.max_elements = max_elements;
   if (!max_memory.empty()) budget.max_memory = core::parse_bytes(max_memory, "--max-memory");
   return budget;
