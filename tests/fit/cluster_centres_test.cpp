@@ -9,6 +9,7 @@
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_exemplar.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
+#include "tests/thomas_pattern.hpp"
 
 namespace shapeproc::fit {
 namespace {
@@ -24,22 +25,7 @@ geometry::Scene points_on(const std::vector<Vec3>& positions) {
   return scene;
 }
 
-// A Thomas pattern: 10 parents uniform in [10, 90]², 12 children each, offsets normal with σ = 2
-// (Box–Muller), those outside the window dropped.
-geometry::Scene thomas(std::uint64_t seed) {
-  core::Random random(seed);
-  std::vector<Vec3> points;
-  for (int parent = 0; parent < 10; ++parent) {
-    const Vec3 centre(random.uniform(10, 90), random.uniform(10, 90), 0);
-    for (int child = 0; child < 12; ++child) {
-      const double r = 2.0 * std::sqrt(-2 * std::log(1 - random.uniform()));
-      const double a = 2 * 3.14159265358979 * random.uniform();
-      const Vec3 p = centre + Vec3(r * std::cos(a), r * std::sin(a), 0);
-      if (p.x() >= 0 && p.x() <= 100 && p.y() >= 0 && p.y() <= 100) points.push_back(p);
-    }
-  }
-  return points_on(points);
-}
+geometry::Scene thomas(std::uint64_t seed) { return testing::thomas_pattern(seed); }
 
 // The Thomas fit finds the clusters of Thomas patterns (3 seeds). Parents that fall close
 // together make, to any estimator, one larger cluster (seed 2: σ 3.5 and 5 centres), so the bounds
@@ -71,9 +57,7 @@ TEST(ClusterCentres, ThomasPatternsAreClusteredAndRandomOrRegularOnesAreNot) {
 // lie 2.5 times as far (0.5 / √density against about 1.6).
 TEST(ClusterCentres, AClusteredExemplarIsSampledAroundHiddenCentres) {
   const geometry::Scene exemplar = thomas(4);
-  ExemplarFitOptions options;
-  options.likelihood.reset();
-  const ExemplarFit fit = fit_exemplar(exemplar, options);
+  const ExemplarFit fit = testing::fit_by_pseudo_likelihood(exemplar);
   const model::ShapeProcessModel& m = fit.result.model;
   ASSERT_EQ(m.categories.size(), 2u);
   EXPECT_TRUE(m.categories[1].hidden);
@@ -116,9 +100,7 @@ TEST(ClusterCentres, CentresThatRunAwayAreDropped) {
     }
   const geometry::Scene exemplar = points_on(points);
   ASSERT_TRUE(find_clusters(exemplar, false).clustered);
-  ExemplarFitOptions options;
-  options.likelihood.reset();
-  const ExemplarFit fit = fit_exemplar(exemplar, options);
+  const ExemplarFit fit = testing::fit_by_pseudo_likelihood(exemplar);
   ASSERT_EQ(fit.result.model.categories.size(), 1u);
   EXPECT_FALSE(fit.result.model.categories[0].hidden);
   const std::vector<std::string>& notes = fit.result.model.fit->notes;

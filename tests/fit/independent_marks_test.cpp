@@ -8,6 +8,7 @@
 #include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_exemplar.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
+#include "tests/thomas_pattern.hpp"
 
 namespace shapeproc::fit {
 namespace {
@@ -113,28 +114,13 @@ TEST(IndependentMarks, PoolingKeepsElementsInOneCategory) {
 // within 4 binomial standard errors of the exemplar's (the clusters make the total vary, not the
 // shares).
 TEST(IndependentMarks, AClusteredExemplarOfSeveralCategoriesKeepsTheirShares) {
-  core::Random random(7);
-  geometry::Scene exemplar;
-  exemplar.window = geometry::Box3(Vec3(0, 0, 0), Vec3(100, 100, 0));
-  for (const char* name : {"a", "b", "c"}) exemplar.category_index(name);
-  exemplar.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  for (int parent = 0; parent < 10; ++parent) {
-    const Vec3 centre(random.uniform(10, 90), random.uniform(10, 90), 0);
-    for (int child = 0; child < 12; ++child) {
-      const double r = 2.0 * std::sqrt(-2 * std::log(1 - random.uniform()));
-      const double a = 2 * 3.14159265358979 * random.uniform();
-      const double u = random.uniform();
-      exemplar.elements.push_back({0, u < 1.0 / 6 ? 0 : (u < 0.5 ? 1 : 2),
-                                   centre + Vec3(r * std::cos(a), r * std::sin(a), 0)});
-    }
-  }
-  ExemplarFitOptions options;
-  options.likelihood.reset();
-  const ExemplarFit fit = fit_exemplar(exemplar, options);
+  const geometry::Scene exemplar =
+      testing::thomas_pattern(7, {"a", "b", "c"}, {1.0 / 6, 1.0 / 3, 1.0 / 2});
+  const ExemplarFit fit = testing::fit_by_pseudo_likelihood(exemplar);
   const model::ShapeProcessModel& m = fit.result.model;
   ASSERT_EQ(m.categories.size(), 4u);
   EXPECT_TRUE(m.categories[3].hidden);
-  EXPECT_EQ(m.fit->elements, 120);
+  EXPECT_EQ(m.fit->elements, static_cast<long long>(exemplar.elements.size()));
   const std::vector<std::size_t> counts = geometry::category_counts(exemplar);
   for (int c = 0; c < 3; ++c) EXPECT_EQ(m.categories[c].anchor, 3);
   const geometry::Domain domain(geometry::Box3(Vec3(0, 0, 0), Vec3(200, 200, 0)), 2,
@@ -145,7 +131,7 @@ TEST(IndependentMarks, AClusteredExemplarOfSeveralCategoriesKeepsTheirShares) {
   const double n = static_cast<double>(out.scene.elements.size());
   ASSERT_GT(n, 200.0);
   for (int c = 0; c < 3; ++c) {
-    const double p = static_cast<double>(counts[c]) / 120.0;
+    const double p = static_cast<double>(counts[c]) / static_cast<double>(exemplar.elements.size());
     EXPECT_NEAR(static_cast<double>(got[c]) / n, p, 4 * std::sqrt(p * (1 - p) / n)) << c;
   }
 }
