@@ -78,6 +78,10 @@ void split_into_marks(model::ShapeProcessModel& model, int pooled, const geometr
         model::PairInteraction split = pair;
         split.first = std::min(a, b);
         split.second = std::max(a, b);
+        if (pair.first == pooled || pair.second == pooled)
+          split.choice =
+              (pair.choice.empty() ? "" : pair.choice + "; ") +
+              "the pooled categories' interaction, the same for each (independent marks)";
         interactions.push_back(std::move(split));
       }
 

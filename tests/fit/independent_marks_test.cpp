@@ -83,6 +83,9 @@ TEST(IndependentMarks, SplitsBetaByShareAndCopiesThePairs) {
       ASSERT_GE(k, 0) << a << "-" << b;
       const double want = b < 3 ? 0.5 : (a < 3 ? 4.0 : 0.2);
       EXPECT_EQ(m.interactions[static_cast<std::size_t>(k)].axes[0].gammas[0], want);
+      EXPECT_EQ(m.interactions[static_cast<std::size_t>(k)].choice.find("independent marks") !=
+                    std::string::npos,
+                a < 3);
     }
   model::validate(m);
   // Offsets: pooled→pooled becomes 9 (weights 1/6, 2/6, 3/6 by target), centre→pooled 3.
