@@ -294,6 +294,7 @@ synthesis::SynthesisResult ShapeProcessSampler::synthesize(
   out.scene = std::move(sampled.scene);
   out.trace = std::move(sampled.trace);
   out.observations = std::move(sampled.observations);
+  out.hidden_elements = static_cast<long long>(sampled.hidden.size());
   synthesis::SynthesisRecord& record = out.record;
   record.method = method();
   record.set_domain(domain_);

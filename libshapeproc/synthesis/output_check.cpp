@@ -1,5 +1,6 @@
 #include "libshapeproc/synthesis/output_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,8 +9,9 @@
 
 namespace shapeproc::synthesis {
 
-bool falls_short(double count, double wanted) {
-  return wanted > 0 && count < 0.9 * wanted && wanted - count > 3.0 * std::sqrt(wanted);
+bool falls_short(double count, double wanted, double dispersion) {
+  return wanted > 0 && count < 0.9 * wanted &&
+         wanted - count > 3.0 * std::sqrt(wanted * std::max(1.0, dispersion));
 }
 
 OutputCheck check_output(const SynthesisResult& result, double exemplar_density,
@@ -19,7 +21,10 @@ OutputCheck check_output(const SynthesisResult& result, double exemplar_density,
   if (!(exemplar_density > 0)) return check;
   check.wanted = exemplar_density * result.scene.window_measure();
   check.emptied = automatic_stop && check.count == 0 && check.wanted >= 1.0;
-  check.short_of_density = falls_short(check.count, check.wanted);
+  const double dispersion = result.hidden_elements > 0
+                                ? 1.0 + check.count / static_cast<double>(result.hidden_elements)
+                                : 1.0;
+  check.short_of_density = falls_short(check.count, check.wanted, dispersion);
   return check;
 }
 

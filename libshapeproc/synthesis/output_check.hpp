@@ -10,11 +10,12 @@
 namespace shapeproc::synthesis {
 
 // Whether an output of `count` elements falls short of the `wanted` count its exemplar's density
-// gives by more than chance: below 0.9 of it and more than three Poisson standard errors
-// (3 √wanted) below it. A small output of a loose exemplar varies by that much (two-kinds at 136
-// wanted: 120 is 1.4 standard errors short); a model that cannot fill its exemplar's packing from
-// empty falls far shorter (happy-intersection: 251 of 405).
-bool falls_short(double count, double wanted);
+// gives by more than chance: below 0.9 of it and more than three standard errors below it,
+// 3 √(wanted × dispersion): Poisson's for dispersion 1; a cluster process whose clusters hold m
+// elements on average varies 1 + m times as much. A small output of a loose exemplar varies by that
+// much (two-kinds at 136 wanted: 120 is 1.4 standard errors short); a model that cannot fill its
+// exemplar's packing from empty falls far shorter (happy-intersection: 251 of 405).
+bool falls_short(double count, double wanted, double dispersion = 1.0);
 
 struct OutputCheck {
   double wanted = 0.0;  // elements the exemplar's density gives the output's domain
@@ -22,7 +23,8 @@ struct OutputCheck {
   // The chain ran to its automatic stop and ended empty where the density gives at least one
   // element: a model whose chains either fill the domain or empty it, and this one emptied.
   bool emptied = false;
-  // The count is far below `wanted` (falls_short): the model does not reach its
+  // The count is far below `wanted` (falls_short; an output with hidden cluster centres at the
+  // dispersion of its clusters, 1 + elements per centre): the model does not reach its
   // exemplar's packing from empty.
   bool short_of_density = false;
   double ratio() const { return wanted > 0 ? count / wanted : 0.0; }

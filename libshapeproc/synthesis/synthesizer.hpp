@@ -39,6 +39,9 @@ struct SynthesisResult {
   // Sufficient statistics t(x) observed along the chain, for methods that are exponential
   // families (the shape process: SamplerOptions::observe_every); empty otherwise.
   std::vector<std::vector<double>> observations;
+  // Elements of hidden categories the method placed and left out of `scene` (a clustered
+  // pattern's centres, model::CategoryParameters::hidden); 0 for the other methods.
+  long long hidden_elements = 0;
   // Method-specific counters, in order, for a one-line summary ("births accepted" = "512/20000").
   std::vector<std::pair<std::string, std::string>> counters;
 };

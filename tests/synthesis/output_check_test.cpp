@@ -54,5 +54,16 @@ TEST(OutputCheck, EmptiedChainsAreRefusedAndShortOnesFlagged) {
   }
 }
 
+// A clustered output varies by its clusters: 368 of 432 wanted is short for a Poisson count
+// (64 below, more than 3 √432 = 62), not for one whose 32 hidden centres hold 11.5 elements each
+// (3 √(432 × 12.5) = 220).
+TEST(OutputCheck, AClusteredOutputIsJudgedAtItsClustersDispersion) {
+  SynthesisResult result = output_of(368, 20);
+  EXPECT_TRUE(check_output(result, 432.0 / 400.0, true).short_of_density);
+  result.hidden_elements = 32;
+  EXPECT_FALSE(check_output(result, 432.0 / 400.0, true).short_of_density);
+  EXPECT_TRUE(falls_short(100, 432, 12.5));
+}
+
 }  // namespace
 }  // namespace shapeproc::synthesis
