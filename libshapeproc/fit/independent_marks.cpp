@@ -42,6 +42,10 @@ void split_into_marks(model::ShapeProcessModel& model, int pooled, const geometr
     throw std::invalid_argument("split_into_marks: no category " + std::to_string(pooled));
   if (!model.shapes.empty())
     throw std::invalid_argument("split_into_marks: the model has shapes, not points");
+  // A category anchored to the pooled one would have several bases: not a point pattern's fit.
+  for (const model::CategoryParameters& c : model.categories)
+    if (c.anchor == pooled)
+      throw std::invalid_argument("split_into_marks: a category is anchored to the pooled one");
   const int marks = static_cast<int>(marked.categories.size());
   const std::vector<std::size_t> counts = geometry::category_counts(marked);
   const double total = static_cast<double>(marked.elements.size());
@@ -65,10 +69,6 @@ void split_into_marks(model::ShapeProcessModel& model, int pooled, const geometr
       categories[static_cast<std::size_t>(n)] = std::move(category);
     }
   }
-  // A category anchored to the pooled one would have several bases: not a point pattern's fit.
-  for (const model::CategoryParameters& c : model.categories)
-    if (c.anchor == pooled)
-      throw std::invalid_argument("split_into_marks: a category is anchored to the pooled one");
 
   std::vector<model::PairInteraction> interactions;
   for (const model::PairInteraction& pair : model.interactions)

@@ -23,7 +23,8 @@ geometry::Scene pool_categories(const geometry::Scene& exemplar, const std::stri
 // Replaces the point-pattern model's category `pooled` by the categories of `marked` (the exemplar
 // before pooling), in their order, at indices 0 … C − 1; the model's other categories follow in
 // their order. β splits by the categories' element counts in `marked`. Throws
-// std::invalid_argument for a model with shapes (not a point pattern) or `pooled` out of range.
+// std::invalid_argument for a model with shapes (not a point pattern), `pooled` out of range, or a
+// category anchored to `pooled`.
 void split_into_marks(model::ShapeProcessModel& model, int pooled, const geometry::Scene& marked);
 
 }  // namespace shapeproc::fit
