@@ -15,6 +15,22 @@ int band_count(const std::vector<std::vector<double>>& axes) {
   return bands;
 }
 
+// The pair keeps its hard core alone: one isotropic axis at its axes' smallest δ_0, no γ.
+void reduce_to_hard_core(model::PairInteraction& pair) {
+  if (pair.axes.empty()) return;
+  // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
+  model::AxisParameters axis = pair.axes.front();
+  for (const model::AxisParameters& a : pair.axes)
+    axis.thresholds.front() = std::min(axis.thresholds.front(), a.thresholds.front());
+  axis.thresholds.resize(1);
+  axis.gammas.clear();
+  axis.gamma_standard_errors.clear();
+  axis.status.clear();
+  axis.observed_pairs.clear();
+  axis.saturations.clear();
+  pair.axes = {axis};
+}
+
 }  // namespace
 
 double range_cap(const ParameterBudget& budget, double window, int dimension, double elements) {
@@ -73,21 +89,6 @@ PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
   if (kept == 0) out.choice = "hard core only: " + why + " carry no γ";
   out.axes.push_back(std::move(isotropic));
   return out;
-}
-
-void reduce_to_hard_core(model::PairInteraction& pair) {
-  if (pair.axes.empty()) return;
-  // One isotropic axis at the smallest hard core: no axis keeps a hard core the others lack.
-  model::AxisParameters axis = pair.axes.front();
-  for (const model::AxisParameters& a : pair.axes)
-    axis.thresholds.front() = std::min(axis.thresholds.front(), a.thresholds.front());
-  axis.thresholds.resize(1);
-  axis.gammas.clear();
-  axis.gamma_standard_errors.clear();
-  axis.status.clear();
-  axis.observed_pairs.clear();
-  axis.saturations.clear();
-  pair.axes = {axis};
 }
 
 std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, double z) {

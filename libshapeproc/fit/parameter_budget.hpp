@@ -50,9 +50,6 @@ void keep_bands(std::vector<double>& thresholds, int bands);
 PairThresholds apply_budget(std::vector<std::vector<double>> per_axis,
                             std::vector<double> isotropic, int parameters, const std::string& why);
 
-// The pair keeps its hard core alone: one isotropic axis at its axes' smallest δ_0, no γ.
-void reduce_to_hard_core(model::PairInteraction& pair);
-
 // After the pseudo-likelihood: a pair none of whose strengths differs from 1 by more than
 // `z` standard errors (on log γ; every one estimated freely, with a standard error of at most
 // FitDefaults::neutral_max_log_se) interacts through its hard core alone: its bands carried no
