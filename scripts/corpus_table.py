@@ -164,9 +164,10 @@ def table_row(name, results, natural=None):
 
 
 def exemplars(args):
-    with open(os.path.join(CORPUS, "MANIFEST.tsv")) as f:
+    corpus = os.path.abspath(args.corpus)
+    with open(os.path.join(corpus, "MANIFEST.tsv")) as f:
         for row in csv.DictReader(f, delimiter="\t"):
-            yield row["file"], os.path.join(CORPUS, row["file"]), row["flags"].split()
+            yield row["file"], os.path.join(corpus, row["file"]), row["flags"].split()
     for folder in args.tiles:
         for file in sorted(os.listdir(folder)):
             if file.endswith(".svg"):
@@ -180,9 +181,13 @@ def main():
     parser.add_argument("--only", default="",
                         help="exemplars to keep, by file name, comma-separated, run in that order")
     parser.add_argument("--tiles", action="append", default=[], help="a folder of seamless tiles")
+    parser.add_argument("--corpus", default=CORPUS,
+                        help="a folder with a MANIFEST.tsv (data/corpus/held-out: the held-out one)")
     parser.add_argument("out")
     args = parser.parse_args()
-    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)), "corpus")
+    held_out = os.path.abspath(args.corpus) != CORPUS
+    pictures = os.path.join(os.path.dirname(os.path.abspath(args.out)),
+                            "corpus-held-out" if held_out else "corpus")
     os.makedirs(pictures, exist_ok=True)
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
@@ -191,13 +196,16 @@ def main():
     shown_out = os.path.relpath(out, ROOT) if out.startswith(ROOT + os.sep) else "OUT.md"
     shown = " ".join([f"--seeds {args.seeds}", f"--timeout {args.timeout:g}"]
                      + ([f"--only {args.only}"] if args.only else [])
-                     + [f"--tiles {os.path.relpath(t, ROOT)}" for t in args.tiles] + [shown_out])
+                     + [f"--tiles {os.path.relpath(t, ROOT)}" for t in args.tiles]
+                     + ([f"--corpus {os.path.relpath(os.path.abspath(args.corpus), ROOT)}"]
+                        if held_out else []) + [shown_out])
     lines = [
+        "# The held-out corpus: the same kinds, drawn again" if held_out else
         "# The corpus: every exemplar, several seeds", "",
         f"Command: `python3 scripts/corpus_table.py {shown}` at commit {commit}, "
         f"{datetime.date.today().isoformat()}, on 2 cores.", "",
         "Each output: `shapeproc synthesize EXEMPLAR FLAGS --size 2W,2H --seed S` (FLAGS from "
-        "data/corpus/MANIFEST.tsv), measured by `shapeproc stats OUTPUT --against EXEMPLAR`. "
+        f"{os.path.relpath(os.path.abspath(args.corpus), ROOT)}/MANIFEST.tsv), measured by `shapeproc stats OUTPUT --against EXEMPLAR`. "
         "Figures are min / median / max over the seeds. Density: the output's count over the "
         "exemplar's density times its area; worst category: the category of 10 or more elements "
         "farthest from ×1; relation: the largest difference, over categories, between the output's "
