@@ -67,9 +67,20 @@ Chain run_chain(const model::ShapeProcessModel& model, const geometry::Domain& d
   sample::SamplerOptions options = output_sampler_options(model, domain, sampling);
   options.geometry = geometry;
   options.run_on = false;
+  // About one observation per element's worth of steps, of each layer's own elements: a layer
+  // of a few large elements is observed as often as it changes.
+  std::vector<double> layer_total(static_cast<std::size_t>(model.layer_count()), 0.0);
+  for (std::size_t c = 0; c < expected.size(); ++c)
+    layer_total[static_cast<std::size_t>(model.categories[c].layer)] += expected[c];
+  const auto every = [](double total) {
+    return std::max<long long>(10, static_cast<long long>(total));
+  };
   double total = 0.0;
-  for (double e : expected) total += e;
-  options.observe_every = std::max<long long>(10, static_cast<long long>(total));
+  for (double t : layer_total) {
+    total += t;
+    options.layer_observe_every.push_back(every(t));
+  }
+  options.observe_every = every(total);
   const sample::ShapeProcessSampler sampler(model, domain, options);
   core::Random random(seed);
   Chain chain;

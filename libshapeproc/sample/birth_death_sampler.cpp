@@ -44,8 +44,11 @@ ShapeProcessSampler::ShapeProcessSampler(const model::ShapeProcessModel& model,
               "sample",
               "with given steps the compressing burn-in needs its own release steps, fewer than "
               "half of them");
-  core::check(options_.trace_every >= 0 && options_.observe_every >= 0, "sample",
-              "trace and observation intervals must be >= 0");
+  core::check(
+      options_.trace_every >= 0 && options_.observe_every >= 0 &&
+          std::all_of(options_.layer_observe_every.begin(), options_.layer_observe_every.end(),
+                      [](long long every) { return every >= 0; }),
+      "sample", "trace and observation intervals must be >= 0");
 
   tables_ = std::make_unique<const ChainTables>(model_, domain_, options_.geometry);
   const int categories = static_cast<int>(model_.categories.size());
@@ -159,9 +162,9 @@ bool ShapeProcessSampler::torus_smaller_than_reach() const {
 
 SampleResult ShapeProcessSampler::sample(core::Random& random,
                                          const synthesis::ChainControl& control) const {
-  SampleResult result =
-      layers_.empty() ? sample_layer(*tables_, options_.fixed, options_.start, random, control)
-                      : sample_layers(random, control);
+  SampleResult result = layers_.empty() ? sample_layer(*tables_, options_.fixed, options_.start,
+                                                       options_.observe_every, random, control)
+                                        : sample_layers(random, control);
   // The hidden categories' elements leave the output.
   std::vector<Element>& elements = result.scene.elements;
   const auto hidden = [&](const Element& e) {
@@ -189,7 +192,10 @@ SampleResult ShapeProcessSampler::sample_layers(core::Random& random,
     for (const Element& e : options_.start)
       if (model_.categories[static_cast<std::size_t>(e.category)].layer == static_cast<int>(layer))
         start.push_back(e);
-    result = sample_layer(*layers_[layer], placed, start, random, control);
+    const long long observe_every = layer < options_.layer_observe_every.size()
+                                        ? options_.layer_observe_every[layer]
+                                        : options_.observe_every;
+    result = sample_layer(*layers_[layer], placed, start, observe_every, random, control);
     starts.push_back(observations.size());
     for (std::vector<double>& o : result.observations) observations.push_back(std::move(o));
     for (synthesis::TracePoint point : result.trace) {
@@ -211,13 +217,13 @@ SampleResult ShapeProcessSampler::sample_layers(core::Random& random,
 SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
                                                const std::vector<Element>& fixed,
                                                const std::vector<Element>& start,
-                                               core::Random& random,
+                                               long long observe_every, core::Random& random,
                                                const synthesis::ChainControl& control) const {
   // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain. Nor
   // does it hold its cells' surroundings' own links, which a saturated band's intensity reads.
-  if (options_.decompose && fixed.empty() && options_.free_region.isEmpty() &&
-      options_.observe_every == 0 && !options_.compression.enabled() &&
-      !tables.interaction->saturated() && decomposable(domain_, reach()))
+  if (options_.decompose && fixed.empty() && options_.free_region.isEmpty() && observe_every == 0 &&
+      !options_.compression.enabled() && !tables.interaction->saturated() &&
+      decomposable(domain_, reach()))
     return sample_by_cells(model_, tables, *region_, options_, random, control);
   SampleResult result;
   long long growth_steps = 0;
@@ -240,7 +246,7 @@ SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
       compression.after_step(step, chain.size());
       if (compression.compressed_for() == step) result.compressed_count = chain.size();
     }
-    if (options_.observe_every > 0 && step % options_.observe_every == 0) {
+    if (observe_every > 0 && step % observe_every == 0) {
       if (options_.observe_region.isEmpty()) {
         result.observations.push_back(chain.statistics());
       } else {

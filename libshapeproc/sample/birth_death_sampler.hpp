@@ -61,6 +61,10 @@ struct SamplerOptions {
   // Record the sufficient statistics t(x) every so many steps (0: never), for Monte Carlo
   // estimates of E_θ[t] and Cov_θ[t] (maximum-likelihood fits).
   long long observe_every = 0;
+  // A layered model's interval for each of its layers in turn, in place of observe_every (a
+  // layer of a few large elements changes far faster per element than one of many small ones);
+  // empty: observe_every for every layer.
+  std::vector<long long> layer_observe_every;
   // When set, each observation is t of the elements in this region (and the pairs within it,
   // Configuration::statistics_in) followed by t(x) of the whole configuration: 2 × p values.
   geometry::Box3 observe_region;
@@ -168,8 +172,8 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   // One chain with `tables`, from `fixed` and `start`: the whole run of an unlayered model, or one
   // layer's given those below.
   SampleResult sample_layer(const ChainTables& tables, const std::vector<geometry::Element>& fixed,
-                            const std::vector<geometry::Element>& start, core::Random& random,
-                            const synthesis::ChainControl& control) const;
+                            const std::vector<geometry::Element>& start, long long observe_every,
+                            core::Random& random, const synthesis::ChainControl& control) const;
   // The compressing burn-in's growth stages: the model with its hard cores scaled
   // (compression.hpp), smallest first, or for a crystal's growth one model for every stage (its
   // births near neighbours); empty without compression.

@@ -53,6 +53,44 @@ TEST(DensityCalibration, AModelThatAgreesIsLeftAlone) {
   EXPECT_DOUBLE_EQ(record.beta_factor[0], 1.0);
 }
 
+// 10 bases and 1,000 points in a 100 x 100 window, each category uniform.
+geometry::Scene two_layer_exemplar() {
+  geometry::Scene scene;
+  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
+  scene.category_index("bases");
+  scene.category_index("points");
+  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
+  core::Random random(11);
+  for (int k = 0; k < 1010; ++k) {
+    geometry::Element e;
+    e.position = geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0);
+    e.category = k < 10 ? 0 : 1;
+    scene.elements.push_back(e);
+  }
+  return scene;
+}
+
+TEST(DensityCalibration, AFewBasesBelowManyPointsAreMeasuredOnTheirOwnLayersChain) {
+  // Two layers: 40 bases expected on the torus of 2 x 2 windows, then 4,000 points. β of the
+  // bases is 1.3 times the exemplar's density. Judged by one state, the bases' tolerance would be
+  // two Poisson standard errors of 40, ±0.32, and ×1.3 would pass; the layer's own chain,
+  // observed once per 40 of its steps, measures its mean count to a few per cent, so β is
+  // corrected.
+  model::ShapeProcessModel model = testing::point_model(0.001 * 1.3);
+  model.categories.push_back({"points", 0.1});
+  model.categories[1].layer = 1;
+  CalibrationOptions options;
+  options.seed = 5;
+  const model::CalibrationRecord record = calibrate_density(model, two_layer_exemplar(), options);
+  ASSERT_EQ(record.ratio_before.size(), 2u);
+  // 40 expected: one Poisson standard error of a state is 0.16; the time average's is smaller.
+  EXPECT_NEAR(record.ratio_before[0], 1.3, 0.16);
+  EXPECT_TRUE(record.converged);
+  EXPECT_GE(record.rounds, 2);
+  EXPECT_LT(record.beta_factor[0], 0.9);
+  EXPECT_NEAR(record.ratio_after[0], 1.0, 0.1);
+}
+
 TEST(DensityCalibration, ARunawayChainShrinksTheAttraction) {
   // Strong attraction and no hard core: the chain condenses far past 8 times the 400 expected.
   model::ShapeProcessModel model = testing::point_model(0.01, {0.0, 3.0}, {30.0});
