@@ -5,105 +5,17 @@
 // `synthesize --method M` would, with the same seed; centroid and hausdorff are the shape process
 // with those distances (the paper's Fig. 11); hybrid-M is `synthesize --method hybrid
 // --start-from M`.
-#include <filesystem>
 #include <memory>
-#include <sstream>
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/core/stopwatch.hpp"
-#include "libshapeproc/io/domain_io.hpp"
-#include "libshapeproc/io/scene_io.hpp"
-#include "libshapeproc/io/text.hpp"
+#include "libshapeproc/core/interruption.hpp"
+#include "libshapeproc/pipeline/method_comparison.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/report_command.hpp"
 #include "tools/cli/stats_command.hpp"
-#include "tools/cli/synthesize_command.hpp"
 
 namespace shapeproc::cli {
-
-namespace {
-
-const std::vector<std::string> kMethods = {
-    "tile",     "shape-process", "ma-em",        "ijiri",          "davison",
-    "centroid", "hausdorff",     "hybrid-ma-em", "hybrid-davison", "hybrid-ijiri"};
-
-std::vector<std::string> parse_methods(const std::string& list) {
-  std::vector<std::string> out;
-  if (list.empty()) throw core::UsageError("--methods: no method given");
-  for (const std::string& name : io::split(list, ',')) {
-    if (std::find(kMethods.begin(), kMethods.end(), name) == kMethods.end())
-      throw core::UsageError("--methods: unknown method '" + name +
-                             "' (expected tile, shape-process, ma-em, ijiri, davison, centroid, "
-                             "hausdorff, hybrid-ma-em, hybrid-davison or hybrid-ijiri)");
-    if (std::find(out.begin(), out.end(), name) != out.end())
-      throw core::UsageError("--methods: '" + name + "' is given twice");
-    out.push_back(name);
-  }
-  return out;
-}
-
-// The `synthesize` arguments that run `method` (a name of --methods).
-SynthesizeArguments synthesize_request(const std::string& method, const std::string& exemplar,
-                                       const ReaderFlags& reader, const std::string& size,
-                                       std::uint64_t seed, const std::string& output,
-                                       const std::string& model) {
-  SynthesizeArguments args;
-  args.input = exemplar;
-  args.output = output;
-  args.model = model;
-  args.reader = reader;
-  args.sample.size = size;
-  args.sample.seed = seed;
-  args.sample.exemplar_multiples = true;
-  if (method == "centroid" || method == "hausdorff") {
-    args.fit.distance = method;
-  } else if (method.rfind("hybrid-", 0) == 0) {
-    args.method = "hybrid";
-    args.start_from = method.substr(7);
-  } else if (method != "shape-process") {
-    args.method = method;
-  }
-  return args;
-}
-
-// The `synthesize` command line that `args` stand for: what the outputs' records name as their
-// source.
-std::vector<std::string> command_line_of(const SynthesizeArguments& args) {
-  std::vector<std::string> a = {"shapeproc", "synthesize", args.input};
-  const std::vector<std::string> flags = args.reader.arguments();
-  a.insert(a.end(), flags.begin(), flags.end());
-  a.insert(a.end(), {"--size", args.sample.size, "--seed", std::to_string(args.sample.seed), "-o",
-                     args.output});
-  if (args.fit.distance != FitFlags{}.distance)
-    a.insert(a.end(), {"--distance", args.fit.distance});
-  if (args.method != "shape-process") a.insert(a.end(), {"--method", args.method});
-  if (args.method == "hybrid") a.insert(a.end(), {"--start-from", args.start_from});
-  if (!args.model.empty()) a.insert(a.end(), {"--model", args.model});
-  return a;
-}
-
-// Runs one method as `synthesize` would; returns the reason it failed, empty when it did not.
-// Ctrl-C stops the whole comparison.
-std::string run_one_method(SynthesizeArguments args, const std::vector<std::string>& arguments,
-                           std::ostream& out) {
-  try {
-    run_synthesize(args, arguments, out);
-    return {};
-  } catch (const core::Cancelled&) {
-    throw;
-  } catch (const core::InputError& e) {
-    return one_line(e.shown(flag_for));
-  } catch (const core::UsageError& e) {
-    return one_line(e.shown(flag_for));
-  } catch (const core::ArgumentError& e) {
-    return one_line(e.what());
-  } catch (const std::exception& e) {
-    return "internal error: " + one_line(e.what());
-  }
-}
-
-}  // namespace
 
 void add_compare_command(CLI::App& app, Action& action, const std::vector<std::string>& arguments) {
   struct CompareArguments {
@@ -139,58 +51,32 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
   args->metrics.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
-      const std::vector<std::string> methods = parse_methods(args->methods);
-      // The exemplar read once before anything runs: a bad file is one error, not one per method.
-      const geometry::Scene exemplar = io::read_scene(args->exemplar, args->reader.options());
-      const auto size = io::parse_size(args->size, &exemplar.window);
-      if (!size || static_cast<int>(size->size()) != exemplar.dimension)
-        throw core::UsageError(
-            "--size: expected " + std::string(exemplar.dimension == 3 ? "W,H,D" : "W,H") +
-            " (positive) for a " + std::to_string(exemplar.dimension) +
-            "D exemplar, or multiples of its window such as 3W,3H; got '" + args->size + "'");
-      const std::filesystem::path directory(args->directory);
-      if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
-        throw core::UsageError(args->directory + ": exists and is not a directory");
-      std::filesystem::create_directories(directory);
-      const std::string extension = io::extension_of(args->exemplar) == "svg"   ? "svg"
-                                    : io::extension_of(args->exemplar) == "csv" ? "csv"
-                                                                                : "obj";
-      report::ComparisonRequest request;
+      pipeline::MethodComparisonRequest request;
+      request.methods = pipeline::parse_compared_methods(args->methods);
       request.exemplar = args->exemplar;
-      request.directory = args->directory;
       request.reader = args->reader.options();
+      request.size = args->size;
+      request.seed = args->seed;
+      request.directory = args->directory;
       request.metrics = args->metrics.options();
       request.command = command_line(arguments);
-      std::vector<std::string> failed;
-      for (std::size_t i = 0; i < methods.size(); ++i) {
-        const std::string& method = methods[i];
-        out << '[' << i + 1 << '/' << methods.size() << "] " << method << std::endl;
-        const std::string output = (directory / (method + "." + extension)).string();
-        const std::string model =
-            method == "shape-process" ? (directory / "model.json").string() : std::string();
-        std::ostringstream said;
-        const core::Stopwatch watch;
-        const SynthesizeArguments one = synthesize_request(method, args->exemplar, args->reader,
-                                                           args->size, args->seed, output, model);
-        const std::string reason = run_one_method(one, command_line_of(one), said);
-        const double seconds = watch.seconds();
-        std::istringstream lines(said.str());
-        for (std::string line; std::getline(lines, line);) out << "  " << line << '\n';
-        if (!reason.empty()) {
-          out << "  failed: " << reason << '\n';
-          failed.push_back(method + " (" + reason + ")");
-          continue;
-        }
-        request.outputs.push_back(output);
-        request.labels.push_back(method);
-        request.timings.emplace_back(method, seconds);
-        if (!model.empty()) request.model = model;
-      }
-      if (request.outputs.empty())
-        throw core::UsageError("no method could synthesise from " + args->exemplar + ": " +
-                               failed.front());
-      print_report(report::write_comparison_report(request), out);
-      for (const std::string& f : failed) out << "not on the page: " << f << '\n';
+      const core::CancellableSection interrupt;  // Ctrl-C stops the whole comparison
+      request.cancel = interrupt.flag();
+      request.starting = [&out](std::size_t index, std::size_t count, const std::string& method) {
+        out << '[' << index << '/' << count << "] " << method << std::endl;
+      };
+      request.finished = [&out](const pipeline::MethodRun& run) {
+        for (const std::string& line : run.lines)
+          out << "  " << core::name_options(line, flag_for) << '\n';
+        if (!run.failure.empty())
+          out << "  failed: " << one_line(core::name_options(run.failure, flag_for)) << '\n';
+      };
+      const pipeline::MethodComparison done = pipeline::compare_methods(request);
+      print_report(done.report, out);
+      for (const pipeline::MethodRun& run : done.runs)
+        if (!run.failure.empty())
+          out << "not on the page: " << run.method << " ("
+              << one_line(core::name_options(run.failure, flag_for)) << ")\n";
       return 0;
     };
   });

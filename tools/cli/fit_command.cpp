@@ -62,50 +62,55 @@ int run_fit(const FitArguments& args, const std::vector<std::string>& arguments,
 
 }  // namespace
 
+FitProgress::FitProgress(const VerbosityFlags& verbosity)
+    : verbosity_(verbosity),
+      quadrature_("fitting: quadrature", verbosity.show_progress()),
+      iterations_("fitting: maximum likelihood", verbosity.show_progress()) {}
+
+void FitProgress::attach(fit::ExemplarFitOptions& options) {
+  options.fit.progress = [this](const char* stage, long long done, long long total) {
+    if (stage != last_stage_ && total == 0) {
+      last_stage_ = stage;
+      verbosity_.stage(std::string("fit: ") + stage);
+      return;
+    }
+    quadrature_.update(done, total);
+  };
+  if (!options.likelihood) return;
+  const int most = options.likelihood->max_iterations;
+  options.likelihood->progress = [this, most](const fit::MleProgress& at) {
+    quadrature_.finish();
+    verbosity_.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
+                     core::format_general(at.worst_z, 3) + ", effective sample " +
+                     core::format_general(at.effective_size, 3) + " (" + std::to_string(at.chains) +
+                     " chains), " + core::format_general(at.seconds, 3) + " s");
+    iterations_.update(at.iteration, most);
+  };
+}
+
+void FitProgress::finish() {
+  quadrature_.finish();
+  iterations_.finish();
+}
+
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
                             const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
-                            geometry::Scene* fitted,
-                            const std::function<void(const geometry::Scene&)>& check_read) {
+                            geometry::Scene* fitted) {
   fit::ExemplarFitOptions options = flags.exemplar_options(reader);  // checked before reading
   verbosity.stage("reading " + input);
   const geometry::Scene read = io::read_scene(input, reader.options());
   core::check_budget(fit::estimate_fit(read, options.fit).resources, budget, "the fit of " + input,
-                     "--quadrature, --directions or the thresholds");
-  if (check_read) check_read(read);
-  // Stages on standard error with --verbose; a bar over the quadrature (the long stage) and one
-  // over the maximum likelihood's iterations on a terminal.
-  ProgressBar quadrature("fitting: quadrature", verbosity.show_progress());
-  std::string last_stage;
-  options.fit.progress = [&](const char* stage, long long done, long long total) {
-    if (stage != last_stage && total == 0) {
-      last_stage = stage;
-      verbosity.stage(std::string("fit: ") + stage);
-      return;
-    }
-    quadrature.update(done, total);
-  };
-  ProgressBar iterations("fitting: maximum likelihood", verbosity.show_progress());
-  if (options.likelihood) {
-    fit::MleOptions& mle = *options.likelihood;
-    mle.progress = [&](const fit::MleProgress& at) {
-      quadrature.finish();
-      verbosity.stage("mle: iteration " + std::to_string(at.iteration) + ", largest |z| " +
-                      core::format_general(at.worst_z, 3) + ", effective sample " +
-                      core::format_general(at.effective_size, 3) + " (" +
-                      std::to_string(at.chains) + " chains), " +
-                      core::format_general(at.seconds, 3) + " s");
-      iterations.update(at.iteration, mle.max_iterations);
-    };
-  }
+                     "{quadrature}, {directions} or the thresholds");
+  FitProgress progress(verbosity);
+  progress.attach(options);
   fit::ExemplarFit fit;
   try {
     fit = fit::fit_exemplar(read, options);
   } catch (const std::invalid_argument& e) {
     throw core::InputError(input, 0, e.what());
   }
-  quadrature.finish();
-  iterations.finish();
+  progress.finish();
   flags.record(fit.result.model, input, reader, arguments);
   if (fitted) *fitted = std::move(fit.exemplar);
   return std::move(fit.result);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@
 #include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/model/shape_process_model.hpp"
+#include "libshapeproc/pipeline/synthesis_run.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/synthesis/synthesis_record.hpp"
 #include "tools/cli/common.hpp"
@@ -62,16 +64,29 @@ struct FitFlags {
   nlohmann::json to_json() const;
 };
 
+// The progress of a fit on standard error: its stages with --verbose, bars over the quadrature
+// and the maximum likelihood's iterations on a terminal. Lives while the fit it is attached to
+// runs.
+class FitProgress {
+ public:
+  explicit FitProgress(const VerbosityFlags& verbosity);
+  void attach(fit::ExemplarFitOptions& options);
+  void finish();
+
+ private:
+  const VerbosityFlags& verbosity_;
+  ProgressBar quadrature_, iterations_;
+  std::string last_stage_;
+};
+
 // Reads and fits an exemplar; the model's `fit` record gets the exemplar, the arguments, the
-// reader and fit options. Fit failures become core::InputError naming the exemplar. `fitted`, when
-// given, receives the exemplar as fitted (a small tile repeated).
-// The fit and, when given, `check_read` (e.g. the output's budget) are checked against `budget`
-// right after reading, before any fitting.
+// reader and fit options. Fit failures become core::InputError naming the exemplar. The fit is
+// checked against `budget` right after reading, before any fitting. `fitted`, when given,
+// receives the exemplar as fitted (a small tile repeated).
 fit::FitResult fit_exemplar(const std::string& input, const FitFlags& flags,
                             const ReaderFlags& reader, const std::vector<std::string>& arguments,
                             const VerbosityFlags& verbosity, const core::ResourceBudget& budget,
-                            geometry::Scene* fitted = nullptr,
-                            const std::function<void(const geometry::Scene&)>& check_read = {});
+                            geometry::Scene* fitted = nullptr);
 
 struct SampleFlags {
   std::string size, domain_file, intensity, boundary, trace, png, decompose = "auto";
@@ -100,9 +115,6 @@ struct SampleFlags {
   void check(const std::string& output, int dimension = 0) const;
   // The output domain (--size, --boundary, --domain, --intensity) for a `dimension`-D model.
   geometry::Domain domain(int dimension) const;
-  // Refuses an output of `exemplar`'s density over the domain that the budget cannot hold
-  // (--max-elements, --max-memory), before any work.
-  void check_budget(const geometry::Scene& exemplar) const;
   // Every file the run writes for `output`: each chain's output (suffixed -1, -2, ... with
   // several chains) and its record beside a .csv, its picture and its trace.
   std::vector<std::string> files_written(const std::string& output) const;
@@ -122,12 +134,14 @@ struct SampleFlags {
   int run(const model::ShapeProcessModel& model, const std::string& output,
           synthesis::SynthesisRecord record, std::ostream& out,
           const geometry::Scene* start_tile = nullptr) const;
-  // The same for any synthesis method: its chains, their outputs, pictures and traces. With
-  // `exemplar_density` (elements per unit area or volume), a chain that ends below 0.9 of it is
-  // told of with the count it reached.
-  int run(const synthesis::Synthesizer& synthesizer, const std::string& output,
-          synthesis::SynthesisRecord record, std::ostream& out,
-          double exemplar_density = 0.0) const;
+  // The library's request for these flags (pipeline/synthesis_run.hpp): sampling, chains, seed,
+  // budget; `record` holds the command's part of the outputs' record; the chains report to `bar`
+  // and stop when `cancel` is set.
+  pipeline::SamplingRequest sampling_request(synthesis::SynthesisRecord record, ProgressBar& bar,
+                                             const std::atomic<bool>* cancel) const;
+  // Writes each chain's output (suffixed per chain), its picture and its trace, with a line per
+  // chain and the warnings its count and stopping rule call for. Returns the exit code.
+  int write(const pipeline::SynthesisRun& run, const std::string& output, std::ostream& out) const;
 };
 
 // A JSON object's leaves as (prefix.key, text) pairs, in key order (for a record's options).

@@ -18,6 +18,7 @@
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/synthesis_record_io.hpp"
 #include "libshapeproc/io/text.hpp"
+#include "libshapeproc/pipeline/synthesis_run.hpp"
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
 #include "libshapeproc/sample/output_estimate.hpp"
@@ -31,6 +32,13 @@
 namespace shapeproc::cli {
 
 namespace {
+
+// What the run said before its chains ran: what the method learnt, and warnings.
+void print_lines(const pipeline::SynthesisRun& run, std::ostream& out) {
+  for (const std::string& line : run.described) out << line << '\n';
+  for (const std::string& line : run.warnings)
+    out << "warning: " << core::name_options(line, flag_for) << '\n';
+}
 
 // out.svg → out-2.svg for chain 2 of several; unchanged for a single chain.
 std::string suffixed(const std::string& path, int chain, int chains) {
@@ -144,15 +152,6 @@ std::vector<std::string> SampleFlags::files_written(const std::string& output) c
 
 int SampleFlags::chains_at_once() const { return synthesis::chains_at_once(chains, threads); }
 
-void SampleFlags::check_budget(const geometry::Scene& exemplar) const {
-  const double measure = exemplar.window_measure();
-  if (!(measure > 0)) return;
-  const double density = static_cast<double>(exemplar.elements.size()) / measure;
-  core::check_budget(sample::estimate_output(density, domain(exemplar.dimension),
-                                             exemplar.dimension, chains_at_once()),
-                     budget.budget(), "the output", "--size");
-}
-
 void SampleFlags::check(const std::string& output, int dimension) const {
   // Before the exemplar is read, multiples are checked for their syntax only.
   const geometry::Box3 unit(geometry::Vec3::Zero(), geometry::Vec3::Ones());
@@ -238,35 +237,37 @@ geometry::Domain SampleFlags::domain(int dimension) const {
   return io::read_domain(files, dimension);
 }
 
+pipeline::SamplingRequest SampleFlags::sampling_request(synthesis::SynthesisRecord record,
+                                                        ProgressBar& bar,
+                                                        const std::atomic<bool>* cancel) const {
+  pipeline::SamplingRequest request;
+  request.sampling = output_sampling();
+  request.chains.chains = chains;
+  request.chains.threads = threads;
+  request.chains.seed = seed;
+  record.domain_file = domain_file;
+  record.intensity_file = intensity;
+  request.chains.record = std::move(record);
+  request.chains.cancel = cancel;
+  request.chains.progress = [&bar](long long done, long long total) { bar.update(done, total); };
+  request.budget = budget.budget();
+  return request;
+}
+
 int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& output,
                      synthesis::SynthesisRecord record, std::ostream& out,
                      const geometry::Scene* start_tile) const {
   check(output, model.dimension);
-  const geometry::Domain where = domain(model.dimension);
-  const core::ResourceEstimate estimate =
-      sample::estimate_output(model, where, io::recorded_exemplar_density(model), chains_at_once());
-  core::check_budget(estimate, budget.budget(), "the output", "--size");
-  fit::OutputSampling sampling = output_sampling();
-  sampling.exemplar_density = io::recorded_exemplar_density(model);
-  sampling.chains_at_once = chains_at_once();
-  sampling.compress = !start_tile;
-  sample::SamplerOptions options = fit::output_sampler_options(model, where, sampling);
-  if (start_tile) {
-    options.start = geometry::tile_over(*start_tile, where.box());
-    out << "start: the exemplar tiled over the output (" << options.start.size()
-        << " elements): the output begins as a copy of the exemplar, which the chain then moves\n";
-  }
-  const sample::ShapeProcessSampler sampler(model, where, options);
-  if (sampler.torus_smaller_than_reach())
-    out << "warning: the output torus is smaller than twice the model's reach ("
-        << core::format_general(2 * sampler.reach(), 4)
-        << "): elements meet their own images, and pairs seen at a nearer image may be refused; "
-           "give a larger --size\n";
-  // The count to expect, on a plain box (a mask or an intensity map changes it).
-  const double density = domain_file.empty() && intensity.empty()
-                             ? io::recorded_exemplar_density(model).value_or(0.0)
-                             : 0.0;
-  return run(sampler, output, std::move(record), out, density);
+  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
+  ProgressBar bar("sampling", verbosity.show_progress());
+  pipeline::SamplingRequest request = sampling_request(std::move(record), bar, interrupt.flag());
+  request.ready = [&out](const synthesis::Synthesizer&, const pipeline::SynthesisRun& so_far) {
+    print_lines(so_far, out);
+  };
+  const pipeline::SynthesisRun run =
+      pipeline::sample_model(model, domain(model.dimension), request, start_tile);
+  bar.finish();
+  return write(run, output, out);
 }
 
 fit::OutputSampling SampleFlags::output_sampling() const {
@@ -292,30 +293,12 @@ sample::SamplerOptions SampleFlags::sampler_options() const {
   return options;
 }
 
-int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::string& output,
-                     synthesis::SynthesisRecord record, std::ostream& out,
-                     double exemplar_density) const {
-  synthesis::ChainOptions chains_options;
-  chains_options.chains = chains;
-  chains_options.threads = threads;
-  chains_options.seed = seed;
-  record.domain_file = domain_file;
-  record.intensity_file = intensity;
-  chains_options.record = std::move(record);
-  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
-  chains_options.cancel = interrupt.flag();
-  const bool sampler = synthesizer.method() == "shape-process";
-  ProgressBar bar(sampler ? "sampling" : "synthesising", verbosity.show_progress());
-  chains_options.progress = [&bar](long long done, long long total) { bar.update(done, total); };
-  const std::vector<synthesis::SynthesisResult> results =
-      synthesis::run_chains(synthesizer, chains_options);
-  bar.finish();
-
-  // An emptied chain's output is nothing to write: refused before any file is written.
-  synthesis::refuse_emptied(results, exemplar_density, iterations <= 0);
-
+int SampleFlags::write(const pipeline::SynthesisRun& run, const std::string& output,
+                       std::ostream& out) const {
+  const std::vector<synthesis::SynthesisResult>& results = run.results;
   for (int c = 0; c < chains; ++c) {
     const synthesis::SynthesisResult& result = results[static_cast<std::size_t>(c)];
+    const bool sampler = result.record.method == "shape-process";
     const std::string file = suffixed(output, c, chains);
     if (io::extension_of(file) == "png") {
       render::RenderOptions picture;
@@ -345,7 +328,7 @@ int SampleFlags::run(const synthesis::Synthesizer& synthesizer, const std::strin
           << "; the output may not be at equilibrium (give --iterations)\n";
     }
     const synthesis::OutputCheck check =
-        synthesis::check_output(result, exemplar_density, iterations <= 0);
+        synthesis::check_output(result, run.exemplar_density, run.automatic_stop);
     if (check.short_of_density) {
       out << "warning: the chain reached " << result.scene.elements.size() << " elements where "
           << "the exemplar's density gives " << core::format_general(check.wanted, 4) << " (x"

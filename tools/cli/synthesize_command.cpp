@@ -11,11 +11,13 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
+#include "libshapeproc/core/interruption.hpp"
 #include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
 #include "libshapeproc/methods/synthesizer_factory.hpp"
+#include "libshapeproc/pipeline/synthesis_run.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/flags.hpp"
@@ -48,12 +50,12 @@ void record_reader(const ReaderFlags& reader, synthesis::SynthesisRecord& record
     record.options.push_back(std::move(pair));
 }
 
-// The exemplar, with the output's name and the resource budget checked against it.
+// The exemplar, with the output's name and size checked against it.
 geometry::Scene read_checked_exemplar(SynthesizeArguments& args) {
+  args.sample.verbosity.stage("reading " + args.input);
   geometry::Scene exemplar = io::read_scene(args.input, args.reader.options());
   args.sample.set_exemplar(exemplar);
   args.sample.check(args.output, exemplar.dimension);
-  args.sample.check_budget(exemplar);
   return exemplar;
 }
 
@@ -109,69 +111,94 @@ void record_method_inputs(const SynthesizeArguments& args, methods::Method metho
   }
   if (method == methods::Method::davison && !args.growth.palette.empty())
     record.inputs.emplace_back("palette", args.growth.palette);
-  if (method != methods::Method::hybrid) record_reader(args.reader, record);
+  record_reader(args.reader, record);
 }
 
-// Every method but the shape process's own sampler (tile, ma-em, davison, ijiri, and the hybrid
-// at `model`): the library's synthesizer, run over the chains.
-int run_method(SynthesizeArguments& args, const model::ShapeProcessModel* model,
+// What the method shows before its chains run: its connectivity (ijiri's --show-connectivity),
+// what it learnt, and the run's warnings.
+void show_ready(const SynthesizeArguments& args, methods::Method method,
+                const synthesis::Synthesizer& synthesizer, const pipeline::SynthesisRun& so_far,
+                std::ostream& out) {
+  if (method == methods::Method::ijiri && !args.ijiri.show.empty()) {
+    show_connectivity(dynamic_cast<const methods::SeedAndGrow&>(synthesizer).exemplar(),
+                      args.ijiri.show);
+    out << "wrote the connectivity to " << args.ijiri.show << '\n';
+  }
+  for (const std::string& line : so_far.described) out << line << '\n';
+  for (const std::string& line : so_far.warnings)
+    out << "warning: " << core::name_options(line, flag_for) << '\n';
+  if (method == methods::Method::hybrid)
+    out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
+  const bool grows = method == methods::Method::ijiri || method == methods::Method::davison;
+  if (method != methods::Method::tile)
+    args.sample.verbosity.stage(method == methods::Method::shape_process ? "sampling"
+                                : grows                                  ? "growing"
+                                                                         : "synthesising");
+}
+
+// The fit of the shape process and the hybrid: its options from the flags, with progress; once
+// done, its record completed, the model written (--model) and shown.
+void request_fit(SynthesizeArguments& args, const std::vector<std::string>& arguments,
+                 FitProgress& progress, pipeline::SynthesisRequest& request,
+                 synthesis::SynthesisRecord& record, std::ostream& out) {
+  request.fit = args.fit.exemplar_options(args.reader);
+  progress.attach(request.fit);
+  request.fitted = [&args, &arguments, &progress, &out](fit::ExemplarFit& fit) {
+    progress.finish();
+    args.fit.record(fit.result.model, args.input, args.reader, arguments);
+    if (!args.model.empty()) io::write_model(fit.result.model, args.model);
+    print_model_brief(fit.result.model, out);
+  };
+  if (!args.model.empty()) record.inputs.emplace_back("model", args.model);
+  record.options = flatten_options("fit", args.fit.to_json());
+  request.start_at_exemplar = args.start == "exemplar";
+}
+
+// Every method, through the library's synthesis (pipeline/synthesis_run.hpp): the shape process
+// and the hybrid fitted first; the outputs written.
+int run_method(SynthesizeArguments& args, const std::vector<std::string>& arguments,
                synthesis::SynthesisRecord record, std::ostream& out) {
   const methods::Method method = *methods::method_from_name(args.method);
+  const bool fits = method == methods::Method::shape_process || method == methods::Method::hybrid;
   const bool grows = method == methods::Method::ijiri || method == methods::Method::davison;
   if (grows && args.sample.iterations > 0)
     throw core::UsageError("--iterations: --method " + args.method +
                            (method == methods::Method::ijiri
                                 ? " grows until no seed is left; it takes no iteration count"
                                 : " grows until the domain is full; it takes no iteration count"));
+  if (!args.ijiri.show.empty() && io::extension_of(args.ijiri.show) != "svg")
+    throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
+                           "'");
+  if (fits) {
+    args.fit.options(args.reader);  // its own checks, before reading or fitting anything
+    args.fit.threads = args.sample.threads;
+  }
   const geometry::Scene exemplar = read_checked_exemplar(args);
   const geometry::Domain domain = args.sample.domain(exemplar.dimension);
-  const methods::MethodOptions options = method_options(args, method, exemplar, domain);
-  if (method != methods::Method::tile && method != methods::Method::hybrid)
-    args.sample.verbosity.stage("analysing the exemplar");
-  const auto synthesizer =
-      methods::make_synthesizer(method, exemplar, args.reader.boundary(), domain, options, model);
-  if (method == methods::Method::ijiri && !args.ijiri.show.empty()) {
-    if (io::extension_of(args.ijiri.show) != "svg")
-      throw core::UsageError("--show-connectivity: expected an .svg file, got '" + args.ijiri.show +
-                             "'");
-    show_connectivity(dynamic_cast<const methods::SeedAndGrow&>(*synthesizer).exemplar(),
-                      args.ijiri.show);
-    out << "wrote the connectivity to " << args.ijiri.show << '\n';
-  }
-  for (const std::string& line : methods::describe_synthesizer(*synthesizer, exemplar, options))
-    out << line << '\n';
-  if (method == methods::Method::hybrid)
-    out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
+  pipeline::SynthesisRequest request;
+  request.method = method;
+  request.source = args.input;
+  if (method != methods::Method::shape_process)
+    request.options = method_options(args, method, exemplar, domain);
+  FitProgress progress(args.sample.verbosity);
+  if (fits) request_fit(args, arguments, progress, request, record, out);
   record_method_inputs(args, method, record);
-  if (method != methods::Method::tile)
-    args.sample.verbosity.stage(grows ? "growing" : "synthesising");
-  return args.sample.run(*synthesizer, args.output, std::move(record), out);
-}
-
-// --method shape-process or hybrid: fit, then sample (a hybrid from another method's output).
-int run_shape_process(SynthesizeArguments& args, const std::vector<std::string>& arguments,
-                      synthesis::SynthesisRecord record, std::ostream& out) {
-  const bool hybrid = args.method == "hybrid";
-  args.fit.options(args.reader);  // its own checks, before reading or fitting anything
-  args.fit.threads = args.sample.threads;
-  geometry::Scene exemplar;
-  const fit::FitResult fitted =
-      fit_exemplar(args.input, args.fit, args.reader, arguments, args.sample.verbosity,
-                   args.sample.budget.budget(), &exemplar, [&](const geometry::Scene& read) {
-                     args.sample.set_exemplar(read);
-                     args.sample.check_budget(read);
-                   });
-  if (!args.model.empty()) io::write_model(fitted.model, args.model);
-  print_model_brief(fitted.model, out);
-  if (!args.model.empty()) record.inputs.emplace_back("model", args.model);
-  record.options = flatten_options("fit", args.fit.to_json());
-  record_reader(args.reader, record);
-  if (hybrid) return run_method(args, &fitted.model, std::move(record), out);
-  const bool at_exemplar = args.start == "exemplar";
-  record.options.emplace_back("start", at_exemplar ? "exemplar" : "empty");
-  args.sample.verbosity.stage("sampling");
-  return args.sample.run(fitted.model, args.output, std::move(record), out,
-                         at_exemplar ? &exemplar : nullptr);
+  if (method == methods::Method::shape_process)
+    record.options.emplace_back("start", request.start_at_exemplar ? "exemplar" : "empty");
+  if (!fits && method != methods::Method::tile)
+    args.sample.verbosity.stage("analysing the exemplar");
+  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
+  ProgressBar bar(method == methods::Method::shape_process ? "sampling" : "synthesising",
+                  args.sample.verbosity.show_progress());
+  request.sample = args.sample.sampling_request(std::move(record), bar, interrupt.flag());
+  request.sample.ready = [&](const synthesis::Synthesizer& synthesizer,
+                             const pipeline::SynthesisRun& so_far) {
+    show_ready(args, method, synthesizer, so_far, out);
+  };
+  const pipeline::SynthesisRun run =
+      pipeline::synthesize(exemplar, args.reader.boundary(), domain, request);
+  bar.finish();
+  return args.sample.write(run, args.output, out);
 }
 
 // The options of the other methods, each group remembered so that a method refuses the others'.
@@ -287,9 +314,7 @@ int run_synthesize(SynthesizeArguments& args, const std::vector<std::string>& ar
   record.command = "synthesize";
   record.arguments = arguments;
   record.inputs = {{"exemplar", args.input}};
-  if (args.method != "shape-process" && args.method != "hybrid")
-    return run_method(args, nullptr, std::move(record), out);
-  return run_shape_process(args, arguments, std::move(record), out);
+  return run_method(args, arguments, std::move(record), out);
 }
 
 }  // namespace shapeproc::cli
