@@ -162,11 +162,14 @@ struct Step {
   std::vector<double> beta, ratio;
 };
 
+// An anchor pair's γ > 1 place the anchored category on its base (category_layers.hpp); they are
+// not an attraction that condenses, and shrinking them would strip the bases of what they carry.
 bool has_attraction(const model::ShapeProcessModel& model) {
   for (const model::PairInteraction& pair : model.interactions)
-    for (const model::AxisParameters& axis : pair.axes)
-      for (double g : axis.gammas)
-        if (g > 1.0) return true;
+    if (!model.anchors(pair))
+      for (const model::AxisParameters& axis : pair.axes)
+        for (double g : axis.gammas)
+          if (g > 1.0) return true;
   return false;
 }
 
@@ -189,11 +192,14 @@ bool held_by_attraction(const model::ShapeProcessModel& model, const Step& previ
   return over;
 }
 
-void shrink_attraction(model::ShapeProcessModel& model, double factor) {
+// Every log γ > 0 times `factor`: of the pairs that are not anchors, or, with `anchors_too`
+// (a chain that ran away with no other attraction), of every pair.
+void shrink_attraction(model::ShapeProcessModel& model, double factor, bool anchors_too = false) {
   for (model::PairInteraction& pair : model.interactions)
-    for (model::AxisParameters& axis : pair.axes)
-      for (double& g : axis.gammas)
-        if (g > 1.0) g = std::exp(factor * std::log(g));
+    if (anchors_too || !model.anchors(pair))
+      for (model::AxisParameters& axis : pair.axes)
+        for (double& g : axis.gammas)
+          if (g > 1.0) g = std::exp(factor * std::log(g));
 }
 
 }  // namespace
@@ -240,7 +246,7 @@ model::CalibrationRecord calibrate_density(model::ShapeProcessModel& model,
     if (chain.ran_away) {
       record.ran_away = true;
       record.attraction_shrink *= 0.5;
-      shrink_attraction(model, 0.5);
+      shrink_attraction(model, 0.5, !has_attraction(model));
       continue;
     }
     if (record.ratio_before.empty()) record.ratio_before = chain.ratio;

@@ -107,10 +107,7 @@ std::vector<std::string> prune_neutral_pairs(model::ShapeProcessModel& model, do
       }
     }
     // An anchor pair's bands say where the anchored category may be: they stay.
-    const bool anchor_pair =
-        model.categories[static_cast<std::size_t>(pair.first)].anchor == pair.second ||
-        model.categories[static_cast<std::size_t>(pair.second)].anchor == pair.first;
-    if (!neutral || anchor_pair || pair.axes.front().gammas.empty()) continue;
+    if (!neutral || model.anchors(pair) || pair.axes.front().gammas.empty()) continue;
     reduce_to_hard_core(pair);
     std::ostringstream text;
     text << "hard core only: no γ of the pseudo-likelihood differs from 1 by more than " << z

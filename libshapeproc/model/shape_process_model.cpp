@@ -44,6 +44,11 @@ int ShapeProcessModel::layer_count() const {
   return last + 1;
 }
 
+bool ShapeProcessModel::anchors(const PairInteraction& pair) const {
+  return categories[static_cast<std::size_t>(pair.first)].anchor == pair.second ||
+         categories[static_cast<std::size_t>(pair.second)].anchor == pair.first;
+}
+
 double ShapeProcessModel::interaction_range() const {
   double range = 0.0;
   for (const PairInteraction& pair : interactions)

@@ -148,6 +148,9 @@ struct ShapeProcessModel {
   double interaction_range() const;
   // The number of layers: one more than the largest category layer (1 for an unlayered model).
   int layer_count() const;
+  // Whether one category of `pair` is anchored to the other: its bands then say where on its
+  // base the anchored category lies, not how the two attract or repel.
+  bool anchors(const PairInteraction& pair) const;
   // Index into `interactions` of the pair (a, b) in either order, or -1.
   int interaction_index(int a, int b) const;
   // Measurement options for a PairMeasurer on this model's shapes.

@@ -134,5 +134,32 @@ TEST(DensityCalibration, ARunawayChainShrinksTheAttraction) {
               record.attraction_shrink * std::log(30.0), 1e-9);
 }
 
+TEST(DensityCalibration, AShrunkAttractionLeavesTheBandsThatPlaceAnchoredElementsOnTheirBases) {
+  // Bases that attract each other without a hard core run away; points anchored within 2 of a
+  // base, with γ 5 on [0, 2) to it. The bases' attraction is shrunk; the anchor band is not.
+  model::ShapeProcessModel model = testing::point_model(0.0025, {0.0, 3.0}, {30.0});
+  model.categories.push_back({"points", 0.1});
+  model.categories[1].layer = 1;
+  model.categories[1].anchor = 0;
+  model.categories[1].anchor_reach = 2.0;
+  model::PairInteraction pair;
+  pair.first = 0;
+  pair.second = 1;
+  model::AxisParameters axis;
+  axis.thresholds = {0.0, 2.0};
+  axis.gammas = {5.0};
+  pair.axes = {axis};
+  model.interactions.push_back(pair);
+  EXPECT_TRUE(model.anchors(model.interactions[1]));
+  EXPECT_FALSE(model.anchors(model.interactions[0]));
+  CalibrationOptions options;
+  options.rounds = 2;
+  const model::CalibrationRecord record =
+      calibrate_density(model, two_layer_exemplar(25, 250), options);
+  EXPECT_TRUE(record.ran_away);
+  EXPECT_LT(model.interactions[0].axes[0].gammas[0], 30.0);
+  EXPECT_DOUBLE_EQ(model.interactions[1].axes[0].gammas[0], 5.0);
+}
+
 }  // namespace
 }  // namespace shapeproc::fit
