@@ -122,6 +122,13 @@ void children_given_centres(model::ShapeProcessModel& model, int centres,
 
 }  // namespace
 
+ExemplarFitOptions exemplar_fit_options(bool tile) {
+  ExemplarFitOptions options;
+  options.tile = tile;
+  if (tile) options.fit.boundary = geometry::Boundary::torus;
+  return options;
+}
+
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options) {
   const bool likelihood = options.likelihood &&
                           (options.tile || exemplar.elements.size() <= options.likelihood_elements);

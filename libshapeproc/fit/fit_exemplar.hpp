@@ -54,6 +54,10 @@ struct ExemplarFit {
   int repeats = 1;
 };
 
+// The defaults for an exemplar read as a seamless tile (`tile`) or not: a tile is fitted on its
+// torus (FitOptions::boundary), as `shapeproc fit --tile` fits it.
+ExemplarFitOptions exemplar_fit_options(bool tile);
+
 // Throws core::ArgumentError for options out of range, std::invalid_argument for an exemplar the
 // fit cannot take (no elements, a category without any).
 ExemplarFit fit_exemplar(const geometry::Scene& exemplar, const ExemplarFitOptions& options);

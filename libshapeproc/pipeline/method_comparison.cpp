@@ -22,8 +22,7 @@ namespace {
 // The request that runs `method` (a name of comparable_methods) with its defaults.
 SynthesisRequest method_request(const std::string& method, const io::ReaderOptions& reader) {
   SynthesisRequest request;
-  request.fit.tile = reader.tile;
-  if (reader.tile) request.fit.fit.boundary = geometry::Boundary::torus;
+  request.fit = fit::exemplar_fit_options(reader.tile);
   if (method == "centroid") request.fit.fit.measurement.distance = geometry::DistanceKind::centroid;
   if (method == "hausdorff")
     request.fit.fit.measurement.distance = geometry::DistanceKind::hausdorff;

@@ -108,3 +108,39 @@ def test_write_read_and_model_round_trip(tmp_path, dots, dots_model):
     assert np.array_equal(loaded.beta, dots_model.beta)
     assert loaded.categories == dots_model.categories
     assert json.loads(loaded.to_json())["interaction"] == json.loads(dots_model.to_json())["interaction"]
+
+
+def test_sample_is_the_commands_output(dots_model, tmp_path):
+    """The same model, size and seed give `shapeproc sample`'s output, element for element."""
+    command = os.environ.get("SHAPEPROC")
+    if not command:
+        pytest.skip("SHAPEPROC (the command) is not set")
+    import subprocess
+    model = tmp_path / "model.json"
+    dots_model.save(str(model))
+    out = tmp_path / "out.csv"
+    subprocess.run([command, "sample", str(model), "--size", "300,300", "--seed", "5", "-o",
+                    str(out), "--quiet"], check=True, capture_output=True)
+    made = shapeproc.sample(dots_model, [300, 300], seed=5)
+    rows = np.loadtxt(out, delimiter=",", skiprows=1, usecols=(0, 1), ndmin=2)
+    assert rows.shape == made.positions.shape
+    assert np.allclose(rows, made.positions, atol=1e-6)
+
+
+def test_fit_of_a_tile_is_periodic():
+    """A seamless tile is fitted on its torus, as `shapeproc fit --tile` fits it."""
+    tile = shapeproc.read(os.path.join(DATA, "third-party", "hero-patterns", "bubbles.svg"),
+                          tile=True)
+    model = shapeproc.fit(tile, estimator="mpl", tile=True)
+    assert json.loads(model.to_json())["fit"]["edge"] == "periodic"
+
+
+def test_compare_writes_every_method_and_the_page(tmp_path):
+    runs = shapeproc.compare(DOTS, "2W,2H", str(tmp_path / "page"), methods="tile,davison", seed=2)
+    assert [r["method"] for r in runs] == ["tile", "davison"]
+    for r in runs:
+        assert r["failure"] == ""
+        assert os.path.exists(r["output"]) and r["elements"] > 0
+    assert os.path.exists(runs[0]["index"])
+    with pytest.raises(RuntimeError, match="methods"):
+        shapeproc.compare(DOTS, "2W,2H", str(tmp_path / "bad"), methods="tile,magic")

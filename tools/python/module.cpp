@@ -8,15 +8,15 @@
 #include <optional>
 #include <string>
 
-#include "libshapeproc/core/random.hpp"
 #include "libshapeproc/fit/fit_exemplar.hpp"
-#include "libshapeproc/fit/output_sampling.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/points_scene.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
 #include "libshapeproc/metrics/scene_statistics.hpp"
 #include "libshapeproc/model/model_edits.hpp"
+#include "libshapeproc/pipeline/method_comparison.hpp"
+#include "libshapeproc/pipeline/synthesis_run.hpp"
 #include "tools/python/arrays.hpp"
 
 namespace shapeproc::python {
@@ -64,8 +64,7 @@ Scene points(const py::array_t<double>& positions, std::optional<py::array_t<int
 }
 
 Model fit(const Scene& scene, const std::string& estimator, bool tile) {
-  fit::ExemplarFitOptions options;
-  options.tile = tile;
+  fit::ExemplarFitOptions options = fit::exemplar_fit_options(tile);
   if (estimator == "mpl") {
     options.likelihood.reset();
   } else if (estimator == "mle") {
@@ -79,8 +78,10 @@ Model fit(const Scene& scene, const std::string& estimator, bool tile) {
 // An output of `model` on a torus of `size`, from empty, as `shapeproc sample` makes it.
 Scene sample(const Model& model, const std::vector<double>& size, std::uint64_t seed) {
   const geometry::Domain domain = geometry::Domain::from_sizes(size, geometry::Boundary::torus);
-  core::Random random(seed);
-  Scene out = fit::output_sampler(model, domain).sample(random).scene;
+  pipeline::SamplingRequest request;
+  request.chains.seed = seed;
+  request.chains.record.command = "python";
+  Scene out = std::move(pipeline::sample_model(model, domain, request).results.front().scene);
   std::string sides;
   for (double side : size) sides += (sides.empty() ? "" : ",") + std::to_string(side);
   out.notes.push_back("sampled by shapeproc.sample: seed " + std::to_string(seed) + ", size " +
@@ -130,6 +131,38 @@ py::dict measure(const Scene& scene) {
   out["g_r"] = vector_array(s.correlation_r);
   out["g"] = vector_array(s.correlation);
   out["overlapping_pairs"] = s.collisions.pairs.size();
+  return out;
+}
+
+// Every method of `methods` on the exemplar at `path`, with the page, as `shapeproc compare`.
+py::list compare(const std::string& path, const std::string& size, const std::string& directory,
+                 const std::optional<std::string>& methods, std::uint64_t seed,
+                 const std::string& category_by, bool tile) {
+  pipeline::MethodComparisonRequest request;
+  request.exemplar = path;
+  request.reader.category_by = io::CategoryRule::parse(category_by);
+  request.reader.tile = tile;
+  request.size = size;
+  request.seed = seed;
+  if (methods) request.methods = pipeline::parse_compared_methods(*methods);
+  request.directory = directory;
+  request.command = "shapeproc.compare(" + path + ")";
+  pipeline::MethodComparison done;
+  {
+    py::gil_scoped_release release;
+    done = pipeline::compare_methods(request);
+  }
+  py::list out;
+  for (const pipeline::MethodRun& run : done.runs) {
+    py::dict d;
+    d["method"] = run.method;
+    d["output"] = run.output;
+    d["failure"] = run.failure;
+    d["seconds"] = run.seconds;
+    d["elements"] = run.elements;
+    d["index"] = done.report.index;
+    out.append(d);
+  }
   return out;
 }
 
@@ -215,6 +248,12 @@ PYBIND11_MODULE(shapeproc, m) {
       "Read a model file written by `shapeproc fit` or Model.save");
   m.def("sample", &sample, py::arg("model"), py::arg("size"), py::arg("seed") = 1, Release(),
         "An output of the model on a torus of the given size, from empty");
+  m.def("compare", &compare, py::arg("path"), py::arg("size"), py::arg("directory"),
+        py::arg("methods") = py::none(), py::arg("seed") = 1, py::arg("category_by") = "none",
+        py::arg("tile") = false,
+        "Every synthesis method on one exemplar, each output and a page comparing them written "
+        "to the directory, as `shapeproc compare`; a dict per method (failure: why it failed, "
+        "empty when it ran)");
   m.def("measure", &measure, py::arg("scene"),
         "Counts, intensities, nearest-neighbour distances and g(r), as `shapeproc stats`");
   m.def("write", &write_scene, py::arg("scene"), py::arg("path"), py::arg("provenance") = "",
