@@ -11,19 +11,7 @@ namespace shapeproc::fit {
 namespace {
 
 // 100 uniform points in a 100 x 100 window: density 0.01.
-geometry::Scene poisson_exemplar() {
-  geometry::Scene scene;
-  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
-  scene.category_index("points");
-  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  core::Random random(7);
-  for (int k = 0; k < 100; ++k) {
-    geometry::Element e;
-    e.position = geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0);
-    scene.elements.push_back(e);
-  }
-  return scene;
-}
+geometry::Scene poisson_exemplar() { return testing::uniform_points({{"points", 100}}, 100, 7); }
 
 TEST(DensityCalibration, APoissonModelsWrongIntensityIsCorrectedToTheExemplarsDensity) {
   model::ShapeProcessModel model = testing::point_model(0.004);
@@ -55,19 +43,7 @@ TEST(DensityCalibration, AModelThatAgreesIsLeftAlone) {
 
 // `bases` bases and `points` points in a 100 x 100 window, each category uniform.
 geometry::Scene two_layer_exemplar(int bases, int points) {
-  geometry::Scene scene;
-  scene.window = geometry::Box3(geometry::Vec3(0, 0, 0), geometry::Vec3(100, 100, 0));
-  scene.category_index("bases");
-  scene.category_index("points");
-  scene.shapes.push_back(geometry::Shape{geometry::PointShape{}, "point"});
-  core::Random random(11);
-  for (int k = 0; k < bases + points; ++k) {
-    geometry::Element e;
-    e.position = geometry::Vec3(random.uniform(0, 100), random.uniform(0, 100), 0);
-    e.category = k < bases ? 0 : 1;
-    scene.elements.push_back(e);
-  }
-  return scene;
+  return testing::uniform_points({{"bases", bases}, {"points", points}}, 100, 11);
 }
 
 TEST(DensityCalibration, AFewBasesBelowManyPointsAreMeasuredOnTheirOwnLayersChain) {
