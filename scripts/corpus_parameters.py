@@ -56,7 +56,10 @@ def main():
     names = only or list(rows)
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
-    shown = (f"--only {args.only} " if args.only else "") + f"--timeout {args.timeout:g} {args.out}"
+    # The output as the reader would type it: relative to the repository, or a placeholder.
+    out = os.path.abspath(args.out)
+    shown_out = os.path.relpath(out, ROOT) if out.startswith(ROOT + os.sep) else "OUT.md"
+    shown = (f"--only {args.only} " if args.only else "") + f"--timeout {args.timeout:g} {shown_out}"
     lines = ["# The parameters the default fit chooses, per corpus exemplar", "",
              f"Command: `python3 scripts/corpus_parameters.py {shown}` at commit {commit}, "
              f"{datetime.date.today().isoformat()}, on 2 cores.", "",
