@@ -118,8 +118,6 @@ struct SampleFlags {
   // Every file the run writes for `output`: each chain's output (suffixed -1, -2, ... with
   // several chains) and its record beside a .csv, its picture and its trace.
   std::vector<std::string> files_written(const std::string& output) const;
-  // Chains that run at the same time (--chains, --threads and the machine's cores).
-  int chains_at_once() const;
   // Steps a run may take: some hours at the sampler's fraction of a microsecond per step.
   static constexpr long long kMaxIterations = 10'000'000'000;
   // The sampler's options from --iterations, --shift-probability, --shift-radius and --trace.

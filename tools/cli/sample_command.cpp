@@ -9,10 +9,7 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/interruption.hpp"
-#include "libshapeproc/core/parallel_for.hpp"
-#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/fit/output_sampling.hpp"
-#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/domain_io.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
@@ -21,9 +18,7 @@
 #include "libshapeproc/pipeline/synthesis_run.hpp"
 #include "libshapeproc/render/raster.hpp"
 #include "libshapeproc/sample/birth_death_sampler.hpp"
-#include "libshapeproc/sample/output_estimate.hpp"
 #include "libshapeproc/synthesis/output_check.hpp"
-#include "libshapeproc/synthesis/run_chains.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
 #include "tools/cli/flags.hpp"
@@ -149,8 +144,6 @@ std::vector<std::string> SampleFlags::files_written(const std::string& output) c
   }
   return files;
 }
-
-int SampleFlags::chains_at_once() const { return synthesis::chains_at_once(chains, threads); }
 
 void SampleFlags::check(const std::string& output, int dimension) const {
   // Before the exemplar is read, multiples are checked for their syntax only.

@@ -12,7 +12,6 @@
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/interruption.hpp"
-#include "libshapeproc/fit/fit_maximum_likelihood.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/io/text.hpp"
