@@ -53,7 +53,7 @@ CancellableSection::CancellableSection() {
 
 CancellableSection::~CancellableSection() { sections.fetch_sub(1); }
 
-const std::atomic<bool>* CancellableSection::flag() const { return &interrupted; }
+const std::atomic<bool>* CancellableSection::flag() { return &interrupted; }
 
 TemporaryFileMark::TemporaryFileMark(const std::string& path) {
   if (path.size() >= kPathBytes) return;

@@ -19,8 +19,9 @@ class CancellableSection {
   ~CancellableSection();
   CancellableSection(const CancellableSection&) = delete;
   CancellableSection& operator=(const CancellableSection&) = delete;
-  // Set by the first signal while the section is alive.
-  const std::atomic<bool>* flag() const;
+  // Set by the first signal while a section is alive; the same flag for every section, so a
+  // run may take it before the section that guards its chains begins.
+  static const std::atomic<bool>* flag();
 };
 
 // Marks `path` as a temporary file being written while alive, for the handler to remove.

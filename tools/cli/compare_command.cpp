@@ -8,7 +8,6 @@
 #include <memory>
 
 #include "libshapeproc/core/error.hpp"
-#include "libshapeproc/core/interruption.hpp"
 #include "libshapeproc/pipeline/method_comparison.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
@@ -60,8 +59,8 @@ void add_compare_command(CLI::App& app, Action& action, const std::vector<std::s
       request.directory = args->directory;
       request.metrics = args->metrics.options();
       request.command = command_line(arguments);
-      const core::CancellableSection interrupt;  // Ctrl-C stops the whole comparison
-      request.cancel = interrupt.flag();
+      // No cancellable section: Ctrl-C ends the comparison at once; each output is written whole
+      // or not at all.
       request.starting = [&out](std::size_t index, std::size_t count, const std::string& method) {
         out << '[' << index << '/' << count << "] " << method << std::endl;
       };

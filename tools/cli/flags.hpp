@@ -142,6 +142,10 @@ struct SampleFlags {
   int write(const pipeline::SynthesisRun& run, const std::string& output, std::ostream& out) const;
 };
 
+// What a run says once its method is ready, before its chains run: what the method learnt, and
+// its warnings, with the library's {option} marks named as flags.
+void print_ready(const pipeline::SynthesisRun& so_far, std::ostream& out);
+
 // A JSON object's leaves as (prefix.key, text) pairs, in key order (for a record's options).
 std::vector<std::pair<std::string, std::string>> flatten_options(const std::string& prefix,
                                                                  const nlohmann::json& object);

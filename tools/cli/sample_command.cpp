@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <system_error>
 
 #include "libshapeproc/core/atomic_file.hpp"
@@ -27,13 +28,6 @@
 namespace shapeproc::cli {
 
 namespace {
-
-// What the run said before its chains ran: what the method learnt, and warnings.
-void print_lines(const pipeline::SynthesisRun& run, std::ostream& out) {
-  for (const std::string& line : run.described) out << line << '\n';
-  for (const std::string& line : run.warnings)
-    out << "warning: " << core::name_options(line, flag_for) << '\n';
-}
 
 // out.svg → out-2.svg for chain 2 of several; unchanged for a single chain.
 std::string suffixed(const std::string& path, int chain, int chains) {
@@ -230,6 +224,12 @@ geometry::Domain SampleFlags::domain(int dimension) const {
   return io::read_domain(files, dimension);
 }
 
+void print_ready(const pipeline::SynthesisRun& so_far, std::ostream& out) {
+  for (const std::string& line : so_far.described) out << line << '\n';
+  for (const std::string& line : so_far.warnings)
+    out << "warning: " << core::name_options(line, flag_for) << '\n';
+}
+
 pipeline::SamplingRequest SampleFlags::sampling_request(synthesis::SynthesisRecord record,
                                                         ProgressBar& bar,
                                                         const std::atomic<bool>* cancel) const {
@@ -251,11 +251,13 @@ int SampleFlags::run(const model::ShapeProcessModel& model, const std::string& o
                      synthesis::SynthesisRecord record, std::ostream& out,
                      const geometry::Scene* start_tile) const {
   check(output, model.dimension);
-  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
+  std::optional<core::CancellableSection> interrupt;  // Ctrl-C stops the chains; nothing is written
   ProgressBar bar("sampling", verbosity.show_progress());
-  pipeline::SamplingRequest request = sampling_request(std::move(record), bar, interrupt.flag());
-  request.ready = [&out](const synthesis::Synthesizer&, const pipeline::SynthesisRun& so_far) {
-    print_lines(so_far, out);
+  pipeline::SamplingRequest request =
+      sampling_request(std::move(record), bar, core::CancellableSection::flag());
+  request.ready = [&](const synthesis::Synthesizer&, const pipeline::SynthesisRun& so_far) {
+    print_ready(so_far, out);
+    interrupt.emplace();
   };
   const pipeline::SynthesisRun run =
       pipeline::sample_model(model, domain(model.dimension), request, start_tile);

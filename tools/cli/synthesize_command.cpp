@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <system_error>
 #include <vector>
 
@@ -123,9 +124,7 @@ void show_ready(const SynthesizeArguments& args, methods::Method method,
                       args.ijiri.show);
     out << "wrote the connectivity to " << args.ijiri.show << '\n';
   }
-  for (const std::string& line : so_far.described) out << line << '\n';
-  for (const std::string& line : so_far.warnings)
-    out << "warning: " << core::name_options(line, flag_for) << '\n';
+  print_ready(so_far, out);
   if (method == methods::Method::hybrid)
     out << "hybrid: " << args.start_from << "'s output, then the shape-process sampler\n";
   const bool grows = method == methods::Method::ijiri || method == methods::Method::davison;
@@ -186,13 +185,17 @@ int run_method(SynthesizeArguments& args, const std::vector<std::string>& argume
     record.options.emplace_back("start", request.start_at_exemplar ? "exemplar" : "empty");
   if (!fits && method != methods::Method::tile)
     args.sample.verbosity.stage("analysing the exemplar");
-  const core::CancellableSection interrupt;  // Ctrl-C stops the chains; nothing is written
+  // Ctrl-C during the chains stops them and nothing is written; during the fit it ends the run at
+  // once, as before any other long stage.
+  std::optional<core::CancellableSection> interrupt;
   ProgressBar bar(method == methods::Method::shape_process ? "sampling" : "synthesising",
                   args.sample.verbosity.show_progress());
-  request.sample = args.sample.sampling_request(std::move(record), bar, interrupt.flag());
+  request.sample =
+      args.sample.sampling_request(std::move(record), bar, core::CancellableSection::flag());
   request.sample.ready = [&](const synthesis::Synthesizer& synthesizer,
                              const pipeline::SynthesisRun& so_far) {
     show_ready(args, method, synthesizer, so_far, out);
+    interrupt.emplace();
   };
   const pipeline::SynthesisRun run =
       pipeline::synthesize(exemplar, args.reader.boundary(), domain, request);
