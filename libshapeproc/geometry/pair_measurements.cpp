@@ -131,6 +131,25 @@ PairMeasurer::PairMeasurer(const Scene& scene, const MeasurementOptions& options
     expansions_->tables.resize(n * n);
     expansions_->once = std::make_unique<std::once_flag[]>(n * n);
   }
+  mass_size_.assign(mass.begin(), mass.end());
+  constexpr std::size_t kMaximumTableShapes = 1024;  // 4 MB of per-pair query counts
+  if (options_.direction == DirectionKind::gravitation && bins_.directions() > 1 &&
+      scene.shapes.size() <= kMaximumTableShapes) {
+    forces_ =
+        std::make_shared<ForceTable>(dimension_, bins_, scene.shapes.size() * scene.shapes.size());
+    // Shapes with the same proxy share their grids: the first of them stands for the others.
+    table_shape_.resize(scene.shapes.size());
+    for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+      table_shape_[s] = static_cast<int>(s);
+      for (std::size_t t = 0; t < s; ++t) {
+        if (table_shape_[t] == static_cast<int>(t) &&
+            same_proxy(static_cast<int>(t), static_cast<int>(s))) {
+          table_shape_[s] = static_cast<int>(t);
+          break;
+        }
+      }
+    }
+  }
   if (!scene.elements.empty()) {
     for (const Element& e : scene.elements) {
       statistics_.source_per_element += static_cast<double>(source.at(e.shape));
@@ -349,6 +368,28 @@ double PairMeasurer::distance(int a, int b, const Vec3& offset, double cutoff,
   return cutoff;
 }
 
+Vec3 PairMeasurer::gravitation_force_between(int a, int b, const Vec3& offset) const {
+  if (dimension_ == 2) {
+    Vec3 force = Vec3::Zero();
+    force.head<2>() =
+        gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), expansion(a, b));
+    return force;
+  }
+  const Proxy3& pa = proxies3_[a];
+  const Proxy3& pb = proxies3_[b];
+  if (pa.closed && pb.closed) return gravitation_force(pa.solid, pb.solid, offset);
+  return gravitation_force(pa.mass, pb.mass, offset, options_.gravitation_theta);
+}
+
+double PairMeasurer::negligible_force(int a, int b, const Vec3& offset) const {
+  const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  const double scale = dimension_ == 2
+                           ? proxies2_[i].mass.area * proxies2_[j].mass.area
+                           : proxies3_[i].mass.total_mass() * proxies3_[j].mass.total_mass();
+  return 1e-12 * scale /
+         std::max(1e-300, std::pow(radii_[i] + radii_[j] + offset.norm(), dimension_ - 1));
+}
+
 Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const {
   // Two round shapes whose outer circles are apart pull along the line from one centre (its
   // reference position) to the other: the centroid direction, exactly (round_shape.hpp).
@@ -356,31 +397,35 @@ Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const
     const double ra = round_[static_cast<std::size_t>(a)], rb = round_[static_cast<std::size_t>(b)];
     if (ra >= 0 && rb >= 0 && offset.norm() > ra + rb) return offset.normalized();
   }
-  Vec3 force = Vec3::Zero();
-  double scale = 0.0;
-  if (dimension_ == 2) {
-    const Vec2 f =
-        gravitation_force(proxies2_[a].mass, proxies2_[b].mass, offset.head<2>(), expansion(a, b));
-    force.head<2>() = f;
-    scale = proxies2_[a].mass.area * proxies2_[b].mass.area;
-  } else {
-    const Proxy3& pa = proxies3_[a];
-    const Proxy3& pb = proxies3_[b];
-    if (pa.closed && pb.closed) {
-      force = gravitation_force(pa.solid, pb.solid, offset);
-    } else {
-      force = gravitation_force(pa.mass, pb.mass, offset, options_.gravitation_theta);
-    }
-    scale = pa.mass.total_mass() * pb.mass.total_mass();
-  }
-  const double norm = force.norm();
+  const Vec3 force = gravitation_force_between(a, b, offset);
   // A force that cancels (a dot centred in a ring) has no direction: fall back to the centroids.
-  if (!(norm >
-        1e-12 * scale /
-            std::max(1e-300, std::pow(radii_[a] + radii_[b] + offset.norm(), dimension_ - 1)))) {
+  if (!(force.norm() > negligible_force(a, b, offset))) {
     return offset.norm() > 0 ? Vec3(offset.normalized()) : Vec3(Vec3::UnitX());
   }
-  return force / norm;
+  return force.normalized();
+}
+
+std::optional<int> PairMeasurer::table_axis(int a, int b, const Vec3& offset) const {
+  if (!forces_) return std::nullopt;
+  a = table_shape_[static_cast<std::size_t>(a)];
+  b = table_shape_[static_cast<std::size_t>(b)];
+  // A direction and its opposite share an axis.
+  if (a > b || (a == b && lexicographically_negative(offset))) return table_axis(b, a, -offset);
+  const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  if (mass_size_[i] * mass_size_[j] < kForceTableCost) return std::nullopt;
+  if (dimension_ == 2 && round_[i] >= 0 && round_[j] >= 0 && offset.norm() > round_[i] + round_[j])
+    return std::nullopt;  // the exact direction is cheaper
+  return forces_->axis(i * mass_size_.size() + j, kForceTablePitch * (radii_[i] + radii_[j]),
+                       offset, negligible_force(a, b, offset), [this, a, b](const Vec3& at) {
+                         return gravitation_force_between(a, b, at);
+                       });
+}
+
+int PairMeasurer::axis(int a, int b, const Vec3& offset) const {
+  if (options_.direction == DirectionKind::gravitation) {
+    if (const std::optional<int> from_table = table_axis(a, b, offset)) return *from_table;
+  }
+  return bins_.axis_of(direction(a, b, offset));
 }
 
 const PairExpansion* PairMeasurer::expansion(int a, int b) const {

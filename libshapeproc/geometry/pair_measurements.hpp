@@ -7,10 +7,12 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "libshapeproc/geometry/directions.hpp"
+#include "libshapeproc/geometry/force_table.hpp"
 #include "libshapeproc/geometry/proxy.hpp"
 #include "libshapeproc/geometry/scene.hpp"
 
@@ -73,6 +75,9 @@ class PairMeasurer {
   // Unit direction of the relative orientation, exactly antisymmetric:
   // direction(b, a, -offset) == -direction(a, b, offset).
   Vec3 direction(int a, int b, const Vec3& offset) const;
+  // bins().axis_of(direction(a, b, offset)), read for detailed pairs queried many times from a
+  // table of their forces on a grid of offsets where it vouches for the axis (force_table.hpp).
+  int axis(int a, int b, const Vec3& offset) const;
 
   // Measures two elements; periodic windows use the image of `second` nearest to `first` in the
   // distance being measured. With a cutoff, returns distance = cutoff (and no direction) when
@@ -123,6 +128,8 @@ class PairMeasurer {
                                     double range = kNoCutoff) const;
 
   const DirectionBins& bins() const { return bins_; }
+  // The table axis() reads detailed pairs from (nullptr for centroid directions).
+  const ForceTable* force_table() const { return forces_.get(); }
   const MeasurementOptions& options() const { return options_; }
   const ProxyStatistics& statistics() const { return statistics_; }
   int dimension() const { return dimension_; }
@@ -140,6 +147,12 @@ class PairMeasurer {
                          const std::vector<double>& breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
+  // The exact gravitation force between shape a at the origin and b at `offset`, and the norm
+  // below which it has no direction (a force that cancels, such as a dot's centred in a ring).
+  Vec3 gravitation_force_between(int a, int b, const Vec3& offset) const;
+  double negligible_force(int a, int b, const Vec3& offset) const;
+  // The axis from the force table, when the pair has one and it vouches for the axis.
+  std::optional<int> table_axis(int a, int b, const Vec3& offset) const;
   // The mutual-potential table of shapes a ≤ b (2D regions), built on first use; nullptr when
   // the shape space is too large to keep one per pair.
   const PairExpansion* expansion(int a, int b) const;
@@ -164,6 +177,14 @@ class PairMeasurer {
   std::vector<double> outline_out_, outline_in_;
   ProxyStatistics statistics_;
   std::shared_ptr<ExpansionCache> expansions_;  // shared by copies; empty in 3D
+  // Axes of the gravitation directions of detailed pairs (force_table.hpp), shared by copies:
+  // pairs whose product of mass sizes (2D boundary edges, 3D triangles or cubature points)
+  // reaches kForceTableCost, on a grid of pitch kForceTablePitch times the sum of their radii.
+  static constexpr std::size_t kForceTableCost = 256;
+  static constexpr double kForceTablePitch = 1.0 / 64;
+  std::vector<std::size_t> mass_size_;
+  std::vector<int> table_shape_;  // per shape, the first shape with the same proxy
+  std::shared_ptr<ForceTable> forces_;
 };
 
 }  // namespace shapeproc::geometry

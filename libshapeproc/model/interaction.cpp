@@ -132,10 +132,7 @@ void decide_axis(const Interaction& interaction, const geometry::PairMeasurer& m
     return;
   }
   const int known = measurer.axis_from_boxes(xi.shape, neighbour.shape, effect.offset);
-  effect.axis =
-      known >= 0
-          ? known
-          : measurer.bins().axis_of(measurer.direction(xi.shape, neighbour.shape, effect.offset));
+  effect.axis = known >= 0 ? known : measurer.axis(xi.shape, neighbour.shape, effect.offset);
   effect.band = interaction.band(xi.category, neighbour.category, effect.axis, effect.distance);
   effect.axis_pending = false;
 }
