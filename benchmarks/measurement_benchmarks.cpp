@@ -78,6 +78,32 @@ void BM_DirectionGears(benchmark::State& state) {
 }
 BENCHMARK(BM_DirectionGears)->Arg(50)->Arg(500)->Arg(2000);
 
+// The axis of the two gears' direction over a chain-like stream of offsets: 4,096 offsets near
+// contact (centres 2.0–2.3 apart, within 0.3 of the line of centres), asked over and over. With
+// the table (table = 1) against the exact integral each time (table = 0); `answered` is the
+// table's share of the queries.
+void BM_AxisFromTable(benchmark::State& state, bool table) {
+  const Scene scene = two_gears(static_cast<int>(state.range(0)));
+  const PairMeasurer measurer(scene, exact_proxies());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> along(2.0, 2.3), across(-0.3, 0.3);
+  std::vector<Vec3> offsets;
+  for (int k = 0; k < 4096; ++k) offsets.emplace_back(along(rng), across(rng), 0.0);
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Vec3& offset = offsets[next++ % offsets.size()];
+    benchmark::DoNotOptimize(table ? measurer.axis(0, 1, offset)
+                                   : measurer.bins().axis_of(measurer.direction(0, 1, offset)));
+  }
+  state.counters["segments"] = static_cast<double>(measurer.proxies2()[0].segment_count());
+  if (table) {
+    state.counters["answered"] = static_cast<double>(measurer.force_table()->answered()) /
+                                 static_cast<double>(measurer.force_table()->queries());
+  }
+}
+BENCHMARK_CAPTURE(BM_AxisFromTable, exact, false)->Arg(500)->Iterations(20000);
+BENCHMARK_CAPTURE(BM_AxisFromTable, table, true)->Arg(500)->Iterations(20000);
+
 // UV spheres of radius 1, 0.2 apart: 50 triangles (5 x 6) or 500 (25 x 11).
 Scene two_spheres(int triangles) {
   const TriangleMesh mesh =
