@@ -74,7 +74,7 @@ Scene detailed_shapes() {
   }
   std::mt19937 rng(3);
   return fixtures::scene_of(
-      {fixtures::planar({fixtures::polygon(gear)}), fixtures::random_polygon(rng, 60, 0.8)},
+      {fixtures::planar({fixtures::polygon(gear)}), fixtures::random_polygon(rng, 100, 0.8)},
       {{0, 0}, {3, 0}});
 }
 
