@@ -6,8 +6,9 @@
 // for to its final preview. Prints per edit the seconds to the first picture (a draft continued
 // from the one on screen) and to the final one (the chain `sample` runs, and the verdicts), and
 // a summary line: "median draft S max draft S median final S max final S elements N draft/final
-// R" (R: the median ratio of the draft's element count to the final picture's, how near the
-// draft comes to the edited model's equilibrium).
+// R cut C" (C: the final chains cut short at the studio's time limit, of 12; R: the median ratio of
+// the draft's element count to the final picture's, how near the draft comes to the edited model's
+// equilibrium).
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +33,7 @@ double median(std::vector<double> v) {
 struct Timing {
   double draft = -1, final = 0;  // seconds from the edit
   int draft_elements = 0, elements = 0;
+  bool cut = false;  // the final chain was cut short at the studio's time limit
 };
 
 // The draft's and the final picture's seconds after an edit of revision `revision`.
@@ -46,9 +48,10 @@ Timing wait_for(const studio::StudioSession& session, long long revision, long l
       t.draft = p->seconds;
       t.draft_elements = p->elements;
     }
-    if (p->stage == studio::PreviewStage::final) {
+    if (p->stage != studio::PreviewStage::draft) {
       t.final = p->seconds;
       t.elements = p->elements;
+      t.cut = p->stage == studio::PreviewStage::cut;
       return t;
     }
   }
@@ -84,7 +87,7 @@ int main(int argc, char** argv) {
     std::printf("first picture %.3f s, %d elements\n", first.final, first.elements);
     const double beta = session.state().model->categories[0].beta;
     std::vector<double> drafts, finals, ratios;
-    int elements = 0;
+    int elements = 0, cut = 0;
     for (int e = 0; e < 12; ++e) {
       studio::ModelEdit edit;
       if (e % 4 < 2) {
@@ -95,8 +98,9 @@ int main(int argc, char** argv) {
       }
       session.edit(edit);
       const Timing t = wait_for(session, session.state().revision, after);
-      std::printf("edit %2d: draft %.3f s (%d elements), final %.3f s (%d elements)\n", e + 1,
-                  t.draft, t.draft_elements, t.final, t.elements);
+      std::printf("edit %2d: draft %.3f s (%d elements), final %.3f s (%d elements)%s\n", e + 1,
+                  t.draft, t.draft_elements, t.final, t.elements, t.cut ? ", cut short" : "");
+      cut += t.cut;
       drafts.push_back(t.draft);
       finals.push_back(t.final);
       ratios.push_back(t.elements > 0 ? static_cast<double>(t.draft_elements) / t.elements : 0.0);
@@ -104,9 +108,9 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "median draft %.3f max draft %.3f median final %.3f max final %.3f elements %d "
-        "draft/final %.2f\n",
+        "draft/final %.2f cut %d\n",
         median(drafts), *std::max_element(drafts.begin(), drafts.end()), median(finals),
-        *std::max_element(finals.begin(), finals.end()), elements, median(ratios));
+        *std::max_element(finals.begin(), finals.end()), elements, median(ratios), cut);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "studio_latency: %s\n", e.what());
     return 2;

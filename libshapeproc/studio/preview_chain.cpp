@@ -13,11 +13,13 @@ namespace {
 
 synthesis::SynthesisResult run_one(const sample::ShapeProcessSampler& sampler,
                                    const PreviewSpec& spec, synthesis::SynthesisRecord record,
-                                   const std::atomic<bool>* cancel) {
+                                   const std::atomic<bool>* cancel,
+                                   const std::function<void()>& watch = {}) {
   synthesis::ChainOptions chains;
   chains.seed = spec.seed;
   chains.record = std::move(record);
   chains.cancel = cancel;
+  if (watch) chains.progress = [&watch](long long, long long) { watch(); };
   return std::move(synthesis::run_chains(sampler, chains).front());
 }
 
@@ -25,14 +27,15 @@ synthesis::SynthesisResult run_one(const sample::ShapeProcessSampler& sampler,
 
 synthesis::SynthesisResult sample_output(const model::ShapeProcessModel& model,
                                          const PreviewSpec& spec, synthesis::SynthesisRecord record,
-                                         const std::atomic<bool>* cancel) {
+                                         const std::atomic<bool>* cancel,
+                                         const std::function<void()>& watch) {
   const geometry::Domain domain =
       geometry::Domain::from_sizes(spec.size, geometry::Boundary::torus);
   fit::OutputSampling sampling;
   sampling.exemplar_density = io::recorded_exemplar_density(model);
   const sample::ShapeProcessSampler sampler(model, domain,
                                             fit::output_sampler_options(model, domain, sampling));
-  return run_one(sampler, spec, std::move(record), cancel);
+  return run_one(sampler, spec, std::move(record), cancel, watch);
 }
 
 long long draft_steps(std::size_t start_count) {

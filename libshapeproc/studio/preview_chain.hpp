@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "libshapeproc/geometry/scene.hpp"
@@ -22,10 +23,12 @@ struct PreviewSpec {
 
 // `shapeproc sample`'s output for `model` (its options: fit::output_sampler_options, one chain
 // of `spec.seed` on a torus of `spec.size`). `record` holds the caller's part of the output's
-// record (command, arguments, inputs). Throws core::Cancelled once `cancel` is set.
+// record (command, arguments, inputs). Throws core::Cancelled once `cancel` is set; `watch`, if
+// given, is called every so many steps (it may set `cancel`).
 synthesis::SynthesisResult sample_output(const model::ShapeProcessModel& model,
                                          const PreviewSpec& spec, synthesis::SynthesisRecord record,
-                                         const std::atomic<bool>* cancel);
+                                         const std::atomic<bool>* cancel,
+                                         const std::function<void()>& watch = {});
 
 // Steps a draft takes from `start_count` elements: enough sweeps for the edited interaction to
 // move every element several times, bounded so that a draft stays a fraction of a second.

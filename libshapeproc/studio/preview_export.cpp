@@ -58,14 +58,20 @@ ExportResult StudioSession::export_preview(const std::string& name, bool overwri
   s.changed.wait(lock, [&] {
     return s.stopping || s.revision != wanted ||
            (s.final_output && s.final_output->revision == wanted) ||
-           (s.latest && s.latest->revision == wanted && s.latest->stage == PreviewStage::final);
+           (s.latest && s.latest->revision == wanted && s.latest->stage != PreviewStage::draft);
   });
   if (s.stopping || s.revision != wanted)
     throw core::UsageError("the model changed while the export waited: export again");
   if (!s.final_output || s.final_output->revision != wanted)
     throw core::UsageError("the preview failed: " + (s.latest ? s.latest->note : std::string()));
-  const FinalOutput output = *s.final_output;
+  FinalOutput output = *s.final_output;
   lock.unlock();
+  // A preview cut short at the time limit: its output, sampled in full now.
+  if (!output.result) {
+    synthesis::SynthesisRecord record;
+    record.command = "sample";
+    output.result = sample_output(output.model, output.spec, record, nullptr);
+  }
 
   const std::filesystem::path dir = s.input.export_directory;
   ExportResult result;
@@ -78,17 +84,17 @@ ExportResult StudioSession::export_preview(const std::string& name, bool overwri
                                               "name, or overwrite");
     core::check_writable(file);
   }
-  synthesis::SynthesisRecord record = output.result.record;
+  synthesis::SynthesisRecord record = output.result->record;
   record.arguments = sample_command(name, output.spec);
   record.inputs = {{"model", name + ".json"}};
   result.command = joined(record.arguments);
   io::write_model(output.model, result.files[0]);
-  io::write_scene(output.result.scene, result.files[1], io::synthesis_provenance(record));
+  io::write_scene(output.result->scene, result.files[1], io::synthesis_provenance(record));
   render::RenderOptions picture;
   picture.text = {{"Software", "shapeproc studio"},
                   {"Comment", "seed " + std::to_string(output.spec.seed)},
                   {"Source", result.command}};
-  render::write_png(output.result.scene, result.files[2], picture);
+  render::write_png(output.result->scene, result.files[2], picture);
   core::write_file_atomically(result.files[3], [&](std::ostream& out) {
     out << "#!/bin/sh\n# Makes " << name << ".svg from " << name
         << ".json, as the studio previewed it.\n"

@@ -2,6 +2,7 @@
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
+#include "libshapeproc/core/format.hpp"
 #include "libshapeproc/core/stopwatch.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/io/scene_writers.hpp"
@@ -90,22 +91,57 @@ void StudioSession::Shared::preview(long long at, model::ShapeProcessModel model
     return p;
   };
   // The draft: the picture on screen moved under the edited model.
+  std::string draft_svg;
   if (!on_screen.empty()) {
     const synthesis::SynthesisResult draft = sample_draft(model, spec, on_screen, &cancel);
     on_screen = draft.scene.elements;
     Preview p = picture(draft, PreviewStage::draft);
     p.seconds = seconds_since(asked);
+    draft_svg = p.svg;
     publish(std::move(p));
   }
+  // The final chain, stopped by a newer revision or at the time limit (counted from the edit).
+  std::atomic<bool> stop{false};
+  bool out_of_time = false;
+  const Clock::time_point deadline =
+      asked + std::chrono::duration_cast<Clock::duration>(
+                  std::chrono::duration<double>(input.final_seconds));
+  const auto watch = [&] {
+    if (cancel) {
+      stop = true;
+    } else if (Clock::now() >= deadline) {
+      out_of_time = true;
+      stop = true;
+    }
+  };
   synthesis::SynthesisRecord record;
   record.command = "sample";
-  synthesis::SynthesisResult output = sample_output(model, spec, record, &cancel);
-  on_screen = output.scene.elements;
-  Preview p = picture(output, PreviewStage::final);
-  if (output.scene.elements.empty()) p.note = "the chain ended empty: the model holds no element";
-  if (judge) {
-    p.verdicts = judge->judge(output.scene, &model);
-    p.summary = p.verdicts.empty() ? std::string() : evaluation::summary(p.verdicts);
+  std::optional<synthesis::SynthesisResult> output;
+  try {
+    output = sample_output(model, spec, record, &stop, watch);
+  } catch (const core::Cancelled&) {
+    if (!out_of_time || cancel) throw;
+  }
+  Preview p;
+  if (output) {
+    on_screen = output->scene.elements;
+    p = picture(*output, PreviewStage::final);
+    if (output->scene.elements.empty())
+      p.note = "the chain ended empty: the model holds no element";
+    if (judge) {
+      p.verdicts = judge->judge(output->scene, &model);
+      p.summary = p.verdicts.empty() ? std::string() : evaluation::summary(p.verdicts);
+    }
+  } else {
+    p.revision = at;
+    p.stage = PreviewStage::cut;
+    p.svg = draft_svg;
+    p.elements = static_cast<int>(on_screen.size());
+    p.seed = spec.seed;
+    p.size = spec.size;
+    p.note = "the final picture's chain needs more than " +
+             core::format_number(input.final_seconds) +
+             " s: cut short, the draft stays on screen; export samples it in full";
   }
   p.seconds = seconds_since(asked);
   {

@@ -180,7 +180,9 @@ std::string preview_json(const Preview& p) {
                         {"problem", v.problem}});
   return text(json{{"sequence", p.sequence},
                    {"revision", p.revision},
-                   {"stage", p.stage == PreviewStage::draft ? "draft" : "final"},
+                   {"stage", p.stage == PreviewStage::draft   ? "draft"
+                             : p.stage == PreviewStage::final ? "final"
+                                                              : "cut"},
                    {"svg", p.svg},
                    {"elements", p.elements},
                    {"steps", p.steps},

@@ -38,6 +38,9 @@ struct StudioInput {
   std::vector<double> preview_size, full_size;
   std::uint64_t seed = 1;
   std::filesystem::path export_directory = ".";  // the only place the session writes
+  // A final preview's chain still running this long after the edit is stopped, and the preview
+  // says so (PreviewStage::cut); exporting that revision then samples its output in full.
+  double final_seconds = 5.0;
 };
 
 enum class Phase { fitting, ready, failed };
@@ -62,7 +65,10 @@ struct StudioState {
   bool has_exemplar = false;
 };
 
-enum class PreviewStage { draft, final };
+// A draft (the picture on screen continued under the edited model), the final picture (what
+// `sample` makes), or a final chain cut short at StudioInput::final_seconds (the draft's picture
+// stays on screen, with a note).
+enum class PreviewStage { draft, final, cut };
 
 struct Preview {
   long long sequence = 0;  // one more per picture published

@@ -109,6 +109,33 @@ TEST(StudioSession, ExportsTheModelTheOutputAndItsCommand) {
             4);
 }
 
+TEST(StudioSession, AFinalChainOverTheTimeLimitIsCutShortAndTheExportSamplesItInFull) {
+  const testing::TempDir dir;
+  StudioInput input = squares_input(dir.path());
+  input.final_seconds = 1e-9;  // every final chain is over it at its first check
+  StudioSession session(input);
+  std::optional<Preview> cut;
+  long long after = 0;
+  for (int wait = 0; wait < 600 && !cut; ++wait) {
+    const std::optional<Preview> p = session.wait_preview(after, 1000ms);
+    if (!p) continue;
+    after = p->sequence;
+    EXPECT_NE(p->stage, PreviewStage::final) << "a final chain ran to its end";
+    if (p->stage == PreviewStage::cut) cut = p;
+  }
+  ASSERT_TRUE(cut);
+  EXPECT_EQ(cut->revision, 1);
+  EXPECT_NE(cut->note.find("cut short"), std::string::npos) << cut->note;
+  EXPECT_TRUE(cut->verdicts.empty());
+  // The export still writes what `sample` makes from the exported model.
+  session.export_preview("cut", false);
+  const model::ShapeProcessModel exported = io::read_model(dir.file("cut.json"));
+  const std::string written = testing::read_file(dir.file("cut.svg"));
+  const std::string body = written.substr(written.find("</metadata>") + 11);
+  EXPECT_EQ(svg_of(sample_output(exported, {{40, 40}, 7}, {}, nullptr).scene),
+            written.substr(0, written.find("<metadata")) + body.substr(1));
+}
+
 TEST(StudioSession, RefusesA3DModelAndBadSizes) {
   const testing::TempDir dir;
   StudioInput input = squares_input(dir.path());

@@ -23,7 +23,8 @@ using Clock = std::chrono::steady_clock;
 struct FinalOutput {
   long long revision = 0;
   model::ShapeProcessModel model;  // as exported: its edits recorded
-  synthesis::SynthesisResult result;
+  // `sample`'s output; empty when the preview's chain was cut short (the export samples it).
+  std::optional<synthesis::SynthesisResult> result;
   PreviewSpec spec;
 };
 

@@ -258,10 +258,15 @@ function showPreview(p) {
   box.dataset.revision = p.revision;
   $("preview-caption").textContent = p.stage === "draft"
     ? `(draft: ${p.elements} elements, ${(p.seconds * 1000).toFixed(0)} ms; sampling the output…)`
+    : p.stage === "cut" ? `(draft: ${p.elements} elements; ${p.note})`
     : `(${p.elements} elements, seed ${p.seed}, ${p.size.map(round).join(" × ")}, ` +
       `${p.steps} steps, ${p.seconds.toFixed(2)} s${p.stationary ? "" : ", not stationary"})`;
   const table = $("verdicts");
-  if (p.stage === "draft") { table.classList.add("stale"); return; }
+  if (p.stage !== "final") {
+    table.classList.add("stale");
+    if (p.stage === "cut") $("summary").textContent = p.note;
+    return;
+  }
   table.classList.remove("stale");
   table.dataset.sequence = p.sequence;
   $("summary").textContent = p.note || p.summary ||
