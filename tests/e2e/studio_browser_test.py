@@ -37,7 +37,7 @@ def fail(message):
 def start_studio(shapeproc, exemplar, exports):
     process = subprocess.Popen(
         [shapeproc, "studio", exemplar, "--category-by", "fill", "--export-dir", exports,
-         "--seed", "3"],
+         "--seed", "3", "--final-seconds", "120"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     line = process.stdout.readline()
     match = re.search(r"(http://127\.0\.0\.1:\d+/\?token=[0-9a-f]+)", line)

@@ -17,7 +17,7 @@ void BudgetFlags::add_to(CLI::App& command) {
   command
       .add_option("--max-elements", max_elements,
                   "refuse a request estimated to need more elements than this")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   command.add_option("--max-memory", max_memory,
                      "refuse a request estimated to need more memory than this, e.g. 8G (default: "

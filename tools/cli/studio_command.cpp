@@ -26,6 +26,7 @@ struct StudioArguments {
   std::string input, size = "4W,4H", host = "127.0.0.1", export_dir = ".";
   int port = 0;
   std::uint64_t seed = 1;
+  double final_seconds = 5.0;
   FitFlags fit;
   ReaderFlags reader;
   BudgetFlags budget;
@@ -65,6 +66,7 @@ studio::StudioInput read_input(const StudioArguments& args,
   input.source = args.input;
   input.arguments = arguments;
   input.seed = args.seed;
+  input.final_seconds = args.final_seconds;
   input.export_directory = args.export_dir;
   if (io::extension_of(args.input) == "json") {
     input.model = io::read_model(args.input);
@@ -144,6 +146,12 @@ void add_studio_command(CLI::App& app, Action& action, const std::vector<std::st
                    "2W,2H)")
       ->capture_default_str();
   command->add_option("--seed", args->seed, "the first seed")->capture_default_str();
+  command
+      ->add_option("--final-seconds", args->final_seconds,
+                   "a final preview's chain still running this long after the edit is cut short "
+                   "(the draft stays; export samples it in full)")
+      ->check(positive_number())
+      ->capture_default_str();
   command
       ->add_option("--export-dir", args->export_dir,
                    "directory exports are written to (the only place the studio writes)")
