@@ -413,8 +413,16 @@ std::optional<int> PairMeasurer::table_axis(int a, int b, const Vec3& offset) co
   if (a > b || (a == b && lexicographically_negative(offset))) return table_axis(b, a, -offset);
   const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
   if (mass_size_[i] * mass_size_[j] < kForceTableCost) return std::nullopt;
-  if (dimension_ == 2 && round_[i] >= 0 && round_[j] >= 0 && offset.norm() > round_[i] + round_[j])
-    return std::nullopt;  // the exact direction is cheaper
+  // Regions whose circles about their centroids are well apart: the exact force is the pair's
+  // multipole expansion to a low order, cheaper than the table's lookups.
+  if (dimension_ == 2) {
+    const MassBoundary2& ma = proxies2_[i].mass;
+    const MassBoundary2& mb = proxies2_[j].mass;
+    constexpr double kFarEnough = 1.6;  // the expansion converges as ((r_a + r_b)/|R|)^n
+    if ((mb.centroid + offset.head<2>() - ma.centroid).norm() >
+        kFarEnough * (ma.radius + mb.radius))
+      return std::nullopt;
+  }
   return forces_->axis(i * mass_size_.size() + j, kForceTablePitch * (radii_[i] + radii_[j]),
                        offset, negligible_force(a, b, offset), [this, a, b](const Vec3& at) {
                          return gravitation_force_between(a, b, at);

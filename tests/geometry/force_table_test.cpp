@@ -95,10 +95,11 @@ TEST(ForceTable, MeasurerAxesOfDetailedPairsEqualTheExactAxes) {
     wrong += measurer.axis(a, b, t) != measurer.bins().axis_of(measurer.direction(a, b, t));
   }
   EXPECT_EQ(wrong, 0);
-  // The three pairs opened, and the table answered most queries after that.
+  // The table saw the offsets whose circles about the centroids are near (the rest are the
+  // pair's expansion's), the three pairs opened, and it answered most of them.
   const ForceTable& table = *measurer.force_table();
-  EXPECT_EQ(table.queries(), static_cast<std::size_t>(kQueries));
-  EXPECT_GT(table.answered(), kQueries / 2);
+  EXPECT_GT(table.queries(), static_cast<std::size_t>(0.9 * kQueries));
+  EXPECT_GT(table.answered(), table.queries() / 2);
 }
 
 }  // namespace
