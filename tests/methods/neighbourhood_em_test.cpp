@@ -8,6 +8,7 @@
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/geometry/shape_size.hpp"
+#include "libshapeproc/geometry/tile_repeat.hpp"
 #include "libshapeproc/io/scene_io.hpp"
 #include "libshapeproc/metrics/novelty.hpp"
 #include "tests/methods/method_scenes.hpp"
@@ -48,6 +49,38 @@ TEST(NeighbourhoodEm, CrescentsGridKeepsItsLatticeAcrossSeams) {  // NOLINT
   for (const std::uint64_t seed : {1u, 3u, 5u}) {
     const synthesis::SynthesisResult result = run(em, seed);
     EXPECT_EQ(result.scene.elements.size(), 100u) << "seed " << seed;
+  }
+}
+
+// Hero Patterns' tic-tac-toe (rings and crosses alternating on a lattice of spacing 32) drawn
+// 3 x 3 into an open 192-px exemplar, at 384 x 384: all 144 sites filled, in the checkerboard.
+// Seams judged the exemplar's edge neighbourhoods by what its window cuts off, and cells of 2r
+// left the patch origins one spacing of room where the kinds repeat every two: a row or column
+// was dropped at the seams (121 to 126 elements).
+TEST(NeighbourhoodEm, ATwoKindLatticeKeepsEverySiteAndItsCheckerboard) {  // NOLINT
+  io::ReaderOptions visual;
+  visual.elements = io::ElementRule::visual;
+  const geometry::Scene tile =
+      io::read_scene(testing::data_path("third-party/hero-patterns/tic-tac-toe.svg"), visual);
+  const geometry::Scene exemplar = geometry::repeat_tile(tile, 3);
+  ASSERT_EQ(exemplar.elements.size(), 36u);
+  const Domain domain = Domain::from_sizes({384, 384}, Boundary::torus);
+  const NeighbourhoodEm em(exemplar, Boundary::open, domain, EmOptions{});
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    const geometry::Scene out = run(em, seed).scene;
+    ASSERT_EQ(out.elements.size(), 144u) << "seed " << seed;
+    const auto ring = [&](const geometry::Element& e) {
+      return geometry::shape_size(out.shapes[static_cast<std::size_t>(e.shape)]).area > 75.0;
+    };
+    int off = 0;
+    for (const geometry::Element& e : out.elements) {
+      const geometry::Vec3 d = domain.minimum_image(e.position - out.elements.front().position);
+      const double i = std::round(d.x() / 32.0), j = std::round(d.y() / 32.0);
+      const bool on_site = (d - 32.0 * geometry::Vec3(i, j, 0.0)).norm() < 3.2;
+      const bool same_kind = ring(e) == ring(out.elements.front());
+      off += !on_site || same_kind != (std::fmod(std::abs(i + j), 2.0) == 0.0);
+    }
+    EXPECT_EQ(off, 0) << "seed " << seed;
   }
 }
 

@@ -118,9 +118,10 @@ std::vector<Vec3> pooled_offsets(const EmExemplar& exemplar) {
 // the patch's samples, plus r² for every neighbour their sources have inside the cell (`in_cell`)
 // that the patch leaves without a partner, so that sparse or empty patches do not win; and the
 // translation of the patch that best closes the seam (the mean move its paired samples ask for).
-// With `pooled` (an open exemplar that leaves the patch's origin less than a mean spacing of room
-// along every axis), a neighbour the partner's window cannot show (`visible`) is judged by the
-// pooled offsets (`pooled_cost`) instead of eq. 1's pairing with a neighbourhood cut short there.
+// With `pooled` (an open exemplar whose window leaves the patch's origin less than r of room along
+// some axis, so that seam samples' exemplar neighbourhoods are cut by its edge), a neighbour the
+// partner's window cannot show (`visible`) is judged by the pooled offsets (`pooled_cost`) instead
+// of eq. 1's pairing with a neighbourhood cut short there.
 struct Seam {
   double cost = 0.0;
   Vec3 shift = Vec3::Zero();
@@ -227,17 +228,23 @@ class PatchCopy {
         elements_(domain.box(), dim_, exemplar.radius, domain.periodic()) {
     double room = 0.0;  // the most an open exemplar's patch origin can move along an axis
     for (int a = 0; a < dim_; ++a) {
-      const double side =
-          wraps_ ? 2.0 * exemplar.radius : std::min(2.0 * exemplar.radius, period_[a]);
-      cell_[a] = side;
-      counts_[a] = std::max(1, static_cast<int>(std::ceil(domain.sizes()[a] / side - 1e-9)));
-      room = std::max(room, period_[a] - side);
+      cell_[a] = wraps_ ? 2.0 * exemplar.radius : std::min(2.0 * exemplar.radius, period_[a]);
+      room = std::max(room, period_[a] - cell_[a]);
     }
-    cramped_ = !wraps_ && room < exemplar.spacing;
-    if (cramped_) {
-      pooled_ = pooled_sample_offsets(exemplar);
-      offsets_ = pooled_offsets(exemplar);
+    // (A lattice window of whole spacings leaves exactly one spacing of room: not cramped.)
+    cramped_ = !wraps_ && room < (1.0 - 1e-6) * exemplar.spacing;
+    // Otherwise the origin gets at least two spacings of room where the window allows: a structure
+    // that repeats every two spacings (two kinds alternating) then has every phase within reach.
+    for (int a = 0; a < dim_; ++a) {
+      if (!wraps_ && !cramped_ && period_[a] >= 4.0 * exemplar.spacing)
+        cell_[a] = std::min(cell_[a], period_[a] - 2.0 * exemplar.spacing);
+      counts_[a] = std::max(1, static_cast<int>(std::ceil(domain.sizes()[a] / cell_[a] - 1e-9)));
     }
+    double least_room = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < dim_; ++a) least_room = std::min(least_room, period_[a] - cell_[a]);
+    cut_ = !wraps_ && least_room < exemplar.radius;
+    if (cut_) pooled_ = pooled_sample_offsets(exemplar);
+    if (cramped_) offsets_ = pooled_offsets(exemplar);
   }
 
   const Eigen::Vector3i& counts() const { return counts_; }
@@ -265,7 +272,7 @@ class PatchCopy {
                const std::function<bool(const Vec3&)>& filled, const std::vector<int>& near,
                const std::function<bool(const Vec3&)>& in_cell) const {
     return seam_cost(exemplar_, domain_, out_, grid_, patch, radians, alpha_, filled, near, in_cell,
-                     cramped_ ? &pooled_ : nullptr);
+                     cut_ ? &pooled_ : nullptr);
   }
 
   const EmExemplar& exemplar_;
@@ -288,6 +295,10 @@ class PatchCopy {
   // crosses, and no choice of origin can bring a seam into phase. Its seams are judged with the
   // pooled offsets, of samples (seam_cost) and of elements (seam_step).
   bool cramped_ = false;
+  // An open exemplar that leaves the patch's origin less than r of room along some axis: seam
+  // samples' exemplar neighbourhoods are cut by its window, and their neighbours beyond it are
+  // judged by the pooled sample offsets (seam_cost).
+  bool cut_ = false;
   PooledOffsets pooled_;
   std::vector<Vec3> offsets_;
 };

@@ -10,11 +10,13 @@
 // neighbourhoods among the elements already placed, and the placed samples' neighbourhoods among
 // its own, with r² for every exemplar neighbour that would fall on the other side without a
 // partner (eq. 1 alone would let a seam open a gap, or a sparse patch win, for free). Elements
-// nearer than half the exemplar's smallest gap to one already placed are left out. An open
-// exemplar that leaves the patch's origin less than a mean spacing of room along every axis is
-// cramped: no neighbourhood reaches across its seams, so neighbours its window cannot show are
-// judged by the exemplar's pooled offsets, and each patch is also tried moved in the output by
-// what those offsets ask (docs/methods.md, "Seams of a cramped exemplar").
+// nearer than half the exemplar's smallest gap to one already placed are left out. On an open
+// exemplar, cells are narrowed where needed to leave the patch origin two mean spacings of room
+// (a structure repeating every two spacings has each phase within reach); where the room left is
+// under r, seam neighbours the exemplar's window cannot show are judged by its pooled offsets.
+// An open exemplar that leaves less than a mean spacing of room along every axis is cramped: each
+// patch is also tried moved in the output by what those offsets ask (docs/methods.md, "Seams of
+// an open exemplar").
 #pragma once
 
 #include "libshapeproc/core/random.hpp"
