@@ -95,9 +95,14 @@ struct CandidatePair {
 template <class Near, class All, class Floor, class F>
 double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, double radius,
                    Near&& near_of, All&& all_of, Floor&& floor_of, F&& f, double bound) {
-  thread_local std::vector<CandidatePair> near, contested, far;
-  thread_local std::vector<char> used_output, used_exemplar;
-  thread_local std::vector<unsigned char> referrers;  // 0, 1 or 2 (two or more)
+  // One thread-local object (one lookup of the thread's storage per call, not six).
+  struct Buffers {
+    std::vector<CandidatePair> near, contested, far;
+    std::vector<char> used_output, used_exemplar;
+    std::vector<unsigned char> referrers;  // 0, 1 or 2 (two or more)
+  };
+  thread_local Buffers buffers;
+  auto& [near, contested, far, used_output, used_exemplar, referrers] = buffers;
   near.clear();
   const double cap = radius * radius, split = cap / 16.0;
   double lower = 0.0;

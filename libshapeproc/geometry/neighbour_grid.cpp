@@ -25,6 +25,8 @@ NeighbourGrid::NeighbourGrid(const geometry::Box3& window, int dimension, double
     counts_[axis] = n;
     cell_[axis] = used ? sizes[axis] / n : 1.0;
   }
+  for (int axis = 0; axis < dimension; ++axis)
+    repeats_ = repeats_ || (periodic_[static_cast<std::size_t>(axis)] && counts_[axis] < 3);
   cells_.resize(static_cast<std::size_t>(counts_.prod()));
 }
 

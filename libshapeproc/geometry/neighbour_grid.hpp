@@ -35,8 +35,8 @@ class NeighbourGrid {
           Eigen::Vector3i c = centre + Eigen::Vector3i(dx, dy, dz);
           if (!wrap(c)) continue;
           const std::size_t index = linear(c);
-          if (std::find(visited.begin(), visited.begin() + visited_count, index) !=
-              visited.begin() + visited_count)
+          if (repeats_ && std::find(visited.begin(), visited.begin() + visited_count, index) !=
+                              visited.begin() + visited_count)
             continue;
           visited[static_cast<std::size_t>(visited_count++)] = index;
           for (int id : cells_[index]) f(id);
@@ -79,6 +79,7 @@ class NeighbourGrid {
   geometry::Box3 window_;
   int dimension_;
   std::array<bool, 3> periodic_{};
+  bool repeats_ = false;  // a periodic axis of fewer than 3 cells: neighbouring cells repeat
   Eigen::Vector3i counts_;
   geometry::Vec3 cell_;
   std::vector<std::vector<int>> cells_;

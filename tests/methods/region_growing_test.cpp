@@ -238,13 +238,22 @@ TEST(RegionGrowing, OverlapTestFollowsTheExemplar) {  // NOLINT
   };
   GrowthOptions circles;
   circles.exact_overlap = false;
-  const synthesis::SynthesisResult a =
-      run(RegionGrowing(dots, Boundary::open, domain, GrowthOptions{}), 1);
-  const synthesis::SynthesisResult c = run(RegionGrowing(dots, Boundary::open, domain, circles), 1);
-  EXPECT_EQ(overlap(a), "shapes");
-  EXPECT_EQ(overlap(c), "circles");
-  EXPECT_NEAR(close_share(a.scene), 0.25, 0.1);
-  EXPECT_LT(close_share(c.scene), 0.15);
+  const RegionGrowing shapes(dots, Boundary::open, domain, GrowthOptions{});
+  const RegionGrowing bounding(dots, Boundary::open, domain, circles);
+  // Over seeds 1-4 (one seed's share spreads by about 0.06): seeds 1-10 gave 0.10-0.26 with the
+  // shapes, 0.03-0.09 with the circles.
+  double with_shapes = 0.0, with_circles = 0.0;
+  for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+    const synthesis::SynthesisResult a = run(shapes, seed);
+    const synthesis::SynthesisResult c = run(bounding, seed);
+    EXPECT_EQ(overlap(a), "shapes");
+    EXPECT_EQ(overlap(c), "circles");
+    with_shapes += close_share(a.scene) / 4.0;
+    with_circles += close_share(c.scene) / 4.0;
+  }
+  EXPECT_GT(with_shapes, 0.12);
+  EXPECT_LT(with_circles, 0.09);
+  EXPECT_GT(with_shapes, with_circles + 0.05);
   const geometry::Scene lattice = testing::rectangle_lattice(6, 10.0, 3.0, 3.0);
   const Domain square = Domain::from_sizes({100, 100}, Boundary::torus);
   EXPECT_EQ(overlap(run(RegionGrowing(lattice, Boundary::torus, square, GrowthOptions{}), 1)),

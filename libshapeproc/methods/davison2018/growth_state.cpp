@@ -200,10 +200,11 @@ geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
   return out;
 }
 
-std::size_t GrowthState::count_within(const Vec3& p, double distance) const {
+std::size_t GrowthState::count_within(const Vec3& p, double distance, std::size_t enough) const {
   std::size_t n = 0;
   elements_.for_each_candidate(p, [&](int o) {
-    if (domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance) ++n;
+    if (n < enough && domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance)
+      ++n;
   });
   return n;
 }

@@ -9,6 +9,7 @@
 // again at its new place (eq. 3 for the elements that moved).
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "libshapeproc/geometry/domain.hpp"
@@ -78,8 +79,10 @@ class GrowthState {
   geometry::Neighbourhood neighbourhood(int e) const;
   // Indices of the elements within `distance` (at most the largest neighbourhood radius) of `p`.
   std::vector<int> elements_within(const Vec3& p, double distance) const;
-  // How many elements lie within `distance` of p (elements_within's size, without the list).
-  std::size_t count_within(const Vec3& p, double distance) const;
+  // How many elements lie within `distance` of p (elements_within's size, without the list),
+  // counted up to `enough` at most.
+  std::size_t count_within(const Vec3& p, double distance,
+                           std::size_t enough = std::numeric_limits<std::size_t>::max()) const;
 
  private:
   struct FreePoint {

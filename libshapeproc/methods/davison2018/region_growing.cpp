@@ -40,6 +40,10 @@ struct Growth {
   long long abandoned = 0, rounds = 0;
   std::vector<Vec3> origin;  // per element: where the exemplar patch it was copied in began
   long long patches = 0;     // patches begun (initial ones included)
+  // Per element: whether an element arrived within the largest neighbourhood radius of it since
+  // the last optimisation (its neighbourhood grew).
+  std::vector<char> grown;
+  double reach = 0.0;  // the largest neighbourhood radius
 };
 
 // Adds an element copied in the patch begun at `origin`.
@@ -102,6 +106,18 @@ double distance_to(const Growth& g, int e, const geometry::Neighbourhood& hood, 
                             : 0.0;
   return centre + geometry::neighbourhood_distance(hood, em.wide[static_cast<std::size_t>(m)],
                                                    g.exemplar.reach_of(m), alpha, bound, pairs);
+}
+
+// Marks the elements whose neighbourhood element e's arrival changed (e itself included).
+void mark_grown_near(Growth& g, int e) {
+  g.grown.resize(g.state.size(), 0);
+  g.grown[static_cast<std::size_t>(e)] = 1;
+  for (const int o : g.state.elements_within(g.state.position(e), g.reach))
+    g.grown[static_cast<std::size_t>(o)] = 1;
+}
+
+bool grown_near(const Growth& g, int e) {
+  return static_cast<std::size_t>(e) >= g.grown.size() || g.grown[static_cast<std::size_t>(e)];
 }
 
 void push_horizon(Growth& g, int e) {
@@ -192,10 +208,15 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
         g.state.collides(near[i].element, p))
       continue;
     const std::size_t part = static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)]);
-    if (std::isfinite(g.settings.most_neighbours[part]) &&
-        static_cast<double>(g.state.count_within(p, g.exemplar.reach_of(near[i].element)) +
-                            out.size() + 1) > g.settings.most_neighbours[part])
-      continue;          // the density calibration's limit
+    const double most = g.settings.most_neighbours[part];
+    if (std::isfinite(most)) {
+      // The density calibration's limit: the copy's neighbourhood, with it and the copies before
+      // it, may hold at most `most`; its elements are counted only until they break it.
+      const double room = most - static_cast<double>(out.size()) - 1.0;
+      const std::size_t breaking = room < 0.0 ? 0 : static_cast<std::size_t>(std::floor(room)) + 1;
+      if (g.state.count_within(p, g.exemplar.reach_of(near[i].element), breaking) >= breaking)
+        continue;
+    }
     bool clash = false;  // with the copies before it (bounding circles)
     for (const auto& [e, q] : out) {
       if (g.exemplar.exact) break;  // one exemplar neighbourhood's shapes do not overlap
@@ -210,6 +231,17 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
 // Step 3: one seed's generation. Returns how many elements it added.
 int generate(Growth& g, int s) {
   const geometry::Neighbourhood hood = g.state.neighbourhood(s);
+  // The copies first: a seed none of whose candidates can copy anything makes nothing whichever
+  // ranks first, and most seeds inside a grown region are such (the density's limit); copies cost
+  // less than the ranking's distances.
+  const std::vector<int> candidates = generation_candidates(g, s);
+  std::vector<std::vector<std::pair<int, Vec3>>> copies;
+  bool any = false;
+  for (const int m : candidates) {
+    copies.push_back(copies_of(g, s, hood, m));
+    any = any || !copies.back().empty();
+  }
+  if (!any) return 0;
   // A candidate is a bad suggestion beyond c times the best distance; that distance is 0 where
   // the seed's neighbourhood is an exact copy, so (tolerance d̄)² per neighbour is added. The
   // limit only falls as candidates come, so each is measured only as far as it.
@@ -218,7 +250,7 @@ int generate(Growth& g, int s) {
                        g.options.tolerance * g.options.tolerance * spacing * spacing;
   double limit = std::numeric_limits<double>::infinity();
   std::vector<std::pair<double, int>> ranked;
-  for (const int m : generation_candidates(g, s)) {
+  for (const int m : candidates) {
     const double cost = distance_to(g, s, hood, m, nullptr, limit);
     ranked.emplace_back(cost, m);
     limit = std::min(limit, g.options.ratio * cost + slack);
@@ -226,15 +258,20 @@ int generate(Growth& g, int s) {
   std::sort(ranked.begin(), ranked.end());
   for (const auto& [cost, m] : ranked) {
     if (cost > limit) break;
-    const std::vector<std::pair<int, Vec3>> copies = copies_of(g, s, hood, m);
-    if (copies.empty()) continue;
+    const auto i = static_cast<std::size_t>(std::find(candidates.begin(), candidates.end(), m) -
+                                            candidates.begin());
+    if (copies[i].empty()) continue;
     g.state.set_match(s, m);
     // Its own element continues its patch; any other begins one here.
     const bool continues = g.exemplar.em.same_place(m, g.state.source(s));
     const Vec3 origin = continues ? g.origin[static_cast<std::size_t>(s)] : g.state.position(s);
     if (!continues) ++g.patches;
-    for (const auto& [e, p] : copies) push_horizon(g, add_element(g, e, p, origin));
-    return static_cast<int>(copies.size());
+    for (const auto& [e, p] : copies[i]) {
+      const int added = add_element(g, e, p, origin);
+      push_horizon(g, added);
+      mark_grown_near(g, added);
+    }
+    return static_cast<int>(copies[i].size());
   }
   return 0;
 }
@@ -273,8 +310,13 @@ double optimise(Growth& g) {
           std::min(anchors[static_cast<std::size_t>(slot)], anchor);
     }
   };
-  for (const int h : g.horizon) enter(h, 0.0);
+  // Only where the output grew since the last optimisation: elsewhere the horizon already sits
+  // where its last solve put it.
+  std::vector<int> grown;
   for (const int h : g.horizon)
+    if (grown_near(g, h)) grown.push_back(h);
+  for (const int h : grown) enter(h, 0.0);
+  for (const int h : grown)
     for (const int o :
          g.state.elements_within(g.state.position(h), g.exemplar.reach_of(g.state.source(h))))
       enter(o, g.options.anchor_weight);
@@ -287,10 +329,11 @@ double optimise(Growth& g) {
     const geometry::Neighbourhood hood = g.state.neighbourhood(e);
     double best = std::numeric_limits<double>::infinity();
     int chosen = g.state.match(e);
-    // Horizon elements search their candidates; older ones keep their match.
-    const std::vector<int> candidates = g.in_horizon[static_cast<std::size_t>(e)]
-                                            ? candidates_of(g, e)
-                                            : std::vector<int>{g.state.match(e)};
+    // Horizon elements whose neighbourhood grew search their candidates; the others keep their
+    // match.
+    const bool search = g.in_horizon[static_cast<std::size_t>(e)] && grown_near(g, e);
+    const std::vector<int> candidates =
+        search ? candidates_of(g, e) : std::vector<int>{g.state.match(e)};
     for (const int m : candidates) {
       const double cost = distance_to(
           g, e, hood, m, &pairs, std::nextafter(best, std::numeric_limits<double>::infinity()));
@@ -317,6 +360,7 @@ double optimise(Growth& g) {
     const double spacing = g.exemplar.spacing_of(g.state.source(e));
     gaussian_weights(predictions, moves, spacing * spacing);
   }
+  std::fill(g.grown.begin(), g.grown.end(), 0);
   std::vector<Vec3> positions;
   for (const int e : unknowns) positions.push_back(g.state.position(e));
   const std::vector<Vec3> d = solve_positions(positions, predictions, g.domain, anchors);
@@ -384,7 +428,9 @@ Growth grow(const GrowthExemplar& exemplar, const geometry::Domain& domain,
            0,
            0,
            {},
-           0};
+           0,
+           {},
+           *std::max_element(exemplar.reach.begin(), exemplar.reach.end())};
   const std::size_t parts = exemplar.parts();
   std::vector<double> sum(parts, 0.0), count(parts, 0.0);
   for (std::size_t s = 0; s < exemplar.radius.size(); ++s) {

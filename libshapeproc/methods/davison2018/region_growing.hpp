@@ -16,9 +16,14 @@
 //    generate, the first that can is taken only if its distance is at most `ratio` (Davison's c)
 //    times the best's plus (tolerance d̄)² per neighbour (an exact copy's best distance is 0,
 //    and no other candidate is within any multiple of it); otherwise the seed is abandoned for
-//    the round, and when a whole round makes nothing, its seeds leave the horizon;
-// 4. optimise: every element of the horizon and within a neighbourhood radius of it takes its
-//    best match, whose full pairs predict its neighbours' offsets; positions minimise the
+//    the round, and when a whole round makes nothing, its seeds leave the horizon (each
+//    candidate's copies are found before the ranking: a seed none of whose candidates can copy
+//    anything is abandoned without it, with the same outcome);
+// 4. optimise where the output grew: every horizon element that an element arrived within the
+//    largest neighbourhood radius of since the last optimisation, and every element within a
+//    neighbourhood radius of one, takes its best match (a search over its candidates for those
+//    horizon elements; the others keep theirs), whose full pairs predict its neighbours'
+//    offsets; positions minimise the
 //    predictions' squared errors weighted by Davison's eq. 4 (a Gaussian of the predicted moves
 //    of each neighbourhood), with predictions onto older elements weighted `frozen_weight` and
 //    older elements held by `anchor_weight`; elements farther out do not move;
