@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/format.hpp"
@@ -231,15 +232,15 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
 // Step 3: one seed's generation. Returns how many elements it added.
 int generate(Growth& g, int s) {
   const geometry::Neighbourhood hood = g.state.neighbourhood(s);
-  // The copies first: a seed none of whose candidates can copy anything makes nothing whichever
-  // ranks first, and most seeds inside a grown region are such (the density's limit); copies cost
-  // less than the ranking's distances.
+  // Copies first, until a candidate has some: a seed none of whose candidates can copy anything
+  // makes nothing whichever ranks first, and most seeds inside a grown region are such (the
+  // density's limit); copies cost less than the ranking's distances.
   const std::vector<int> candidates = generation_candidates(g, s);
-  std::vector<std::vector<std::pair<int, Vec3>>> copies;
+  std::vector<std::optional<std::vector<std::pair<int, Vec3>>>> copies(candidates.size());
   bool any = false;
-  for (const int m : candidates) {
-    copies.push_back(copies_of(g, s, hood, m));
-    any = any || !copies.back().empty();
+  for (std::size_t i = 0; i < candidates.size() && !any; ++i) {
+    copies[i] = copies_of(g, s, hood, candidates[i]);
+    any = !copies[i]->empty();
   }
   if (!any) return 0;
   // A candidate is a bad suggestion beyond c times the best distance; that distance is 0 where
@@ -260,18 +261,19 @@ int generate(Growth& g, int s) {
     if (cost > limit) break;
     const auto i = static_cast<std::size_t>(std::find(candidates.begin(), candidates.end(), m) -
                                             candidates.begin());
-    if (copies[i].empty()) continue;
+    if (!copies[i]) copies[i] = copies_of(g, s, hood, m);
+    if (copies[i]->empty()) continue;
     g.state.set_match(s, m);
     // Its own element continues its patch; any other begins one here.
     const bool continues = g.exemplar.em.same_place(m, g.state.source(s));
     const Vec3 origin = continues ? g.origin[static_cast<std::size_t>(s)] : g.state.position(s);
     if (!continues) ++g.patches;
-    for (const auto& [e, p] : copies[i]) {
+    for (const auto& [e, p] : *copies[i]) {
       const int added = add_element(g, e, p, origin);
       push_horizon(g, added);
       mark_grown_near(g, added);
     }
-    return static_cast<int>(copies[i].size());
+    return static_cast<int>(copies[i]->size());
   }
   return 0;
 }
