@@ -1,4 +1,5 @@
 // The studio session's worker: the fit, then the preview of the newest revision, again and again.
+#include <optional>
 #include <sstream>
 
 #include "libshapeproc/core/error.hpp"
@@ -91,14 +92,13 @@ void StudioSession::Shared::preview(long long at, model::ShapeProcessModel model
     return p;
   };
   // The draft: the picture on screen moved under the edited model.
-  std::string draft_svg;
+  std::optional<Preview> draft_shown;
   if (!on_screen.empty()) {
     const synthesis::SynthesisResult draft = sample_draft(model, spec, on_screen, &cancel);
     on_screen = draft.scene.elements;
-    Preview p = picture(draft, PreviewStage::draft);
-    p.seconds = seconds_since(asked);
-    draft_svg = p.svg;
-    publish(std::move(p));
+    draft_shown = picture(draft, PreviewStage::draft);
+    draft_shown->seconds = seconds_since(asked);
+    publish(*draft_shown);
   }
   // The final chain, stopped by a newer revision or at the time limit (counted from the edit).
   std::atomic<bool> stop{false};
@@ -133,10 +133,10 @@ void StudioSession::Shared::preview(long long at, model::ShapeProcessModel model
       p.summary = p.verdicts.empty() ? std::string() : evaluation::summary(p.verdicts);
     }
   } else {
+    // The draft on screen stays, marked as cut.
+    if (draft_shown) p = *draft_shown;
     p.revision = at;
     p.stage = PreviewStage::cut;
-    p.svg = draft_svg;
-    p.elements = static_cast<int>(on_screen.size());
     p.seed = spec.seed;
     p.size = spec.size;
     p.note = "the final picture's chain needs more than " +
