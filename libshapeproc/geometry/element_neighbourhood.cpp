@@ -102,7 +102,13 @@ double greedy_core(const Neighbourhood& output, std::size_t exemplar_size, doubl
     std::vector<unsigned char> referrers;  // 0, 1 or 2 (two or more)
   };
   thread_local Buffers buffers;
-  auto& [near, contested, far, used_output, used_exemplar, referrers] = buffers;
+  // Plain references, not a structured binding: the lambdas below capture them.
+  auto& near = buffers.near;
+  auto& contested = buffers.contested;
+  auto& far = buffers.far;
+  auto& used_output = buffers.used_output;
+  auto& used_exemplar = buffers.used_exemplar;
+  auto& referrers = buffers.referrers;
   near.clear();
   const double cap = radius * radius, split = cap / 16.0;
   double lower = 0.0;
