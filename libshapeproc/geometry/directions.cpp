@@ -72,18 +72,36 @@ DirectionBins::DirectionBins(int dimension, int directions)
   }
 }
 
+namespace {
+// The 2D axis of sector k (sector k is centred on the angle k · 2π / directions).
+int sector_axis(long k, int directions) {
+  const int half = directions / 2;
+  return static_cast<int>(((k % half) + half) % half);
+}
+}  // namespace
+
 int DirectionBins::axis_of(const Vec3& direction) const {
   if (directions_ == 1) return 0;
   if (dimension_ == 2) {
     const double step = 2 * core::kPi / directions_;
-    const long k = std::lround(std::atan2(direction.y(), direction.x()) / step);
-    const int half = directions_ / 2;
-    return static_cast<int>(((k % half) + half) % half);
+    return sector_axis(std::lround(std::atan2(direction.y(), direction.x()) / step), directions_);
   }
   const int pixel = healpix_base_pixel(direction);
   if (pixel < 4) return pixel;
   if (pixel < 8) return 4 + (pixel - 4) % 2;
   return (pixel - 8 + 2) % 4;  // south pixel 8 + (f + 2) % 4 is antipodal to north pixel f
+}
+
+std::optional<int> DirectionBins::arc_axis(const Vec3& direction, double half_width) const {
+  if (dimension_ != 2) return std::nullopt;
+  if (directions_ == 1) return 0;
+  // In units of a sector, the arc is u ± w; it stays in sector round(u) while it does not reach
+  // that sector's edges at round(u) ± 1/2 (the sectors at ±π are one: both map to one axis).
+  const double step = 2 * core::kPi / directions_;
+  const double u = std::atan2(direction.y(), direction.x()) / step;
+  const long k = std::lround(u);
+  if (!(std::abs(u - static_cast<double>(k)) + half_width / step < 0.5)) return std::nullopt;
+  return sector_axis(k, directions_);
 }
 
 }  // namespace shapeproc::geometry

@@ -9,6 +9,7 @@
 // pixels share an axis (6 axes). D = 1 means isotropic.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "libshapeproc/geometry/types.hpp"
@@ -36,6 +37,9 @@ class DirectionBins {
   int axis_count() const { return static_cast<int>(axes_.size()); }
   // Axis bin of a non-zero direction (2D uses x and y).
   int axis_of(const Vec3& direction) const;
+  // 2D: the axis bin of every direction within `half_width` radians of `direction` (a non-zero
+  // vector), when they all share one; nullopt when the arc meets a bin's edge, and in 3D.
+  std::optional<int> arc_axis(const Vec3& direction, double half_width) const;
   // Representative unit direction of an axis (e_k with the smallest k of the pair).
   const Vec3& axis_direction(int axis) const { return axes_.at(static_cast<std::size_t>(axis)); }
 

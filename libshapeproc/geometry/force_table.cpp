@@ -29,25 +29,58 @@ struct KeyHash {
 };
 
 constexpr std::size_t kShards = 64;
+constexpr std::size_t kRecentBlocks = 8;  // per thread
 
-// The angle between two non-zero vectors, robust near 0 and π.
-double angle_between(const Vec3& a, const Vec3& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b));
+// A point's state: not computed, claimed by the thread computing it, or ready to read.
+enum : std::uint8_t { kEmpty = 0, kClaimed = 1, kReady = 2 };
+
+// ⌊a / b⌋ for b > 0, also for negative a.
+std::int32_t floor_div(std::int32_t a, std::int32_t b) {
+  return a >= 0 ? a / b : -((-a - 1) / b) - 1;
 }
 
+std::atomic<std::uint64_t> next_table_id{1};
+
 }  // namespace
+
+struct ForceTable::Block {
+  explicit Block(std::size_t slots)
+      : state(std::make_unique<std::atomic<std::uint8_t>[]>(slots)),
+        force(std::make_unique<Vec3[]>(slots)) {
+    for (std::size_t i = 0; i < slots; ++i) state[i].store(kEmpty, std::memory_order_relaxed);
+  }
+  std::unique_ptr<std::atomic<std::uint8_t>[]> state;
+  std::unique_ptr<Vec3[]> force;
+};
 
 struct ForceTable::Shards {
   struct Shard {
     std::mutex mutex;
-    std::unordered_map<Key, Vec3, KeyHash> forces;
+    std::unordered_map<Key, std::unique_ptr<Block>, KeyHash> blocks;
   };
   std::array<Shard, kShards> shard;
 };
 
+namespace {
+
+// The blocks a thread used last, by table, pair and block index. Tables have unique ids and
+// blocks live as long as their table, so an entry of a table that is gone is never matched.
+struct RecentBlock {
+  std::uint64_t table = 0;
+  std::size_t pair = 0;
+  std::array<std::int32_t, 3> block{};
+  void* at = nullptr;
+};
+thread_local std::array<RecentBlock, kRecentBlocks> recent_blocks;
+
+}  // namespace
+
 ForceTable::ForceTable(int dimension, const DirectionBins& bins, std::size_t pairs,
                        std::size_t max_points, std::uint32_t open_after)
     : dimension_(dimension),
+      side_(dimension == 2 ? 16 : 8),
+      block_slots_(dimension == 2 ? 16 * 16 : 8 * 8 * 8),
+      id_(next_table_id.fetch_add(1, std::memory_order_relaxed)),
       bins_(bins),
       max_points_(max_points),
       open_after_(open_after),
@@ -57,38 +90,61 @@ ForceTable::ForceTable(int dimension, const DirectionBins& bins, std::size_t pai
 
 ForceTable::~ForceTable() = default;
 
+ForceTable::Block* ForceTable::block_of(std::size_t pair, const std::array<std::int32_t, 3>& index,
+                                        std::size_t& slot) const {
+  Key key{pair, {0, 0, 0}};
+  slot = 0;
+  for (int d = dimension_ - 1; d >= 0; --d) {
+    const std::size_t i = static_cast<std::size_t>(d);
+    key.index[i] = floor_div(index[i], side_);
+    slot = slot * static_cast<std::size_t>(side_) +
+           static_cast<std::size_t>(index[i] - key.index[i] * side_);
+  }
+  const std::size_t hash = KeyHash{}(key);
+  RecentBlock& recent = recent_blocks[hash % kRecentBlocks];
+  if (recent.table == id_ && recent.pair == pair && recent.block == key.index)
+    return static_cast<Block*>(recent.at);
+  Shards::Shard& shard = shards_->shard[(hash / kRecentBlocks) % kShards];
+  const std::lock_guard<std::mutex> lock(shard.mutex);
+  auto found = shard.blocks.find(key);
+  if (found == shard.blocks.end()) {
+    // A full table allocates no more blocks (a query needing one falls back to the caller).
+    if (held_.load(std::memory_order_relaxed) >= max_points_ ||
+        slots_.load(std::memory_order_relaxed) >= kSlotsPerPoint * max_points_)
+      return nullptr;
+    found = shard.blocks.emplace(key, std::make_unique<Block>(block_slots_)).first;
+    slots_.fetch_add(block_slots_, std::memory_order_relaxed);
+  }
+  recent = {id_, pair, key.index, found->second.get()};
+  return found->second.get();
+}
+
 std::optional<Vec3> ForceTable::point(std::size_t pair, const std::array<std::int32_t, 3>& index,
                                       double pitch,
                                       const std::function<Vec3(const Vec3&)>& exact) const {
-  const Key key{pair, index};
-  Shards::Shard& shard = shards_->shard[KeyHash{}(key) % kShards];
-  {
-    const std::lock_guard<std::mutex> lock(shard.mutex);
-    const auto found = shard.forces.find(key);
-    if (found != shard.forces.end()) return found->second;
-  }
+  std::size_t slot = 0;
+  Block* block = block_of(pair, index, slot);
+  if (block && block->state[slot].load(std::memory_order_acquire) == kReady)
+    return block->force[slot];
   // A full table computes no more points: the caller's one exact force is cheaper than a
   // cell's corners that would not be kept.
-  if (held_.load(std::memory_order_relaxed) >= max_points_) return std::nullopt;
+  if (!block || held_.load(std::memory_order_relaxed) >= max_points_) return std::nullopt;
   const Vec3 offset(index[0] * pitch, index[1] * pitch, index[2] * pitch);
   const Vec3 force = exact(offset);
-  const std::lock_guard<std::mutex> lock(shard.mutex);
-  if (shard.forces.emplace(key, force).second) held_.fetch_add(1, std::memory_order_relaxed);
+  // Another thread computing the same point keeps its own: both are the same exact value.
+  std::uint8_t empty = kEmpty;
+  if (block->state[slot].compare_exchange_strong(empty, kClaimed, std::memory_order_acq_rel)) {
+    block->force[slot] = force;
+    block->state[slot].store(kReady, std::memory_order_release);
+    held_.fetch_add(1, std::memory_order_relaxed);
+  }
   return force;
 }
 
 std::optional<int> ForceTable::vouched_axis(const Vec3& estimate, double spread) const {
+  if (bins_.directions() == 1) return bins_.axis_of(estimate);
+  if (dimension_ == 2) return bins_.arc_axis(estimate, spread);
   const int axis = bins_.axis_of(estimate);
-  if (bins_.directions() == 1) return axis;
-  if (dimension_ == 2) {
-    // Within half a direction sector, the two ends of the arc decide every direction on it.
-    if (!(spread < core::kPi / bins_.directions())) return std::nullopt;
-    const double angle = std::atan2(estimate.y(), estimate.x());
-    for (const double end : {angle - spread, angle + spread}) {
-      if (bins_.axis_of(Vec3(std::cos(end), std::sin(end), 0.0)) != axis) return std::nullopt;
-    }
-    return axis;
-  }
   // 3D: a narrow cone about the estimate, sampled on its rim (HEALPix base pixels are wide and
   // their edges gently curved at this scale).
   constexpr double kWidestCone = 0.25;
@@ -143,9 +199,16 @@ std::optional<int> ForceTable::axis(std::size_t pair, double pitch, const Vec3& 
     estimate += weight * force[static_cast<std::size_t>(c)];
   }
   if (!(estimate.norm() > negligible)) return std::nullopt;
-  double spread = 0.0;
-  for (int c = 0; c < corners; ++c)
-    spread = std::max(spread, angle_between(force[static_cast<std::size_t>(c)], estimate));
+  // The corners' widest angle about the estimate, from the largest tangent: a corner a right
+  // angle or more away spreads too far to vouch for any axis.
+  double widest = 0.0;
+  for (int c = 0; c < corners; ++c) {
+    const Vec3& f = force[static_cast<std::size_t>(c)];
+    const double along = f.dot(estimate);
+    if (!(along > 0)) return std::nullopt;
+    widest = std::max(widest, f.cross(estimate).norm() / along);
+  }
+  const double spread = std::atan(widest);
   const std::optional<int> vouched = vouched_axis(estimate, 2.0 * spread + 1e-4);
   if (vouched) answered_.fetch_add(1, std::memory_order_relaxed);
   return vouched;

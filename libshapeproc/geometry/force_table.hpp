@@ -15,6 +15,12 @@
 // computes every direction exactly. Answers equal the exact axes either way, so results do not
 // depend on threads or on the order of queries. The table stops growing at a number of points;
 // beyond it, a query that needs a missing point is left to the caller.
+//
+// The grid is stored in blocks of 16 × 16 (2D) or 8 × 8 × 8 (3D) points, allocated when a query
+// first reaches them and filled point by point: a query's corners are almost always in one block,
+// so it costs one lookup of the block (most often in a small per-thread cache of recent blocks)
+// instead of one locked hash lookup per corner. A point is written once, by the thread that
+// claims it; the others read it only once it is marked ready.
 #pragma once
 
 #include <array>
@@ -32,8 +38,10 @@ namespace shapeproc::geometry {
 
 class ForceTable {
  public:
-  // About 80 bytes a point: 1M points is about 80 MB.
+  // 25 bytes a slot of a block, and at most kSlotsPerPoint slots a point: 1M points is at most
+  // about 75 MB.
   static constexpr std::size_t kDefaultMaxPoints = std::size_t{1} << 20;
+  static constexpr std::size_t kSlotsPerPoint = 3;
   static constexpr std::uint32_t kOpenAfter = 4000;
 
   // `dimension` 2 or 3; `pairs` numbered 0..pairs−1; directions binned by `bins`.
@@ -56,19 +64,27 @@ class ForceTable {
   std::size_t queries() const { return queries_.load(std::memory_order_relaxed); }
 
  private:
+  struct Block;
   struct Shards;
+  // The block holding grid point `index` of `pair` (its slot in `slot`), allocated if the table
+  // has room; nullptr if it has none.
+  Block* block_of(std::size_t pair, const std::array<std::int32_t, 3>& index,
+                  std::size_t& slot) const;
   std::optional<Vec3> point(std::size_t pair, const std::array<std::int32_t, 3>& index,
                             double pitch, const std::function<Vec3(const Vec3&)>& exact) const;
   std::optional<int> vouched_axis(const Vec3& estimate, double spread) const;
 
   int dimension_;
+  int side_;  // points along each axis of a block
+  std::size_t block_slots_;
+  std::uint64_t id_;  // unique among the tables a process makes (the per-thread block cache's key)
   DirectionBins bins_;
   std::size_t max_points_;
   std::uint32_t open_after_;
   std::unique_ptr<std::atomic<std::uint32_t>[]> pair_queries_;
   std::size_t pairs_;
   std::unique_ptr<Shards> shards_;
-  mutable std::atomic<std::size_t> held_{0}, answered_{0}, queries_{0};
+  mutable std::atomic<std::size_t> held_{0}, slots_{0}, answered_{0}, queries_{0};
 };
 
 }  // namespace shapeproc::geometry

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "libshapeproc/core/constants.hpp"
@@ -33,6 +34,37 @@ TEST(DirectionBins, PlanarAxes) {
   EXPECT_THROW(DirectionBins(2, 3), std::invalid_argument);
   EXPECT_THROW(DirectionBins(2, 0), std::invalid_argument);
   EXPECT_THROW(DirectionBins(3, 8), std::invalid_argument);
+}
+
+// An arc has an axis only when it stays within one sector; sectors are 45° wide, centred on
+// multiples of 45°, and the two sectors at ±180° are one.
+TEST(DirectionBins, AnArcHasTheAxisOfEveryDirectionOnItOrNone) {
+  const DirectionBins bins(2, 8);
+  const double degree = core::kPi / 180;
+  EXPECT_EQ(bins.arc_axis(at_angle(0), 22 * degree), 0);
+  EXPECT_EQ(bins.arc_axis(at_angle(0), 23 * degree), std::nullopt);
+  EXPECT_EQ(bins.arc_axis(at_angle(40), 4 * degree), 1);
+  EXPECT_EQ(bins.arc_axis(at_angle(40), 17 * degree), 1);
+  EXPECT_EQ(bins.arc_axis(at_angle(40), 18 * degree), std::nullopt);
+  EXPECT_EQ(bins.arc_axis(at_angle(179), 10 * degree), 0);  // across ±180°
+  EXPECT_EQ(bins.arc_axis(at_angle(-100), 5 * degree), 2);
+  // Every arc that has an axis holds it at both ends and in the middle.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> angle(-180, 180), width(0, 30);
+  int answered = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double a = angle(rng), w = width(rng);
+    const std::optional<int> axis = bins.arc_axis(at_angle(a), w * degree);
+    if (!axis) continue;
+    ++answered;
+    ASSERT_EQ(bins.axis_of(at_angle(a - w)), *axis) << a << " ± " << w;
+    ASSERT_EQ(bins.axis_of(at_angle(a + w)), *axis) << a << " ± " << w;
+    ASSERT_EQ(bins.axis_of(at_angle(a)), *axis) << a << " ± " << w;
+  }
+  // A uniform arc of half-width w in [0, 30]° stays in its 45° sector with probability
+  // E[max(0, 1 − 2w/45)] = 0.375: the rule is not stricter than the sectors.
+  EXPECT_NEAR(answered / 20000.0, 0.375, 0.02);
+  EXPECT_EQ(DirectionBins(3, 12).arc_axis(Vec3::UnitX(), 0.01), std::nullopt);
 }
 
 TEST(DirectionBins, HealpixBasePixelsHaveEqualAreas) {
