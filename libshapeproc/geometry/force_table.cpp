@@ -209,7 +209,7 @@ std::optional<int> ForceTable::axis(std::size_t pair, double pitch, const Vec3& 
     widest = std::max(widest, f.cross(estimate).norm() / along);
   }
   const double spread = std::atan(widest);
-  const std::optional<int> vouched = vouched_axis(estimate, 2.0 * spread + 1e-4);
+  const std::optional<int> vouched = vouched_axis(estimate, 2.0 * spread + 5e-3);
   if (vouched) answered_.fetch_add(1, std::memory_order_relaxed);
   return vouched;
 }

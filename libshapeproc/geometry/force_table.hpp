@@ -5,10 +5,13 @@
 // keeps its exact value at the points of a square (2D) or cubic (3D) grid of pitch h; at an offset
 // t between grid points it interpolates them (bilinear, trilinear), F̃(t) = Σ_k w_k F(g_k). The
 // corners' directions spread by an angle s about F̃'s, and the exact direction is taken to lie
-// within w = 2s + 1e-4 rad of F̃'s: the table answers only when every direction within w of F̃'s
+// within w = 2s + 0.005 rad of F̃'s: the table answers only when every direction within w of F̃'s
 // falls in the same axis bin (DirectionBins), and otherwise, or when a corner's force is too small
 // to have a direction, leaves the pair to the exact force. Tests check the answers against the
-// exact axes.
+// exact axes. The 0.005 rad is the exact force's own rounding: it is a sum of Gauss rules and
+// expansions whose switches with distance move its direction by a few thousandths of a radian (a
+// margin of 1e-4 rad let thin bars' axes differ from the exact ones within 0.15° of a bin's edge).
+
 //
 // A grid costs an exact force per point, so it pays only for pairs queried many times over the
 // offsets they meet: a pair's grid opens after kOpenAfter queries, and until then the caller

@@ -180,7 +180,7 @@ class PairMeasurer {
   // Axes of the gravitation directions of detailed pairs (force_table.hpp), shared by copies:
   // pairs whose product of mass sizes (2D boundary edges, 3D triangles or cubature points)
   // reaches kForceTableCost, on a grid of pitch kForceTablePitch times the sum of their radii.
-  static constexpr std::size_t kForceTableCost = 16;
+  static constexpr std::size_t kForceTableCost = 256;
   static constexpr double kForceTablePitch = 1.0 / 64;
   std::vector<std::size_t> mass_size_;
   std::vector<int> table_shape_;  // per shape, the first shape with the same proxy
