@@ -9,9 +9,9 @@
 // falls in the same axis bin (DirectionBins), and otherwise, or when a corner's force is too small
 // to have a direction, leaves the pair to the exact force. Tests check the answers against the
 // exact axes. The 0.005 rad is the exact force's own rounding: it is a sum of Gauss rules and
-// expansions whose switches with distance move its direction by a few thousandths of a radian (a
-// margin of 1e-4 rad let thin bars' axes differ from the exact ones within 0.15° of a bin's edge).
-
+// expansions whose switches with distance move its direction by a few thousandths of a radian
+// (with a margin of 1e-4 rad, a table of thin bars gave axes that differ from the exact ones
+// within 0.15° of a bin's edge).
 //
 // A grid costs an exact force per point, so it pays only for pairs queried many times over the
 // offsets they meet: a pair's grid opens after kOpenAfter queries, and until then the caller
