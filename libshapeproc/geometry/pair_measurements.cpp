@@ -390,13 +390,16 @@ double PairMeasurer::negligible_force(int a, int b, const Vec3& offset) const {
          std::max(1e-300, std::pow(radii_[i] + radii_[j] + offset.norm(), dimension_ - 1));
 }
 
+bool PairMeasurer::round_apart(int a, int b, const Vec3& offset) const {
+  if (dimension_ != 2) return false;
+  const double ra = round_[static_cast<std::size_t>(a)], rb = round_[static_cast<std::size_t>(b)];
+  return ra >= 0 && rb >= 0 && offset.norm() > ra + rb;
+}
+
 Vec3 PairMeasurer::gravitation_direction(int a, int b, const Vec3& offset) const {
   // Two round shapes whose outer circles are apart pull along the line from one centre (its
-  // reference position) to the other: the centroid direction, exactly (round_shape.hpp).
-  if (dimension_ == 2) {
-    const double ra = round_[static_cast<std::size_t>(a)], rb = round_[static_cast<std::size_t>(b)];
-    if (ra >= 0 && rb >= 0 && offset.norm() > ra + rb) return offset.normalized();
-  }
+  // reference position) to the other: the centroid direction, exactly.
+  if (round_apart(a, b, offset)) return offset.normalized();
   const Vec3 force = gravitation_force_between(a, b, offset);
   // A force that cancels (a dot centred in a ring) has no direction: fall back to the centroids.
   if (!(force.norm() > negligible_force(a, b, offset))) {
@@ -417,9 +420,8 @@ std::optional<int> PairMeasurer::table_axis(int a, int b, const Vec3& offset) co
   // multipole expansion to a low order, cheaper than the table's lookups. Round shapes apart
   // pull along the line of their centres (gravitation_direction), which the table of their
   // polygons' forces would only approximate.
+  if (round_apart(a, b, offset)) return std::nullopt;
   if (dimension_ == 2) {
-    const double ra = round_[i], rb = round_[j];
-    if (ra >= 0 && rb >= 0 && offset.norm() > ra + rb) return std::nullopt;
     const MassBoundary2& ma = proxies2_[i].mass;
     const MassBoundary2& mb = proxies2_[j].mass;
     constexpr double kFarEnough = 1.6;  // the expansion converges as ((r_a + r_b)/|R|)^n

@@ -147,6 +147,9 @@ class PairMeasurer {
                          const std::vector<double>& breakpoints) const;
   double hausdorff_distance(int a, int b, const Vec3& offset) const;
   Vec3 gravitation_direction(int a, int b, const Vec3& offset) const;
+  // 2D: both shapes round and their outer circles apart, so that they pull along the line of
+  // their centres (round_shape.hpp).
+  bool round_apart(int a, int b, const Vec3& offset) const;
   // The exact gravitation force between shape a at the origin and b at `offset`, and the norm
   // below which it has no direction (a force that cancels, such as a dot's centred in a ring).
   Vec3 gravitation_force_between(int a, int b, const Vec3& offset) const;
