@@ -25,6 +25,16 @@ class NeighbourGrid {
   // superset of the ids within the cell size of `position`, each once. Thread-safe.
   template <class F>
   void for_each_candidate(const geometry::Vec3& position, F&& f) const {
+    any_candidate(position, [&f](int id) {
+      f(id);
+      return false;
+    });
+  }
+
+  // Whether `test(id)` holds for one of the ids for_each_candidate would visit; visits them in
+  // the same order and stops at the first that passes. Thread-safe.
+  template <class Test>
+  bool any_candidate(const geometry::Vec3& position, Test&& test) const {
     const Eigen::Vector3i centre = cell_of(position);
     const int reach_z = dimension_ == 3 ? 1 : 0;
     std::array<std::size_t, 27> visited{};
@@ -39,14 +49,26 @@ class NeighbourGrid {
                               visited.begin() + visited_count)
             continue;
           visited[static_cast<std::size_t>(visited_count++)] = index;
-          for (int id : cells_[index]) f(id);
+          for (int id : cells_[index])
+            if (test(id)) return true;
         }
+    return false;
   }
 
   // Calls f(id) for every id in the cells that the box of half-side `distance` around `position`
   // meets: a superset of the ids within `distance` of `position`, each once. Thread-safe.
   template <class F>
   void for_each_candidate_within(const geometry::Vec3& position, double distance, F&& f) const {
+    any_candidate_within(position, distance, [&f](int id) {
+      f(id);
+      return false;
+    });
+  }
+
+  // Whether `test(id)` holds for one of the ids for_each_candidate_within would visit; stops at
+  // the first that passes. Thread-safe.
+  template <class Test>
+  bool any_candidate_within(const geometry::Vec3& position, double distance, Test&& test) const {
     const Eigen::Vector3i centre = cell_of(position);
     std::array<int, 3> low{}, high{};
     for (int axis = 0; axis < 3; ++axis) {
@@ -66,7 +88,9 @@ class NeighbourGrid {
     for (int z = low[2]; z <= high[2]; ++z)
       for (int y = low[1]; y <= high[1]; ++y)
         for (int x = low[0]; x <= high[0]; ++x)
-          for (int id : cells_[linear({cell(x, 0), cell(y, 1), cell(z, 2)})]) f(id);
+          for (int id : cells_[linear({cell(x, 0), cell(y, 1), cell(z, 2)})])
+            if (test(id)) return true;
+    return false;
   }
 
  private:

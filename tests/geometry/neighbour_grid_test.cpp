@@ -60,6 +60,35 @@ TEST(NeighbourGrid, CandidatesWithinADistanceHoldEveryPointThatNear) {
         expect_superset(dimension, periodic, 1.5, distance);
 }
 
+TEST(NeighbourGrid, AnyCandidateStopsAtTheFirstThatPassesInTheVisitingOrder) {
+  const Box3 window(Vec3::Zero(), Vec3(20, 20, 0));
+  NeighbourGrid grid(window, 2, 2.0, true);
+  core::Random random(7);
+  for (int i = 0; i < 200; ++i)
+    grid.insert(i, Vec3(random.uniform(0, 20), random.uniform(0, 20), 0));
+  for (const Vec3& at : {Vec3(1, 1, 0), Vec3(10, 19.5, 0), Vec3(7.3, 4.1, 0)}) {
+    std::vector<int> order, within;
+    grid.for_each_candidate(at, [&](int id) { order.push_back(id); });
+    grid.for_each_candidate_within(at, 5.0, [&](int id) { within.push_back(id); });
+    ASSERT_GE(order.size(), 3u);
+    for (const std::vector<int>* ids : {&order, &within}) {
+      // A test passing at the third id visited: three visits, and true.
+      const int target = (*ids)[2];
+      std::vector<int> visited;
+      const auto test = [&](int id) {
+        visited.push_back(id);
+        return id == target;
+      };
+      const bool found =
+          ids == &order ? grid.any_candidate(at, test) : grid.any_candidate_within(at, 5.0, test);
+      EXPECT_TRUE(found);
+      EXPECT_EQ(visited, std::vector<int>(ids->begin(), ids->begin() + 3));
+    }
+    EXPECT_FALSE(grid.any_candidate(at, [](int) { return false; }));
+    EXPECT_FALSE(grid.any_candidate_within(at, 5.0, [](int) { return false; }));
+  }
+}
+
 TEST(NeighbourGrid, RemovedIdsAreNoLongerCandidates) {
   const Box3 window(Vec3::Zero(), Vec3(10, 10, 0));
   NeighbourGrid grid(window, 2, 2.0, false);

@@ -39,16 +39,14 @@ GrowthState::GrowthState(const GrowthExemplar& exemplar, const geometry::Domain&
 bool GrowthState::in_domain(const Vec3& p) const { return inside(domain_, p) >= 0.5; }
 
 bool GrowthState::overlaps(const Vec3& p, double radius, int skip) const {
-  bool hit = false;
-  contacts_.for_each_candidate(p, [&](int o) {
-    if (hit || o == skip) return;
+  return contacts_.any_candidate(p, [&](int o) {
+    if (o == skip) return false;
     // Circles that touch do not overlap: bounding radii are half the nearest distance, so that
     // an exemplar's nearest pairs touch exactly, and rounding must not part them.
     const double reach =
         (radius + exemplar_.radius[static_cast<std::size_t>(source(o))]) * (1.0 - kTouching);
-    hit = domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
+    return domain_.minimum_image(position(o) - p).squaredNorm() < reach * reach;
   });
-  return hit;
 }
 
 bool GrowthState::collides(int source, const Vec3& p, int skip) const {
@@ -60,41 +58,34 @@ bool GrowthState::collides(int source, const Vec3& p, int skip) const {
     return static_cast<std::size_t>(elements[static_cast<std::size_t>(element)].shape);
   };
   const std::size_t shape = shape_of(source);
-  bool hit = false;
-  contacts_.for_each_candidate(p, [&](int o) {
-    if (hit || o == skip) return;
+  return contacts_.any_candidate(p, [&](int o) {
+    if (o == skip) return false;
     const auto other =
         static_cast<std::size_t>(elements[static_cast<std::size_t>(this->source(o))].shape);
     const Vec3 offset = domain_.minimum_image(position(o) - p);
     const double reach = exemplar_.shape_radius[shape] + exemplar_.shape_radius[other];
-    if (offset.squaredNorm() >= reach * reach) return;
-    hit = domain_.dimension() == 3
-              ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset,
-                                        true) > 0
-              : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
-                                        geometry::Vec2(offset.x(), offset.y()), true) > 0;
+    if (offset.squaredNorm() >= reach * reach) return false;
+    return domain_.dimension() == 3
+               ? geometry::overlap_depth(exemplar_.proxy3[shape], exemplar_.proxy3[other], offset,
+                                         true) > 0
+               : geometry::overlap_depth(exemplar_.proxy2[shape], exemplar_.proxy2[other],
+                                         geometry::Vec2(offset.x(), offset.y()), true) > 0;
   });
-  return hit;
 }
 
 bool GrowthState::on_free_point(const Vec3& p, double radius) const {
-  bool hit = false;
-  free_.for_each_candidate(p, [&](int i) {
+  return free_.any_candidate(p, [&](int i) {
     const FreePoint& v = points_[static_cast<std::size_t>(i)];
-    hit = hit || (v.alive && domain_.minimum_image(v.position - p).squaredNorm() <
-                                 (v.radius + radius) * (v.radius + radius));
+    return v.alive && domain_.minimum_image(v.position - p).squaredNorm() <
+                          (v.radius + radius) * (v.radius + radius);
   });
-  return hit;
 }
 
 bool GrowthState::free_point_within(const Vec3& p, double distance) const {
-  bool hit = false;
-  free_.for_each_candidate_within(p, distance, [&](int i) {
+  return free_.any_candidate_within(p, distance, [&](int i) {
     const FreePoint& v = points_[static_cast<std::size_t>(i)];
-    hit = hit ||
-          (v.alive && domain_.minimum_image(v.position - p).squaredNorm() < distance * distance);
+    return v.alive && domain_.minimum_image(v.position - p).squaredNorm() < distance * distance;
   });
-  return hit;
 }
 
 int GrowthState::add(int source, const Vec3& p) {
@@ -148,14 +139,29 @@ void GrowthState::add_free_points(int e) {
     if (offset.squaredNorm() < far * far)
       near_.push_back({offset, exemplar_.radius[static_cast<std::size_t>(source(o))]});
   });
+  // Offsets between a point and those elements are under 2 far; when that is within half of
+  // every period, each is its own nearest image and the test below needs no minimum image.
+  bool plain = true;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double period = domain_.period()[axis];
+    plain = plain && !(period > 0 && !(2.0 * far < 0.5 * period));
+  }
   for (const FreeSpaceVector& v : vectors) {
     const Vec3 q = domain_.wrap(position_[i] + v.offset);
     if (!in_domain(q)) continue;
     // As overlaps(q, v.radius), over the elements found.
-    const bool covered = std::any_of(near_.begin(), near_.end(), [&](const Nearby& n) {
-      const double reach = (v.radius + n.radius) * (1.0 - kTouching);
-      return domain_.minimum_image(n.offset - v.offset).squaredNorm() < reach * reach;
-    });
+    bool covered = false;
+    if (plain) {
+      for (const Nearby& n : near_) {
+        const double reach = (v.radius + n.radius) * (1.0 - kTouching);
+        covered |= (n.offset - v.offset).squaredNorm() < reach * reach;
+      }
+    } else {
+      for (const Nearby& n : near_) {
+        const double reach = (v.radius + n.radius) * (1.0 - kTouching);
+        covered |= domain_.minimum_image(n.offset - v.offset).squaredNorm() < reach * reach;
+      }
+    }
     if (covered) continue;
     int id = static_cast<int>(points_.size());
     if (!unused_.empty()) {  // a dead point's slot
@@ -202,9 +208,10 @@ geometry::Neighbourhood GrowthState::neighbourhood(int e) const {
 
 std::size_t GrowthState::count_within(const Vec3& p, double distance, std::size_t enough) const {
   std::size_t n = 0;
-  elements_.for_each_candidate(p, [&](int o) {
-    if (n < enough && domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance)
-      ++n;
+  if (enough == 0) return 0;
+  elements_.any_candidate(p, [&](int o) {
+    if (domain_.minimum_image(position(o) - p).squaredNorm() < distance * distance) ++n;
+    return n >= enough;
   });
   return n;
 }

@@ -191,6 +191,18 @@ std::vector<int> select_seeds(const Growth& g, core::Random& random) {
   return seeds;
 }
 
+// Whether a copy of exemplar element `element` at p, made for candidate m after `before` copies,
+// would break the density calibration's limit: its neighbourhood, with it and the copies before
+// it, may hold at most `most`; its elements are counted only until they break it.
+bool crowded(const Growth& g, int m, int element, const Vec3& p, std::size_t before) {
+  const std::size_t part = static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)]);
+  const double most = g.settings.most_neighbours[part];
+  if (!std::isfinite(most)) return false;
+  const double room = most - static_cast<double>(before) - 1.0;
+  const std::size_t breaking = room < 0.0 ? 0 : static_cast<std::size_t>(std::floor(room)) + 1;
+  return g.state.count_within(p, g.exemplar.reach_of(element), breaking) >= breaking;
+}
+
 // The copies candidate m would make around seed s: its right-partial pairs on free space.
 std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
                                             const geometry::Neighbourhood& hood, int m) {
@@ -205,19 +217,10 @@ std::vector<std::pair<int, Vec3>> copies_of(const Growth& g, int s,
     if (paired[i]) continue;
     const Vec3 p = g.domain.wrap(g.state.position(s) + near[i].offset);
     const double r = g.exemplar.radius[static_cast<std::size_t>(near[i].element)];
-    if (!g.state.in_domain(p) || !g.state.on_free_point(p, r) ||
-        g.state.collides(near[i].element, p))
+    // The limit first: inside a grown region it is what refuses nearly every copy.
+    if (!g.state.in_domain(p) || crowded(g, m, near[i].element, p, out.size()) ||
+        !g.state.on_free_point(p, r) || g.state.collides(near[i].element, p))
       continue;
-    const std::size_t part = static_cast<std::size_t>(g.exemplar.part[static_cast<std::size_t>(m)]);
-    const double most = g.settings.most_neighbours[part];
-    if (std::isfinite(most)) {
-      // The density calibration's limit: the copy's neighbourhood, with it and the copies before
-      // it, may hold at most `most`; its elements are counted only until they break it.
-      const double room = most - static_cast<double>(out.size()) - 1.0;
-      const std::size_t breaking = room < 0.0 ? 0 : static_cast<std::size_t>(std::floor(room)) + 1;
-      if (g.state.count_within(p, g.exemplar.reach_of(near[i].element), breaking) >= breaking)
-        continue;
-    }
     bool clash = false;  // with the copies before it (bounding circles)
     for (const auto& [e, q] : out) {
       if (g.exemplar.exact) break;  // one exemplar neighbourhood's shapes do not overlap
