@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -54,6 +55,51 @@ TEST(TriangleDistance, AnalyticCases) {
   EXPECT_NEAR(
       triangle_triangle_distance({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {3, 4, 0}, {3, 4, 0}, {3, 4, 0}),
       5.0, 1e-12);
+}
+
+TEST(TriangleDistance, SkewEdgesAreNearestAtTheirCommonPerpendicular) {
+  // A's edge along x at z = 0 and B's along y at z = 1: every corner and face is farther.
+  EXPECT_NEAR(triangle_triangle_distance({-1, 0, 0}, {1, 0, 0}, {0, -1, -1}, {0, -1, 1}, {0, 1, 1},
+                                         {1, 0, 2}),
+              1.0, 1e-12);
+  // The same pair moved and turned: a corner of B over A's inside instead.
+  EXPECT_NEAR(triangle_triangle_distance({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0.5}, {1, 1, 3},
+                                         {2, 1, 3}),
+              0.5, 1e-12);
+}
+
+TEST(TriangleDistance, MatchesDenseSamplingOfOneTriangle) {
+  // The distance between two triangles is the least distance from a point of the first to the
+  // second: sampled on a barycentric grid of the first (step h), the sampled minimum is at least
+  // the exact one and at most h above it. Intersecting pairs (most of the near ones) give 0.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto random_point = [&](const Vec3& centre) {
+    return Vec3(centre + Vec3(u(rng), u(rng), u(rng)));
+  };
+  constexpr int kSteps = 40;
+  int intersecting = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec3 shift = Vec3(u(rng), u(rng), u(rng)) * (trial % 2 ? 1.0 : 3.0);
+    const Vec3 a0 = random_point(Vec3::Zero()), a1 = random_point(Vec3::Zero()),
+               a2 = random_point(Vec3::Zero());
+    const Vec3 b0 = random_point(shift), b1 = random_point(shift), b2 = random_point(shift);
+    double sampled = INFINITY;
+    for (int i = 0; i <= kSteps; ++i)
+      for (int j = 0; i + j <= kSteps; ++j) {
+        const double s = double(i) / kSteps, t = double(j) / kSteps;
+        sampled = std::min(sampled,
+                           point_triangle_distance(a0 + s * (a1 - a0) + t * (a2 - a0), b0, b1, b2));
+      }
+    const double step = std::max({(a1 - a0).norm(), (a2 - a0).norm()}) / kSteps;
+    const double exact = triangle_triangle_distance(a0, a1, a2, b0, b1, b2);
+    EXPECT_LE(exact, sampled + 1e-12) << trial;
+    EXPECT_GE(exact, sampled - step - 1e-12) << trial;
+    EXPECT_NEAR(exact, triangle_triangle_distance(b0, b1, b2, a0, a1, a2), 1e-12) << trial;
+    intersecting += exact == 0.0;
+  }
+  EXPECT_GT(intersecting, 10);  // both kinds of pair were tried
+  EXPECT_LT(intersecting, 190);
 }
 
 }  // namespace
