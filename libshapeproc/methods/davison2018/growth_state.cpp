@@ -144,7 +144,7 @@ void GrowthState::add_free_points(int e) {
   bool plain = true;
   for (int axis = 0; axis < 3; ++axis) {
     const double period = domain_.period()[axis];
-    plain = plain && !(period > 0 && !(2.0 * far < 0.5 * period));
+    if (period > 0 && !(2.0 * far < 0.5 * period)) plain = false;
   }
   for (const FreeSpaceVector& v : vectors) {
     const Vec3 q = domain_.wrap(position_[i] + v.offset);
