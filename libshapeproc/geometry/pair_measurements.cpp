@@ -416,11 +416,11 @@ std::optional<int> PairMeasurer::table_axis(int a, int b, const Vec3& offset) co
   if (a > b || (a == b && lexicographically_negative(offset))) return table_axis(b, a, -offset);
   const std::size_t i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
   if (mass_size_[i] * mass_size_[j] < kForceTableCost) return std::nullopt;
-  // Regions whose circles about their centroids are well apart: the exact force is the pair's
-  // multipole expansion to a low order, cheaper than the table's lookups. Round shapes apart
-  // pull along the line of their centres (gravitation_direction), which the table of their
-  // polygons' forces would only approximate.
+  // Round shapes apart pull along the line of their centres (gravitation_direction), which the
+  // table of their polygons' forces would only approximate.
   if (round_apart(a, b, offset)) return std::nullopt;
+  // Regions whose circles about their centroids are well apart: the exact force is the pair's
+  // multipole expansion to a low order, cheaper than the table's lookups.
   if (dimension_ == 2) {
     const MassBoundary2& ma = proxies2_[i].mass;
     const MassBoundary2& mb = proxies2_[j].mass;

@@ -151,16 +151,10 @@ void GrowthState::add_free_points(int e) {
     if (!in_domain(q)) continue;
     // As overlaps(q, v.radius), over the elements found.
     bool covered = false;
-    if (plain) {
-      for (const Nearby& n : near_) {
-        const double reach = (v.radius + n.radius) * (1.0 - kTouching);
-        covered |= (n.offset - v.offset).squaredNorm() < reach * reach;
-      }
-    } else {
-      for (const Nearby& n : near_) {
-        const double reach = (v.radius + n.radius) * (1.0 - kTouching);
-        covered |= domain_.minimum_image(n.offset - v.offset).squaredNorm() < reach * reach;
-      }
+    for (const Nearby& n : near_) {
+      const double reach = (v.radius + n.radius) * (1.0 - kTouching);
+      const Vec3 d = n.offset - v.offset;
+      covered |= (plain ? d : domain_.minimum_image(d)).squaredNorm() < reach * reach;
     }
     if (covered) continue;
     int id = static_cast<int>(points_.size());
