@@ -20,6 +20,7 @@ declare -A allowed=(
   [methods]="core geometry model synthesis sample fit metrics"
   [studio]="core geometry model synthesis render io sample fit metrics evaluation"
   [pipeline]="core geometry model synthesis render io sample fit metrics evaluation methods report"
+  [distributed]="core geometry model synthesis io sample fit"
 )
 # The synthesis methods by paper (libshapeproc/methods/): a folder may include, within methods/,
 # only itself and the folders listed; the files at the top (the hybrid, the tile baseline) any.

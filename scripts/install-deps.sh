@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev pkgconf
   libbox2d-dev libbullet-dev
   clang libclang-rt-14-dev
+  libopenmpi-dev openmpi-bin
   libcpp-httplib-dev chromium chromium-driver python3-selenium
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest
 )

@@ -214,6 +214,22 @@ SampleResult ShapeProcessSampler::sample_layers(core::Random& random,
   return result;
 }
 
+std::string ShapeProcessSampler::why_not_decomposed(const ChainTables& tables,
+                                                    const std::vector<Element>& fixed,
+                                                    long long observe_every) const {
+  if (!fixed.empty()) return "fixed elements";
+  if (options_.partition && !layers_.empty()) return "a layered model";
+  if (!options_.free_region.isEmpty()) return "a free region";
+  if (observe_every > 0) return "observations";
+  if (options_.compression.enabled())
+    return "a model whose outputs need the compressing burn-in (a packed exemplar's)";
+  if (tables.interaction->saturated()) return "a model with saturated bands";
+  if (!decomposable(domain_, reach()))
+    return "this domain: too small to cut into cells of the model's reach (" +
+           core::format_general(reach(), 4) + ")";
+  return {};
+}
+
 SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
                                                const std::vector<Element>& fixed,
                                                const std::vector<Element>& start,
@@ -221,9 +237,13 @@ SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
                                                const synthesis::ChainControl& control) const {
   // The decomposed sampler has no compressing burn-in: a model that needs one runs one chain. Nor
   // does it hold its cells' surroundings' own links, which a saturated band's intensity reads.
-  if (options_.decompose && fixed.empty() && options_.free_region.isEmpty() && observe_every == 0 &&
-      !options_.compression.enabled() && !tables.interaction->saturated() &&
-      decomposable(domain_, reach()))
+  const std::string undecomposable = why_not_decomposed(tables, fixed, observe_every);
+  if (options_.partition && !undecomposable.empty())
+    throw core::ArgumentError("sample",
+                              "a run across processes needs the decomposed sampler, "
+                              "which cannot take " +
+                                  undecomposable);
+  if (options_.decompose && undecomposable.empty())
     return sample_by_cells(model_, tables, *region_, options_, random, control);
   SampleResult result;
   long long growth_steps = 0;
@@ -295,7 +315,10 @@ SampleResult ShapeProcessSampler::sample_layer(const ChainTables& tables,
 
 synthesis::SynthesisResult ShapeProcessSampler::synthesize(
     core::Random& random, const synthesis::ChainControl& control) const {
-  SampleResult sampled = sample(random, control);
+  return describe(sample(random, control));
+}
+
+synthesis::SynthesisResult ShapeProcessSampler::describe(SampleResult sampled) const {
   synthesis::SynthesisResult out;
   out.scene = std::move(sampled.scene);
   out.trace = std::move(sampled.trace);

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "libshapeproc/core/random.hpp"
@@ -32,6 +33,7 @@ namespace shapeproc::sample {
 struct ChainGeometry;
 struct ChainTables;
 struct ChainRegion;
+class CellPartition;
 }  // namespace shapeproc::sample
 
 namespace shapeproc::sample {
@@ -92,6 +94,12 @@ struct SamplerOptions {
   // saturated band, the whole-domain chain. The output does not depend on the threads.
   bool decompose = false;
   int threads = 0;
+  // The processes the decomposed run's cells are shared among (cell_partition.hpp; the
+  // distributed module's MPI ranks), each calling sample() with the same seed and options: each
+  // returns its own cells' elements, and the counts of the whole. Decomposition is then required:
+  // a model or request the decomposed sampler cannot take is refused (core::ArgumentError).
+  // Empty: this process owns every cell.
+  std::shared_ptr<CellPartition> partition;
 };
 
 struct SampleResult {
@@ -148,6 +156,9 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   synthesis::SynthesisResult synthesize(core::Random& random,
                                         const synthesis::ChainControl& control) const override;
   SampleResult sample(core::Random& random, const synthesis::ChainControl& control = {}) const;
+  // A sample as synthesize() gives it: its scene, trace, record (method, domain, options, steps)
+  // and counters (moves; cells and sweeps when decomposed).
+  synthesis::SynthesisResult describe(SampleResult sampled) const;
 
   const geometry::Domain& domain() const { return domain_; }
   double shift_radius() const;
@@ -169,6 +180,10 @@ class ShapeProcessSampler : public synthesis::Synthesizer {
   std::vector<std::unique_ptr<const ChainTables>> layers_;
   // A layered model's layers in turn, each given the elements of those below.
   SampleResult sample_layers(core::Random& random, const synthesis::ChainControl& control) const;
+  // Why a run with `tables` cannot be decomposed ("a free region"), or empty when it can.
+  std::string why_not_decomposed(const ChainTables& tables,
+                                 const std::vector<geometry::Element>& fixed,
+                                 long long observe_every) const;
   // One chain with `tables`, from `fixed` and `start`: the whole run of an unlayered model, or one
   // layer's given those below.
   SampleResult sample_layer(const ChainTables& tables, const std::vector<geometry::Element>& fixed,

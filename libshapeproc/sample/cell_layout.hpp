@@ -30,6 +30,10 @@ class CellLayout {
   geometry::Vec3 spanned_period() const;
 
   int count() const { return total_; }
+  // Cells along each axis (1 along the axes that are not cut), and a cell's index along them:
+  // cell numbers run along x first, then y, then z.
+  const Eigen::Vector3i& per_axis() const { return per_axis_; }
+  Eigen::Vector3i index_of(int cell) const;
   int colours() const { return 1 << dimension_; }
   int colour(int cell) const;
   // The cell holding a reference position of the domain.
@@ -45,7 +49,6 @@ class CellLayout {
 
  private:
   CellLayout(const geometry::Domain& domain, const Eigen::Vector3i& per_axis);
-  Eigen::Vector3i index_of(int cell) const;
   int cell_at(Eigen::Vector3i index) const;  // -1 outside an open domain
 
   geometry::Box3 box_;

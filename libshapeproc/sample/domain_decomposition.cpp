@@ -8,10 +8,11 @@
 #include "libshapeproc/core/check.hpp"
 #include "libshapeproc/core/error.hpp"
 #include "libshapeproc/core/parallel_for.hpp"
-#include "libshapeproc/geometry/nearest_neighbours.hpp"
 #include "libshapeproc/model/interaction.hpp"
 #include "libshapeproc/sample/birth_death_chain.hpp"
 #include "libshapeproc/sample/cell_layout.hpp"
+#include "libshapeproc/sample/cell_partition.hpp"
+#include "libshapeproc/sample/decomposed_cells.hpp"
 #include "libshapeproc/sample/stationarity.hpp"
 
 namespace shapeproc::sample {
@@ -19,8 +20,6 @@ namespace shapeproc::sample {
 namespace {
 
 constexpr double kElementsPerCell = 64;  // the cells' size at the pilot's density
-constexpr double kStepsPerElement = 10;  // steps of a visit per expected element of its cell
-constexpr long long kLeastVisitSteps = 50;
 constexpr int kLeastSweeps = 20;
 constexpr int kMostSweeps = 200;            // about 2,000 steps per element (automatic rule)
 constexpr std::size_t kLeastCounts = 24;    // the stationarity test's counts (one per colour visit)
@@ -30,19 +29,6 @@ constexpr std::size_t kLeastSpacings = 10;  // its mean nearest distances (one p
 constexpr double kPilotReaches2 = 6, kPilotReaches3 = 2.5;
 constexpr long long kPilotStepsPerElement = 200;
 constexpr long long kPilotMostSteps = 2'000'000;
-constexpr long long kInsertAttempts = 30;  // random sequential insertion: tries per element wanted
-
-// SplitMix64 of the parts: a visit's seed from the run's, the sweep, the colour and the cell.
-std::uint64_t mix(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-  std::uint64_t z = seed;
-  for (std::uint64_t part : {a, b, c}) {
-    z += 0x9E3779B97F4A7C15ULL * (part + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-  }
-  return z;
-}
 
 // The model's stationary density (elements per unit measure): exact without interaction, else the
 // mean count over the second half of a chain on a torus of kPilotReaches2 or 3 reaches (at most the
@@ -85,112 +71,6 @@ double pilot_density(const model::ShapeProcessModel& model, const ChainTables& t
   return mean / torus.measure();
 }
 
-// The decomposed chain's state and one visit of a cell.
-class Cells {
- public:
-  Cells(const ChainTables& tables, const ChainRegion& whole, CellLayout layout, double density)
-      : tables_(tables), whole_(whole), layout_(std::move(layout)), density_(density) {}
-
-  CellLayout& layout() { return layout_; }
-
-  // Moves every element to the cell that holds it under the current offset.
-  void sort_into_cells(std::vector<Element> elements) {
-    cells_.assign(static_cast<std::size_t>(layout_.count()), {});
-    left_out_.resize(cells_.size(), 0);
-    for (const Element& e : elements)
-      cells_[static_cast<std::size_t>(layout_.cell_of(e.position))].push_back(e);
-  }
-
-  std::vector<Element> all() const {
-    std::vector<Element> out;
-    for (const auto& cell : cells_) out.insert(out.end(), cell.begin(), cell.end());
-    return out;
-  }
-
-  // Start elements the hard core refused, over every visit so far.
-  int left_out() const {
-    int n = 0;
-    for (int k : left_out_) n += k;
-    return n;
-  }
-
-  long long size() const {
-    long long n = 0;
-    for (const auto& cell : cells_) n += static_cast<long long>(cell.size());
-    return n;
-  }
-
-  double measure(int cell) const { return geometry::measure(layout_.box(cell), tables_.dimension); }
-
-  // The steps of a visit: fixed by the pilot's density and the cell's measure.
-  long long visit_steps(int cell) const {
-    if (!(measure(cell) > 0)) return 0;  // an open domain's empty partial cell
-    return std::max(kLeastVisitSteps, std::llround(kStepsPerElement * density_ * measure(cell)));
-  }
-
-  // Updates `cell` given the elements around it: `steps` birth-death steps, or (fill) random
-  // sequential insertion up to the pilot's density. Only the cell's own list changes, so cells of
-  // one colour may be visited at once.
-  MoveCounts visit(int cell, long long steps, bool fill, std::uint64_t seed) {
-    const geometry::Box3 box = layout_.box(cell);
-    if (!(measure(cell) > 0)) return {};
-    const geometry::Vec3 centre = box.center();
-    geometry::Vec3 margin = geometry::Vec3::Zero();  // none along the axes cells span
-    for (int axis = 0; axis < tables_.dimension; ++axis)
-      if (layout_.cut(axis)) margin[axis] = tables_.reach;
-    geometry::Box3 grid(box.min() - margin, box.max() + margin);
-    if (!whole_.domain.periodic()) grid = grid.intersection(whole_.domain.box());
-    ChainRegion region{whole_.domain.periodic()
-                           ? geometry::Domain(grid, tables_.dimension, geometry::Boundary::open)
-                           : whole_.domain,
-                       box};
-    region.grid_box = grid;
-    region.confined = true;
-    region.period = layout_.spanned_period();
-    region.shift_probability = whole_.shift_probability;
-    region.near_birth_share = whole_.near_birth_share;
-    region.shift_radius = whole_.shift_radius;
-    std::vector<Element> around, own;
-    for (int other : layout_.around(cell)) {
-      for (Element e : cells_[static_cast<std::size_t>(other)]) {
-        e.position = layout_.image_near(e.position, centre);
-        if (grid.contains(e.position)) around.push_back(e);
-      }
-    }
-    for (Element e : cells_[static_cast<std::size_t>(cell)]) {
-      e.position = layout_.image_near(e.position, centre);
-      own.push_back(e);
-    }
-    core::Random random(seed);
-    BirthDeathChain chain(tables_, region, random, {}, {});
-    chain.add_surroundings(around);
-    chain.add_start(own);
-    if (fill) {
-      const double wanted =
-          density_ * measure(cell) - static_cast<double>(chain.free_elements().size());
-      const int n = static_cast<int>(std::max(0.0, std::round(wanted)));
-      chain.insert_at_random(n, kInsertAttempts * std::max(1, n));
-    } else {
-      for (long long s = 0; s < steps; ++s) chain.step();
-    }
-    std::vector<Element>& mine = cells_[static_cast<std::size_t>(cell)];
-    mine = chain.free_elements();
-    for (Element& e : mine) e.position = whole_.domain.wrap(e.position);
-    // Own elements the hard core refused on entering (start elements in conflict; none after the
-    // first visit): written by this cell's visit only.
-    left_out_[static_cast<std::size_t>(cell)] += chain.start_left_out();
-    return chain.moves();
-  }
-
- private:
-  const ChainTables& tables_;
-  const ChainRegion& whole_;
-  CellLayout layout_;
-  double density_;
-  std::vector<std::vector<Element>> cells_;
-  std::vector<int> left_out_;  // per cell
-};
-
 }  // namespace
 
 double cell_side(double reach, double density, int dimension) {
@@ -222,18 +102,33 @@ CellLayout plan_cells(const geometry::Domain& domain, const ChainTables& tables,
   return *layout;
 }
 
-// The elements' mean distance to their nearest neighbour (reference positions, the nearest image
-// on a torus): a pair statistic of the whole output, cheap beside a sweep (one grid pass), that
-// moves where the count alone may not (elements that rearrange at a constant count).
-double mean_nearest_distance(const std::vector<Element>& elements, const geometry::Domain& domain) {
-  if (elements.size() < 2) return 0.0;
-  std::vector<geometry::Vec3> points;
-  points.reserve(elements.size());
-  for (const Element& e : elements) points.push_back(e.position);
-  double sum = 0.0;
-  for (const auto& nearest : geometry::nearest_neighbours(points, domain, 1))
-    if (!nearest.empty()) sum += nearest.front().offset.norm();
-  return sum / static_cast<double>(points.size());
+}  // namespace
+
+namespace {
+
+// The output's mean nearest spacing (DecomposedCells::spacing) over every process's cells, with
+// the cells around each process's own refreshed first: a pair statistic of the whole output,
+// cheap beside a sweep, that moves where the count alone may not (elements that rearrange at a
+// constant count).
+double mean_spacing(DecomposedCells& cells, int threads) {
+  CellPartition& partition = cells.partition();
+  cells.refresh_borders();
+  std::vector<int> own;
+  for (int c = 0; c < cells.layout().count(); ++c)
+    if (partition.owns(c)) own.push_back(c);
+  std::vector<SpacingSum> sums(own.size());
+  core::parallel_for(static_cast<long long>(own.size()), threads, [&](long long i) {
+    sums[static_cast<std::size_t>(i)] = cells.spacing(own[static_cast<std::size_t>(i)]);
+  });
+  SpacingSum local;
+  for (const SpacingSum& s : sums) {
+    local.units += s.units;
+    local.elements += s.elements;
+  }
+  const long long units = partition.sum(local.units), elements = partition.sum(local.elements);
+  if (elements == 0) return 0.0;
+  return static_cast<double>(units) / DecomposedCells::kSpacingUnits * cells.spacing_cap() /
+         static_cast<double>(elements);
 }
 
 }  // namespace
@@ -245,19 +140,21 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     throw core::ArgumentError("sample",
                               "the decomposed sampler takes no fixed elements, free region or "
                               "observations");
+  OneProcess alone;
+  CellPartition& partition = options.partition ? *options.partition : alone;
+  if (!options.start.empty() && partition.processes() > 1)
+    throw core::ArgumentError("sample", "a run across processes takes no start elements");
   const geometry::Domain& domain = whole.domain;
   const int dimension = tables.dimension;
   const std::uint64_t run_seed = random.index(std::numeric_limits<std::uint64_t>::max());
-  const double density = pilot_density(model, tables, whole, mix(run_seed, 0, 0, 0));
-  Cells cells(tables, whole, plan_cells(domain, tables, density), density);
+  const double density = pilot_density(model, tables, whole, visit_seed(run_seed, 0, 0, 0));
+  DecomposedCells cells(tables, whole, plan_cells(domain, tables, density), density, partition);
   std::vector<MoveCounts> moves(static_cast<std::size_t>(cells.layout().count()));
   const auto shift_cells = [&] {
     geometry::Vec3 offset = geometry::Vec3::Zero();
     for (int axis = 0; axis < dimension; ++axis)
       offset[axis] = random.uniform(0.0, cells.layout().side()[axis]);
-    std::vector<Element> elements = cells.all();
-    cells.layout().set_offset(offset);
-    cells.sort_into_cells(std::move(elements));
+    cells.shift(offset);
   };
   // One pass over the colours; `fill`: random sequential insertion instead of steps.
   long long steps = 0;
@@ -266,29 +163,35 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     shift_cells();
     for (int colour = 0; colour < cells.layout().colours(); ++colour) {
       std::vector<int> ids;
-      for (int c = 0; c < cells.layout().count(); ++c)
-        if (cells.layout().colour(c) == colour) ids.push_back(c);
-      if (ids.empty()) continue;  // a colour of an axis that is not cut
+      long long colour_steps = 0;  // over every process's cells of the colour
+      bool any = false;
+      for (int c = 0; c < cells.layout().count(); ++c) {
+        if (cells.layout().colour(c) != colour) continue;
+        any = true;
+        colour_steps += cells.visit_steps(c);
+        if (partition.owns(c)) ids.push_back(c);
+      }
+      if (!any) continue;  // a colour of an axis that is not cut
+      cells.refresh_borders();
       core::parallel_for(static_cast<long long>(ids.size()), options.threads, [&](long long i) {
         const int cell = ids[static_cast<std::size_t>(i)];
         const std::uint64_t seed =
-            mix(run_seed, static_cast<std::uint64_t>(number) + 1,
-                static_cast<std::uint64_t>(colour), static_cast<std::uint64_t>(cell));
+            visit_seed(run_seed, static_cast<std::uint64_t>(number) + 1,
+                       static_cast<std::uint64_t>(colour), static_cast<std::uint64_t>(cell));
         moves[static_cast<std::size_t>(cell)] +=
             cells.visit(cell, cells.visit_steps(cell), fill, seed);
       });
       if (!fill) {
-        for (int id : ids) steps += cells.visit_steps(id);
-        counts.push_back(static_cast<int>(cells.size()));
+        steps += colour_steps;
+        counts.push_back(static_cast<int>(partition.sum(cells.own_size())));
       }
-      if (control.cancelled()) throw core::Cancelled();
+      if (partition.any(control.cancelled())) throw core::Cancelled();
     }
   };
-
   SampleResult result;
   result.stationary = true;
   if (!options.start.empty()) {
-    cells.sort_into_cells(options.start);  // kept where the hard core allows, at the first visit
+    cells.place(options.start);  // kept where the hard core allows, at the first visit
     result.start_kept = static_cast<int>(options.start.size());  // less those left out, below
   } else {
     sweep(0, true);
@@ -303,11 +206,9 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     // The test reads the second half of the values only, and checks from kLeastSweeps on: the
     // sweeps before half of that are never read (a placeholder keeps the count).
     if (automatic)
-      spacings.push_back(2 * number > kLeastSweeps ? mean_nearest_distance(cells.all(), domain)
-                                                   : 0.0);
+      spacings.push_back(2 * number > kLeastSweeps ? mean_spacing(cells, options.threads) : 0.0);
     if (options.trace_every > 0)
-      result.trace.push_back(
-          {steps, static_cast<int>(cells.size()), std::numeric_limits<double>::quiet_NaN()});
+      result.trace.push_back({steps, counts.back(), std::numeric_limits<double>::quiet_NaN()});
     if (control.progress) control.progress(steps, total);
     if (!automatic) {
       if (steps >= total) break;
@@ -324,11 +225,19 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
     }
   }
   result.iterations = steps;
-  result.start_left_out = cells.left_out();
+  result.start_left_out = static_cast<int>(partition.sum(cells.left_out()));
   result.start_kept -= result.start_left_out;
-  for (const MoveCounts& m : moves) result.moves += m;
+  MoveCounts local;
+  for (const MoveCounts& m : moves) local += m;
+  for (auto [total_of, own] : {std::pair{&result.moves.births_accepted, local.births_accepted},
+                               {&result.moves.births_proposed, local.births_proposed},
+                               {&result.moves.deaths_accepted, local.deaths_accepted},
+                               {&result.moves.deaths_proposed, local.deaths_proposed},
+                               {&result.moves.shifts_accepted, local.shifts_accepted},
+                               {&result.moves.shifts_proposed, local.shifts_proposed}})
+    *total_of = partition.sum(own);
   result.scene = tables.geometry->shape_space;
-  result.scene.elements = cells.all();
+  result.scene.elements = cells.own_elements();
   result.cells = cells.layout().count();
   result.sweeps = done;
   result.pilot_density = density;

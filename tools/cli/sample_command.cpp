@@ -22,6 +22,7 @@
 #include "libshapeproc/synthesis/output_check.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/common.hpp"
+#include "tools/cli/distributed_sample.hpp"
 #include "tools/cli/flags.hpp"
 #include "tools/cli/model_summary.hpp"
 
@@ -355,6 +356,7 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
   struct SampleArguments {
     std::string model, output;
     SampleFlags sample;
+    DistributedFlags distributed;
   };
   auto args = std::make_shared<SampleArguments>();
   CLI::App* command = app.add_subcommand(
@@ -362,14 +364,21 @@ void add_sample_command(CLI::App& app, Action& action, const std::vector<std::st
   command->add_option("MODEL", args->model, "model file (.json)")->required();
   command->add_option("-o,--output", args->output, "output (.svg, .obj, .ply, .csv)")->required();
   args->sample.add_to(*command);
+  args->distributed.add_to(*command);
   command->callback([&action, args, arguments] {
     action = [args, arguments](std::ostream& out) {
+      args->distributed.check(args->sample, args->output);
       args->sample.check(args->output);
       const model::ShapeProcessModel model = io::read_model(args->model);
       synthesis::SynthesisRecord record;
       record.command = "sample";
       record.arguments = arguments;
       record.inputs = {{"model", args->model}};
+      if (args->distributed.distributed) {
+        args->sample.check(args->output, model.dimension);
+        return run_distributed(args->sample, args->distributed, model, args->output,
+                               std::move(record), out);
+      }
       return args->sample.run(model, args->output, std::move(record), out);
     };
   });
