@@ -370,10 +370,11 @@ bool BirthDeathChain::in_free_region(const Vec3& p) const {
 // log of the domain's local factor of β at the element: −∞ outside the mask or where the
 // intensity map is black.
 double BirthDeathChain::log_local_factor(const Element& e) const {
-  const geometry::Domain& domain = r_.domain;
+  const geometry::Domain& domain = r_.local_factor ? *r_.local_factor : r_.domain;
   double factor = 0.0;
   if (domain.intensity()) {
-    const double v = domain.intensity_at(e.position.head<2>());
+    const Vec3 at = r_.local_factor ? domain.wrap(e.position) : e.position;
+    const double v = domain.intensity_at(at.head<2>());
     if (!(v > 0.0)) return kMinusInfinity;
     factor = std::log(v);
   }
@@ -389,7 +390,9 @@ double BirthDeathChain::log_local_factor(const Element& e) const {
 // interactions with every element but `skip`, whose links go to links_. −∞ outside the mask or
 // on a hard core. The local part is kept in local_term_.
 double BirthDeathChain::log_lambda_over_beta(const Element& e, int skip) {
-  local_term_ = r_.domain.has_local_factor() ? log_local_factor(e) : 0.0;
+  const bool local =
+      r_.local_factor ? r_.local_factor->has_local_factor() : r_.domain.has_local_factor();
+  local_term_ = local ? log_local_factor(e) : 0.0;
   links_.clear();
   return std::isfinite(local_term_) ? local_term_ + state_.log_interaction(e, skip, links_)
                                     : local_term_;

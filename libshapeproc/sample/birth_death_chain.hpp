@@ -82,6 +82,10 @@ struct ChainRegion {
   // around it that can interact with it.
   geometry::Box3 grid_box;
   bool confined = false;  // a cell of a decomposition: shifts never leave the free region
+  // Where β's local factor (the intensity map) is read when not from `domain`: a decomposed
+  // torus's cell, whose domain is an open box about it, reads the whole torus's map at positions
+  // wrapped into it. Null: `domain`'s.
+  const geometry::Domain* local_factor = nullptr;
   // A decomposition's cell that spans a torus along an axis it does not cut: the torus's period
   // along that axis (0 along the others). The configuration and the shifts wrap along it.
   geometry::Vec3 period = geometry::Vec3::Zero();

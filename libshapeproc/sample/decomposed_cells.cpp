@@ -130,6 +130,7 @@ MoveCounts DecomposedCells::visit(int cell, long long steps, bool fill, std::uin
                      box};
   region.grid_box = grid;
   region.confined = true;
+  if (whole_.domain.periodic()) region.local_factor = &whole_.domain;
   region.period = layout_.spanned_period();
   region.shift_probability = whole_.shift_probability;
   region.near_birth_share = whole_.near_birth_share;

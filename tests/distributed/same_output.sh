@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `sample --distributed` as a user runs it, under mpirun: the merged output on 1, 2 and 3 ranks
-# is byte for byte the output of `sample --decompose on` with the same seed; the parts, joined in
-# order, are the same rows; a mask works across ranks; what it cannot do is refused with exit 2.
+# is byte for byte the output of `sample --decompose on` with the same seed, on a torus, under a
+# mask and with an intensity map; the parts, joined in order, are the same rows; what it cannot
+# do is refused with exit 2.
 # Usage: same_output.sh SHAPEPROC MPIRUN DATA_DIR
 set -euo pipefail
 shapeproc=$1
@@ -14,10 +15,11 @@ run() { "$mpirun" --oversubscribe --noprefix --bind-to none -n "$@"; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$shapeproc" fit "$data/svg/dots-random.svg" -o model.json -q > /dev/null
-for domain in "" "--domain $data/maps/star.svg"; do
-  # shellcheck disable=SC2086  # the mask's two words
+for domain in "" "--domain $data/maps/star.svg" "--intensity $data/maps/gradient.png"; do
+  # shellcheck disable=SC2086  # the mask's and the map's two words
   "$shapeproc" sample model.json --size 2400,2400 $domain --decompose on --seed 5 -o one.csv -q \
     --force > /dev/null
+  [ "$(wc -l < one.csv)" -gt 1000 ] || fail "${domain:-(torus)}: too few elements to tell"
   for ranks in 1 2 3; do
     # shellcheck disable=SC2086
     run "$ranks" "$shapeproc" sample model.json --size 2400,2400 $domain --distributed --merge --force \

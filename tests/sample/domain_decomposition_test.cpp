@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "libshapeproc/geometry/pair_measurements.hpp"
+#include "libshapeproc/geometry/raster.hpp"
 #include "libshapeproc/io/model_io.hpp"
 #include "libshapeproc/sample/cell_layout.hpp"
 #include "tests/point_model.hpp"
@@ -91,6 +93,29 @@ SampleResult decomposed(const model::ShapeProcessModel& m, const geometry::Domai
   const ShapeProcessSampler sampler(m, domain, options);
   core::Random random(seed);
   return sampler.sample(random);
+}
+
+// An intensity map on a torus scales β in every cell (left half 0.25, right half 0.75: of a
+// Poisson pattern's points, 3/4 fall on the right). A cell's chain runs on an open box about it
+// and reads the torus's map at positions wrapped into it; it had read none, and the halves came
+// out equal.
+TEST(DomainDecomposition, AnIntensityMapOnATorusScalesEveryCell) {
+  const model::ShapeProcessModel m = testing::point_model(0.05);
+  geometry::Domain domain = geometry::Domain::from_sizes({200, 200}, geometry::Boundary::torus);
+  geometry::Raster map;
+  map.width = 2;
+  map.height = 1;
+  map.values = {0.25f, 0.75f};
+  domain.set_intensity(std::make_shared<const geometry::Raster>(map));
+  int left = 0, right = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const SampleResult out = decomposed(m, domain, seed, 2);
+    ASSERT_GT(out.cells, 0) << "the domain is decomposed";
+    for (const geometry::Element& e : out.scene.elements) (e.position.x() < 100 ? left : right)++;
+  }
+  const double n = left + right;
+  EXPECT_NEAR(n / 3, 0.05 * 40000 * 0.5, 4 * std::sqrt(1000.0 / 3));
+  EXPECT_NEAR(right / n, 0.75, 4 * std::sqrt(0.75 * 0.25 / n));
 }
 
 // The decomposed output depends on the seed alone, not on the threads; it keeps every hard core,
