@@ -131,6 +131,21 @@ double mean_spacing(DecomposedCells& cells, int threads) {
          static_cast<double>(elements);
 }
 
+// The moves of this process's visits, summed over every process.
+MoveCounts summed(const std::vector<MoveCounts>& moves, CellPartition& partition) {
+  MoveCounts local;
+  for (const MoveCounts& m : moves) local += m;
+  MoveCounts total;
+  for (auto [into, own] : {std::pair{&total.births_accepted, local.births_accepted},
+                           {&total.births_proposed, local.births_proposed},
+                           {&total.deaths_accepted, local.deaths_accepted},
+                           {&total.deaths_proposed, local.deaths_proposed},
+                           {&total.shifts_accepted, local.shifts_accepted},
+                           {&total.shifts_proposed, local.shifts_proposed}})
+    *into = partition.sum(own);
+  return total;
+}
+
 }  // namespace
 
 SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainTables& tables,
@@ -227,15 +242,7 @@ SampleResult sample_by_cells(const model::ShapeProcessModel& model, const ChainT
   result.iterations = steps;
   result.start_left_out = static_cast<int>(partition.sum(cells.left_out()));
   result.start_kept -= result.start_left_out;
-  MoveCounts local;
-  for (const MoveCounts& m : moves) local += m;
-  for (auto [total_of, own] : {std::pair{&result.moves.births_accepted, local.births_accepted},
-                               {&result.moves.births_proposed, local.births_proposed},
-                               {&result.moves.deaths_accepted, local.deaths_accepted},
-                               {&result.moves.deaths_proposed, local.deaths_proposed},
-                               {&result.moves.shifts_accepted, local.shifts_accepted},
-                               {&result.moves.shifts_proposed, local.shifts_proposed}})
-    *total_of = partition.sum(own);
+  result.moves = summed(moves, partition);
   result.scene = tables.geometry->shape_space;
   result.scene.elements = cells.own_elements();
   result.cells = cells.layout().count();
