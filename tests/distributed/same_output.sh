@@ -52,6 +52,9 @@ refused "$shapeproc" sample model.json --size 2400,2400 --distributed -o out.csv
 refused "$shapeproc" sample model.json --size 2400,2400 --merge -o out.csv
 refused run 3 "$shapeproc" sample model.json --size 2400,2400 --distributed -o parts.csv
 grep -q "exists" err.txt || fail "an existing part was not named"
+# A merge would write (then remove) the parts of that run: refused as well.
+refused run 3 "$shapeproc" sample model.json --size 2400,2400 --distributed --merge -o parts.csv
+grep -q "parts-part-1-of-3.csv exists" err.txt || fail "a merge over existing parts: $(cat err.txt)"
 # 5 ranks, 4 rows of cells.
 refused run 5 "$shapeproc" sample model.json --size 320,320 --distributed -o small.csv
 grep -q "rows of cells" err.txt || fail "too many ranks: $(cat err.txt)"

@@ -69,9 +69,12 @@ int run_distributed(const SampleFlags& sample, const DistributedFlags& flags,
   MPI_Comm_rank(session.world(), &rank);
   MPI_Comm_size(session.world(), &ranks);
   const distributed::OutputFiles files = distributed::output_files(output, ranks);
+  // A merge writes the parts too, before it joins and removes them.
   std::vector<std::string> written = files.parts;
-  written.push_back(files.manifest);
-  if (flags.merge) written = {output, output + ".json"};
+  if (flags.merge)
+    written.insert(written.end(), {output, output + ".json"});
+  else
+    written.push_back(files.manifest);
   check_free(written, sample.force);
   ProgressBar bar("sampling", sample.verbosity.show_progress() && rank == 0);
   synthesis::ChainControl control;
