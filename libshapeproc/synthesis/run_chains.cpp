@@ -76,16 +76,8 @@ std::vector<SynthesisResult> run_chains(const Synthesizer& synthesizer,
       try {
         SynthesisResult result = synthesizer.synthesize(random, control);
         SynthesisRecord record = options.record;
+        record.take_run(result.record);
         record.method = synthesizer.method();
-        record.boundary = result.record.boundary;
-        record.size = result.record.size;
-        if (record.domain_file.empty()) record.domain_file = result.record.domain_file;
-        if (record.intensity_file.empty()) record.intensity_file = result.record.intensity_file;
-        record.options.insert(record.options.end(), result.record.options.begin(),
-                              result.record.options.end());
-        record.iterations = result.record.iterations;
-        record.steps = result.record.steps;
-        record.stationary = result.record.stationary;
         record.seed = options.seed;
         record.chain = c + 1;
         record.chains = chains;

@@ -10,6 +10,18 @@ void SynthesisRecord::set_domain(const geometry::Domain& domain) {
   for (int axis = 0; axis < domain.dimension(); ++axis) size.push_back(domain.sizes()[axis]);
 }
 
+void SynthesisRecord::take_run(const SynthesisRecord& run) {
+  method = run.method;
+  boundary = run.boundary;
+  size = run.size;
+  if (domain_file.empty()) domain_file = run.domain_file;
+  if (intensity_file.empty()) intensity_file = run.intensity_file;
+  options.insert(options.end(), run.options.begin(), run.options.end());
+  iterations = run.iterations;
+  steps = run.steps;
+  stationary = run.stationary;
+}
+
 namespace {
 std::string find(const std::vector<std::pair<std::string, std::string>>& list,
                  const std::string& key) {

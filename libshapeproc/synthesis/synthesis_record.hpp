@@ -34,6 +34,11 @@ struct SynthesisRecord {
 
   // Takes the domain's boundary and box sizes.
   void set_domain(const geometry::Domain& domain);
+  // Takes into this record (a command's: command, arguments, inputs, its own options) what one
+  // run of a method recorded: the method, the domain (its files where this record has none), the
+  // method's options after the command's, the step budget, the steps and whether it stopped at
+  // stationarity.
+  void take_run(const SynthesisRecord& run);
   // The value of option or input `key`, empty when absent.
   std::string option(const std::string& key) const;
   std::string input(const std::string& key) const;

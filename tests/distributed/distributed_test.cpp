@@ -24,11 +24,16 @@ int ranks() {
   return n;
 }
 
+// The cells of an 80 × 60 torus cut at 10: 8 × 6.
+std::optional<sample::CellLayout> eight_by_six() {
+  return sample::CellLayout::plan(geometry::Domain::from_sizes({80, 60}, geometry::Boundary::torus),
+                                  10.0);
+}
+
 // A 2D torus of 8 × 6 cells: rows run across y (the outermost cut axis); each rank owns a run of
 // whole rows, the runs in rank order cover the cell numbers once, in order.
 TEST(MpiCellPartition, RanksOwnRunsOfWholeRowsInCellOrder) {
-  const geometry::Domain torus = geometry::Domain::from_sizes({80, 60}, geometry::Boundary::torus);
-  const std::optional<sample::CellLayout> layout = sample::CellLayout::plan(torus, 10.0);
+  const std::optional<sample::CellLayout> layout = eight_by_six();
   ASSERT_TRUE(layout);
   MpiCellPartition partition(MPI_COMM_WORLD);
   partition.plan(*layout);
@@ -47,8 +52,7 @@ TEST(MpiCellPartition, RanksOwnRunsOfWholeRowsInCellOrder) {
 // After refresh_borders, every cell around a rank's own holds what its owner holds; cells nobody
 // around reads stay as they were.
 TEST(MpiCellPartition, BordersArriveFromTheirOwners) {
-  const geometry::Domain torus = geometry::Domain::from_sizes({80, 60}, geometry::Boundary::torus);
-  const std::optional<sample::CellLayout> layout = sample::CellLayout::plan(torus, 10.0);
+  const std::optional<sample::CellLayout> layout = eight_by_six();
   ASSERT_TRUE(layout);
   MpiCellPartition partition(MPI_COMM_WORLD);
   partition.plan(*layout);

@@ -85,16 +85,10 @@ int run_distributed(const SampleFlags& sample, const DistributedFlags& flags,
       model, domain, sample.output_sampling(), sample.seed, session.world(), budget, control);
   bar.finish();
   // The record `sample` writes, and the ranks.
-  const synthesis::SynthesisRecord& made = result.result.record;
-  record.method = made.method;
-  record.set_domain(domain);
   record.domain_file = sample.domain_file;
   record.intensity_file = sample.intensity;
-  record.options.insert(record.options.end(), made.options.begin(), made.options.end());
+  record.take_run(result.result.record);
   record.options.emplace_back("ranks", std::to_string(ranks));
-  record.iterations = made.iterations;
-  record.steps = made.steps;
-  record.stationary = made.stationary;
   record.seed = record.chain_seed = sample.seed;
   const std::vector<std::string> left = distributed::write_output(
       result, output, io::synthesis_provenance(record), flags.merge, session.world());
